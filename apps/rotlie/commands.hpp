@@ -1,0 +1,27 @@
+#pragma once
+// One function per subcommand. They take plain option structs, so that CLI11 stays in main.cpp
+// (the slowest header to compile). Each returns the process exit status.
+#include <string>
+
+namespace rotlie::app {
+
+struct dims_options {
+  std::string max_order;
+  bool json = false;
+  bool exact = false;
+};
+int run_dims(const dims_options& options);
+
+struct stages_options {
+  std::string max_order;
+  bool json = false;
+};
+int run_stages(const stages_options& options);
+
+struct report_command_options {
+  std::string out = "rotlie-report";
+  bool quick = false;
+};
+int run_report_command(const report_command_options& options);
+
+}  // namespace rotlie::app

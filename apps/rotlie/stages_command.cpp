@@ -1,0 +1,24 @@
+#include <iostream>
+
+#include "arguments.hpp"
+#include "commands.hpp"
+#include "rotlie/lie/lie_poisson_algebra.hpp"
+#include "rotlie/lie/stage_table.hpp"
+#include "rotlie/reports/lie_tables_io.hpp"
+
+namespace rotlie::app {
+
+int run_stages(const stages_options& options) {
+  const int max_order =
+      static_cast<int>(parse_integer_in_range(options.max_order, "--max-order", 1, lie::max_stage_table_order));
+  std::vector<std::size_t> dims;
+  for (const auto& p : lie::lie_poisson_algebra(max_order)) dims.push_back(p.dimension);
+  const auto blocks = lie::stage_table(max_order, dims);
+  if (options.json)
+    std::cout << reports::stages_json(blocks).dump(2) << "\n";
+  else
+    std::cout << reports::stages_text(blocks);
+  return 0;
+}
+
+}  // namespace rotlie::app

@@ -1,0 +1,141 @@
+// The rotlie binary end to end: JSON shapes, bad input (one line on stderr, non-zero exit,
+// never a crash), and the report's output folder.
+#define BOOST_TEST_MODULE cli
+#include <boost/test/unit_test.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct run_result {
+  int status = -1;  // exit status, or 128 + signal
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path scratch_dir() {
+  static const fs::path dir = fs::temp_directory_path() / ("rotlie-cli-test-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+run_result run(const std::string& args) {
+  const fs::path out = scratch_dir() / "stdout", err = scratch_dir() / "stderr";
+  const std::string cmd = std::string(ROTLIE_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
+  const int raw = std::system(cmd.c_str());
+  run_result r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+std::size_t line_count(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
+
+void expect_clean_error(const std::string& args, const std::string& must_mention) {
+  const auto r = run(args);
+  BOOST_TEST_CONTEXT("rotlie " << args << " → status " << r.status << ", stderr: " << r.err) {
+    BOOST_TEST(r.status != 0);
+    BOOST_TEST(r.status < 126);  // an error exit, not a crash (a signal would give 128 + n)
+    BOOST_TEST(line_count(r.err) == 1u);
+    BOOST_TEST(r.err.rfind("rotlie: error: ", 0) == 0u);
+    BOOST_TEST(r.err.find(must_mention) != std::string::npos);
+    BOOST_TEST(r.out.empty());
+  }
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(dims_json_shape_and_values) {
+  const auto r = run("dims --max-order 5 --json");
+  BOOST_REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& orders = j.at("orders");
+  BOOST_REQUIRE(orders.size() == 5u);
+  const int dims[] = {3, 1, 2, 3, 6};
+  for (int k = 0; k < 5; ++k) {
+    BOOST_TEST(orders[k].at("order").get<int>() == k + 1);
+    BOOST_TEST(orders[k].at("dim").get<int>() == dims[k]);
+    BOOST_TEST(orders[k].at("theorem1").get<bool>());
+    BOOST_TEST(orders[k].at("bound").get<int>() == dims[k]);
+    BOOST_TEST(orders[k].at("attained").get<bool>());
+  }
+  BOOST_TEST(orders[0].at("theorem2").is_null());
+  BOOST_TEST(orders[1].at("theorem2").is_null());
+  BOOST_TEST(orders[2].at("theorem2").get<bool>());
+  BOOST_TEST(orders[4].at("theorem2").get<bool>());
+  BOOST_TEST(r.err.empty());
+}
+
+BOOST_AUTO_TEST_CASE(dims_text_has_one_line_per_order) {
+  const auto r = run("dims --max-order 12");
+  BOOST_REQUIRE(r.status == 0);
+  BOOST_TEST(line_count(r.out) == 13u);  // header + 12 orders
+}
+
+BOOST_AUTO_TEST_CASE(stages_json_shape) {
+  const auto r = run("stages --max-order 10 --json");
+  BOOST_REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& blocks = j.at("blocks");
+  BOOST_REQUIRE(blocks.size() == 4u);
+  const char* names[] = {"general-2", "general-3", "rigid-RS", "rigid-ABC"};
+  for (int b = 0; b < 4; ++b) {
+    BOOST_TEST(blocks[b].at("name").get<std::string>() == names[b]);
+    BOOST_REQUIRE(blocks[b].at("rows").size() == 10u);
+    for (const auto* key : {"order", "dim", "equations_ns", "total_ns", "equations_s", "total_s", "stages_ns", "stages_s"})
+      BOOST_TEST(blocks[b].at("rows")[0].contains(key), key);
+  }
+  const auto& abc4 = blocks[3].at("rows")[3];  // rigid ABC, order 4: the 9-stage N integrators
+  BOOST_TEST(abc4.at("stages_s").get<int>() == 9);
+  BOOST_TEST(abc4.at("equations_s").is_null());
+  BOOST_TEST(blocks[1].at("rows")[3].at("stages_s_quoted_from").get<std::string>().find("Tang") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(bad_orders_get_one_line_and_a_nonzero_exit) {
+  for (const std::string cmd : {"dims", "stages"}) {
+    expect_clean_error(cmd + " --max-order 0", "--max-order");
+    expect_clean_error(cmd + " --max-order -4", "--max-order");
+    expect_clean_error(cmd + " --max-order abc", "not an integer");
+    expect_clean_error(cmd + " --max-order 2.5", "not an integer");
+    expect_clean_error(cmd + " --max-order ''", "not an integer");
+    expect_clean_error(cmd + " --max-order 1000000", "at most");
+    expect_clean_error(cmd + " --max-order 99999999999999999999999999", "at most");
+    expect_clean_error(cmd + " --max-order -99999999999999999999999999", "at least");
+    expect_clean_error(cmd, "--max-order");
+  }
+  expect_clean_error("frobnicate", "frobnicate");
+  expect_clean_error("", "subcommand");
+}
+
+BOOST_AUTO_TEST_CASE(report_writes_a_complete_folder) {
+  const fs::path out = scratch_dir() / "report";
+  const auto r = run("report --quick --out " + out.string());
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
+  for (const auto* f : {"index.md", "table1.md", "table1.tex", "table1.json", "dims.md", "dims.json"})
+    BOOST_TEST(fs::is_regular_file(out / f), f);
+  for (const auto& e : fs::directory_iterator(out))
+    BOOST_TEST(e.path().string().find(".tmp.") == std::string::npos, "left-over " << e.path());
+  BOOST_TEST(slurp(out / "index.md").find("Table 1") != std::string::npos);
+  BOOST_TEST(nlohmann::json::parse(slurp(out / "table1.json")).at("blocks").size() == 4u);
+}
+
+BOOST_AUTO_TEST_CASE(report_into_an_impossible_folder_fails_cleanly) {
+  const fs::path blocker = scratch_dir() / "a-file";
+  std::ofstream(blocker) << "x";
+  expect_clean_error("report --quick --out " + (blocker / "sub").string(), "cannot create");
+}
