@@ -1,0 +1,60 @@
+#pragma once
+// Splitting-scheme words and their stage coefficients, named as in the paper (DESIGN.md):
+// letters get the names a, b, c in order of first appearance in the unpermuted word; each stage
+// of the first half (middle included) of a palindrome takes the next index of its name and the
+// second half mirrors it; the first-order conditions eliminate the highest index of each name.
+#include <ginac/ginac.h>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rotlie::bch {
+
+enum class splitting { abc, rs };
+
+struct named_scheme {
+  std::string_view name;
+  std::string_view word;
+  splitting split;
+};
+
+/// The paper's named words: N1–N7 (eq. 52), R (eq. 65), P1–P15 (eq. 69), RSRSRSR and SRSRSRS (eq. 41).
+const std::vector<named_scheme>& named_schemes();
+std::optional<named_scheme> find_named_scheme(std::string_view name);
+
+/// The six permutations of section 2.1 in the paper's order: ABC, BCA, CAB, ACB, CBA, BAC.
+const std::vector<std::string>& permutation_names();
+bool is_permutation_name(std::string_view p);
+
+struct stage {
+  char letter = 'A';           ///< part letter after the permutation (A, B, C; or R, S)
+  std::string coefficient;     ///< e.g. "a1"
+};
+
+struct scheme_layout {
+  std::string word;                  ///< as given (unpermuted)
+  std::string permuted;              ///< letters after the permutation (ABC splitting only; RS keeps R, S)
+  splitting split = splitting::abc;
+  std::string permutation = "ABC";
+  bool symmetric = false;            ///< a palindrome in letters and coefficient names
+  std::vector<stage> stages;
+  std::vector<std::string> free_coefficients;  ///< in order of first appearance, e.g. a1, b1
+  std::vector<std::string> eliminated;         ///< fixed by the first-order conditions
+};
+
+/// Validates and names a word; throws std::invalid_argument with a one-line reason
+/// (empty word, a letter outside the splitting, unknown permutation).
+scheme_layout layout_scheme(std::string_view word, splitting split, std::string_view permutation = "ABC");
+
+/// Symbols for the free coefficients and expressions for the eliminated ones (first-order
+/// conditions: Σ of each name's coefficients over the stages = 1).
+struct coefficient_symbols {
+  std::map<std::string, GiNaC::symbol> free;       ///< name → symbol
+  std::map<std::string, GiNaC::ex> value;          ///< every name → its expression in the free symbols
+};
+coefficient_symbols make_coefficients(const scheme_layout& layout);
+
+}  // namespace rotlie::bch

@@ -1,0 +1,115 @@
+#include "rotlie/bch/scheme_word.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace rotlie::bch {
+
+const std::vector<named_scheme>& named_schemes() {
+  static const std::vector<named_scheme> schemes = {
+      {"N1", "ABABCBABA", splitting::abc},     {"N2", "ABACACABA", splitting::abc},
+      {"N3", "ABACBCABA", splitting::abc},     {"N4", "ABCABACBA", splitting::abc},
+      {"N5", "ABCACACBA", splitting::abc},     {"N6", "ABCBABCBA", splitting::abc},
+      {"N7", "ABCBCBCBA", splitting::abc},     {"R", "RSRSRSRSR", splitting::rs},
+      {"P1", "ABABACABABA", splitting::abc},   {"P2", "ABABCACBABA", splitting::abc},
+      {"P3", "ABABCBCBABA", splitting::abc},   {"P4", "ABACABACABA", splitting::abc},
+      {"P5", "ABACACACABA", splitting::abc},   {"P6", "ABACBABCABA", splitting::abc},
+      {"P7", "ABACBCBCABA", splitting::abc},   {"P8", "ABCABABACBA", splitting::abc},
+      {"P9", "ABCABCBACBA", splitting::abc},   {"P10", "ABCACACACBA", splitting::abc},
+      {"P11", "ABCACBCACBA", splitting::abc},  {"P12", "ABCBABABCBA", splitting::abc},
+      {"P13", "ABCBACABCBA", splitting::abc},  {"P14", "ABCBCACBCBA", splitting::abc},
+      {"P15", "ABCBCBCBCBA", splitting::abc},  {"RSRSRSR", "RSRSRSR", splitting::rs},
+      {"SRSRSRS", "SRSRSRS", splitting::rs},
+  };
+  return schemes;
+}
+
+std::optional<named_scheme> find_named_scheme(std::string_view name) {
+  for (const auto& s : named_schemes())
+    if (s.name == name) return s;
+  return std::nullopt;
+}
+
+const std::vector<std::string>& permutation_names() {
+  static const std::vector<std::string> names = {"ABC", "BCA", "CAB", "ACB", "CBA", "BAC"};
+  return names;
+}
+
+bool is_permutation_name(std::string_view p) {
+  const auto& n = permutation_names();
+  return std::find(n.begin(), n.end(), p) != n.end();
+}
+
+scheme_layout layout_scheme(std::string_view word, splitting split, std::string_view permutation) {
+  if (word.empty()) throw std::invalid_argument("the scheme word is empty");
+  const std::string allowed = split == splitting::abc ? "ABC" : "RS";
+  for (const char c : word)
+    if (allowed.find(c) == std::string::npos)
+      throw std::invalid_argument(std::string("letter '") + c + "' is not a part of the " +
+                                  (split == splitting::abc ? "ABC" : "RS") + " splitting (allowed: " + allowed + ")");
+  if (!is_permutation_name(permutation))
+    throw std::invalid_argument("unknown permutation '" + std::string(permutation) +
+                                "' (expected ABC, BCA, CAB, ACB, CBA or BAC)");
+
+  scheme_layout layout;
+  layout.word = std::string(word);
+  layout.split = split;
+  layout.permutation = std::string(permutation);
+  layout.permuted = layout.word;
+  if (split == splitting::abc)
+    for (char& c : layout.permuted) c = permutation[static_cast<std::size_t>(c - 'A')];
+
+  std::map<char, char> name_of;  // word letter → a, b, c in order of first appearance
+  for (const char c : word)
+    if (!name_of.count(c)) name_of.emplace(c, static_cast<char>('a' + name_of.size()));
+
+  const std::size_t n = word.size();
+  layout.symmetric = std::equal(word.begin(), word.begin() + static_cast<long>(n / 2), word.rbegin());
+  std::map<char, int> next_index;
+  layout.stages.resize(n);
+  const std::size_t named = layout.symmetric ? (n + 1) / 2 : n;
+  for (std::size_t i = 0; i < named; ++i) {
+    const char name = name_of[word[i]];
+    layout.stages[i] = {layout.permuted[i], std::string(1, name) + std::to_string(++next_index[name])};
+  }
+  for (std::size_t i = named; i < n; ++i) layout.stages[i] = {layout.permuted[i], layout.stages[n - 1 - i].coefficient};
+
+  // The highest index of each name is eliminated by its first-order condition.
+  for (const auto& [letter, name] : name_of) {
+    const std::string last = std::string(1, name) + std::to_string(next_index[name]);
+    layout.eliminated.push_back(last);
+  }
+  for (std::size_t i = 0; i < named; ++i) {
+    const auto& c = layout.stages[i].coefficient;
+    const bool dropped = std::find(layout.eliminated.begin(), layout.eliminated.end(), c) != layout.eliminated.end();
+    if (!dropped && std::find(layout.free_coefficients.begin(), layout.free_coefficients.end(), c) ==
+                        layout.free_coefficients.end())
+      layout.free_coefficients.push_back(c);
+  }
+  std::sort(layout.eliminated.begin(), layout.eliminated.end());
+  return layout;
+}
+
+coefficient_symbols make_coefficients(const scheme_layout& layout) {
+  coefficient_symbols out;
+  for (const auto& name : layout.free_coefficients) {
+    out.free.emplace(name, GiNaC::symbol(name));
+    out.value.emplace(name, out.free.at(name));
+  }
+  for (const auto& last : layout.eliminated) {
+    // Σ over stages carrying this name's letter = 1, solved for `last`.
+    GiNaC::ex others = 0;
+    int multiplicity = 0;
+    for (const auto& s : layout.stages) {
+      if (s.coefficient[0] != last[0]) continue;
+      if (s.coefficient == last)
+        ++multiplicity;
+      else
+        others += out.value.at(s.coefficient);
+    }
+    out.value.emplace(last, ((1 - others) / multiplicity).expand());
+  }
+  return out;
+}
+
+}  // namespace rotlie::bch
