@@ -48,7 +48,9 @@ symbolic_polynomial scaled(const stage_element& s) {
 }  // namespace
 
 inverse_inertia inverse_inertia::symbolic() {
-  return {GiNaC::symbol("w1"), GiNaC::symbol("w2"), GiNaC::symbol("w3")};
+  // GiNaC symbols are equal only to themselves: one set for the whole program.
+  static const GiNaC::symbol w1("w1"), w2("w2"), w3("w3");
+  return {w1, w2, w3};
 }
 inverse_inertia inverse_inertia::abc_paper(const GiNaC::symbol& x, const GiNaC::symbol& y) {
   return {2, 2 * (1 + x), 2 * (1 + y)};

@@ -17,7 +17,7 @@ using symbolic_polynomial = lie::polynomial<GiNaC::ex>;
 /// Inverse moments of inertia w_i = 1/I_i: symbols, exact rationals or numbers.
 struct inverse_inertia {
   GiNaC::ex w1, w2, w3;
-  /// Symbols w1, w2, w3 (the general body).
+  /// Symbols w1, w2, w3 (the general body), the same symbols on every call.
   static inverse_inertia symbolic();
   /// The paper's ABC variables, scaled by 2I1 = 1: 1/I2 = 2(1+x), 1/I3 = 2(1+y) (eq. 54).
   static inverse_inertia abc_paper(const GiNaC::symbol& x, const GiNaC::symbol& y);
