@@ -25,3 +25,13 @@ struct report_command_options {
 int run_report_command(const report_command_options& options);
 
 }  // namespace rotlie::app
+
+namespace rotlie::app {
+
+struct remainder_options {
+  std::string scheme, split, perm = "ABC", order = "5", inertia, coeffs;
+  bool latex = false, json = false;
+};
+int run_remainder(const remainder_options& options);
+
+}  // namespace rotlie::app

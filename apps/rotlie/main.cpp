@@ -31,6 +31,18 @@ int main(int argc, char** argv) {
   stages_cmd->add_option("--max-order", stages.max_order, "Highest order (1 to 40)")->required();
   stages_cmd->add_flag("--json", stages.json, "Machine-readable output on stdout");
 
+  remainder_options remainder;
+  auto* remainder_cmd = app.add_subcommand("remainder", "Modified Hamiltonian H_R2 … H_RK of a splitting scheme");
+  remainder_cmd->add_option("--scheme", remainder.scheme, "N1…N7, R, P1…P15, RSRSRSR, SRSRSRS, or a word such as ABCBA")
+      ->required();
+  remainder_cmd->add_option("--split", remainder.split, "ABC or RS (default: from the scheme)");
+  remainder_cmd->add_option("--perm", remainder.perm, "ABC, BCA, CAB, ACB, CBA or BAC (default ABC)");
+  remainder_cmd->add_option("--order", remainder.order, "Highest order K (default 5, at most 9)");
+  remainder_cmd->add_option("--inertia", remainder.inertia, "I1,I2,I3 as exact numbers, or water, sphere (default: symbols)");
+  remainder_cmd->add_option("--coeffs", remainder.coeffs, "Values of free coefficients, e.g. a1=1/6,b1=0.25");
+  remainder_cmd->add_flag("--latex", remainder.latex, "LaTeX output");
+  remainder_cmd->add_flag("--json", remainder.json, "Machine-readable output on stdout");
+
   report_command_options report;
   auto* report_cmd = app.add_subcommand("report", "Regenerate every table and figure into one folder");
   report_cmd->add_option("--out", report.out, "Output folder (default: rotlie-report)");
@@ -58,6 +70,7 @@ int main(int argc, char** argv) {
   try {
     if (*dims_cmd) return run_dims(dims);
     if (*stages_cmd) return run_stages(stages);
+    if (*remainder_cmd) return run_remainder(remainder);
     if (*report_cmd) return run_report_command(report);
   } catch (const usage_error& e) {
     return fail(e.what(), 2);

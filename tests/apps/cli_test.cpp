@@ -122,6 +122,60 @@ BOOST_AUTO_TEST_CASE(bad_orders_get_one_line_and_a_nonzero_exit) {
   expect_clean_error("", "subcommand");
 }
 
+BOOST_AUTO_TEST_CASE(remainder_json_shape) {
+  const auto r = run("remainder --scheme N4 --order 5 --json");
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
+  const auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j.at("word").get<std::string>() == "ABCABACBA");
+  BOOST_TEST(j.at("split").get<std::string>() == "ABC");
+  BOOST_TEST(j.at("perm").get<std::string>() == "ABC");
+  BOOST_REQUIRE(j.at("orders").size() == 4u);  // orders 2, 3, 4, 5
+  const auto& o3 = j.at("orders")[1];
+  BOOST_TEST(o3.at("order").get<int>() == 3);
+  BOOST_TEST(o3.at("terms").size() == 3u);
+  BOOST_TEST((o3.at("terms")[0].at("G") == nlohmann::json::array({2, 2, 0})));
+  BOOST_TEST(!o3.at("terms")[0].contains("value"));  // symbolic: no number
+  BOOST_TEST(j.at("orders")[3].at("terms").size() == 7u);  // the seven monomials of eq. (62)
+  BOOST_TEST(j.at("orders")[0].at("terms").empty());       // symmetric: no H_R2
+}
+
+BOOST_AUTO_TEST_CASE(remainder_of_table_4s_best_scheme_vanishes_at_third_order) {
+  // N2 BAC (2) for water, eq. (74): the 42-digit coefficients leave H_R3 at round-off of those digits.
+  const auto r = run("remainder --scheme N2 --perm BAC --inertia water --order 3 --json --coeffs "
+                     "a1=4.5504624774591050429019276281136041301731e-2,a2=1.5208328361334726621353294430175796767150e-1");
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
+  const auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j.at("word").get<std::string>() == "BABCBCBAB");  // eq. (73)
+  for (const auto& t : j.at("orders")[1].at("terms")) BOOST_TEST(std::abs(t.at("value").get<double>()) < 1e-38);
+  // while the same word with other coefficients does not
+  const auto other = nlohmann::json::parse(run("remainder --scheme N2 --perm BAC --inertia water --order 3 --json "
+                                               "--coeffs a1=1/20,a2=3/20").out);
+  BOOST_TEST(std::abs(other.at("orders")[1].at("terms")[0].at("value").get<double>()) > 1e-4);
+}
+
+BOOST_AUTO_TEST_CASE(remainder_bad_input) {
+  expect_clean_error("remainder --scheme ABD", "letter 'D'");
+  expect_clean_error("remainder --scheme ''", "empty");
+  expect_clean_error("remainder --scheme 'sin()'", "letter 's'");
+  expect_clean_error("remainder --scheme N4 --order 0", "--order");
+  expect_clean_error("remainder --scheme N4 --order 10", "at most");
+  expect_clean_error("remainder --scheme N4 --order x", "not an integer");
+  expect_clean_error("remainder --scheme N4 --coeffs z9=1", "not a coefficient");
+  expect_clean_error("remainder --scheme N4 --coeffs b2=1", "fixed by the first-order conditions");
+  expect_clean_error("remainder --scheme N4 --coeffs a1=abc", "not a finite number");
+  expect_clean_error("remainder --scheme N4 --coeffs a1=nan", "not a finite number");
+  expect_clean_error("remainder --scheme N4 --coeffs a1", "name=value");
+  expect_clean_error("remainder --scheme N4 --coeffs a1=1,a1=2", "twice");
+  expect_clean_error("remainder --scheme N4 --inertia 1,2", "three values");
+  expect_clean_error("remainder --scheme N4 --inertia nan,1,1", "not a finite number");
+  expect_clean_error("remainder --scheme N4 --inertia 0.345,0.653,1", "eq. (77)");
+  expect_clean_error("remainder --scheme N4 --inertia -1,1,1", "not positive");
+  expect_clean_error("remainder --scheme N4 --perm XYZ", "unknown permutation");
+  expect_clean_error("remainder --scheme N4 --split XY", "--split");
+  expect_clean_error("remainder --scheme N4 --split RS", "ABC scheme");
+  expect_clean_error("remainder --scheme N4 --latex --json", "exclude");
+}
+
 BOOST_AUTO_TEST_CASE(report_writes_a_complete_folder) {
   const fs::path out = scratch_dir() / "report";
   const auto r = run("report --quick --out " + out.string());

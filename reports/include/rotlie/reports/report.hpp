@@ -28,4 +28,7 @@ std::vector<std::filesystem::path> run_report(const report_options& options);
 /// Section "Lie algebra of the free rigid body": dimensions, Theorems 1–2 verdicts, Table 1.
 report_section lie_algebra_section(const report_options& options);
 
+/// Section "Remainder formulas": the paper's remainders regenerated in LaTeX, H_R5 structure.
+report_section remainder_section(const report_options& options);
+
 }  // namespace rotlie::reports
