@@ -1,0 +1,51 @@
+#pragma once
+// Dedicated 4th-order schemes for one body (section 3): the conditions H_R3 = 0 (two independent
+// equations after Theorem 2: the coefficients P1 of G1²G2² and P2 of G1²G3²) in the two free stage
+// coefficients of an N scheme (or RSRSRSR, SRSRSRS), all their real solutions, labelled by
+// ascending first free coefficient, with residual and analytic remainder ‖H_R5‖ (eq. 64).
+#include <cln/rational.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "rotlie/bch/scheme_word.hpp"
+#include "rotlie/lie/rigid_body.hpp"
+
+namespace rotlie::solver {
+
+struct dedicated_solution {
+  std::string scheme;        ///< N1 … N7, RSRSRSR, …
+  std::string permutation;   ///< ABC … BAC
+  int label = 0;             ///< 1, 2, … by ascending first free coefficient
+  bch::scheme_layout layout;
+  /// Every coefficient name (a1, b1, a2, …) → exact rational within 10^-(digits+10) of the solution.
+  std::vector<std::pair<std::string, cln::cl_RA>> coefficients;
+  std::vector<std::string> free;  ///< names of the free coefficients
+  cln::cl_RA residual;            ///< max |P_i| of H_R3 at the coefficients rounded to `digits` digits
+  double analytic_remainder = 0;  ///< ‖H_R5‖ in the normalisation of analytic_remainder_norm
+  std::string name() const { return scheme + " " + permutation + " (" + std::to_string(label) + ")"; }
+};
+
+struct system_report {
+  std::string scheme, permutation;
+  int real_solutions = 0;
+  bool degenerate = false;
+  std::string note;
+};
+
+struct family_result {
+  std::vector<dedicated_solution> solutions;  ///< sorted by analytic remainder
+  std::vector<system_report> systems;
+  double seconds_conditions = 0, seconds_elimination = 0, seconds_remainder = 0;
+};
+
+/// Solves every (scheme, permutation) pair; schemes must have exactly two free coefficients.
+/// Throws std::invalid_argument for an unknown scheme or permutation or digits < 10.
+family_result solve_dedicated(const lie::moments_of_inertia& body, const std::vector<std::string>& schemes,
+                              const std::vector<std::string>& permutations, int digits);
+
+/// The normalisation of ‖H_R5‖ that reproduces Tables 3 and 4: see the implementation.
+double analytic_remainder_norm(const std::vector<double>& q, const lie::moments_of_inertia& body);
+
+}  // namespace rotlie::solver

@@ -1,0 +1,48 @@
+#pragma once
+// Univariate polynomials with exact rational coefficients: Euclid, square-free part, Sturm
+// sequences, certified isolation of every real root, and refinement to any number of digits
+// by exact bisection. Nothing here is approximate until the caller rounds a root.
+#include <cln/rational.h>
+#include <ginac/ginac.h>
+
+#include <vector>
+
+namespace rotlie::solver {
+
+class rational_polynomial {
+ public:
+  rational_polynomial() = default;
+  explicit rational_polynomial(std::vector<cln::cl_RA> coefficients);  ///< index = power
+  /// From a GiNaC polynomial in one symbol with rational coefficients; throws std::invalid_argument otherwise.
+  static rational_polynomial from_ex(const GiNaC::ex& e, const GiNaC::symbol& x);
+
+  int degree() const { return static_cast<int>(c_.size()) - 1; }  ///< −1 for the zero polynomial
+  bool is_zero() const { return c_.empty(); }
+  const std::vector<cln::cl_RA>& coefficients() const { return c_; }
+  cln::cl_RA operator()(const cln::cl_RA& x) const;
+  rational_polynomial derivative() const;
+
+  friend rational_polynomial remainder(const rational_polynomial& a, const rational_polynomial& b);
+  friend rational_polynomial quotient(const rational_polynomial& a, const rational_polynomial& b);
+  friend rational_polynomial gcd(rational_polynomial a, rational_polynomial b);  ///< monic
+  /// p / gcd(p, p'): the same roots, each simple.
+  rational_polynomial square_free() const;
+
+ private:
+  void trim();
+  std::vector<cln::cl_RA> c_;
+};
+
+/// An interval (lo, hi] holding exactly one real root, or the root itself when lo == hi.
+struct root_interval {
+  cln::cl_RA lo, hi;
+};
+
+/// Every distinct real root of p (p ≠ 0), isolated by Sturm's theorem, in increasing order.
+std::vector<root_interval> isolate_real_roots(const rational_polynomial& p);
+
+/// Shrinks an isolating interval of a square-free p by exact bisection until hi − lo ≤ width;
+/// returns the midpoint (an exact rational within width/2 of the root).
+cln::cl_RA refine_root(const rational_polynomial& square_free_p, root_interval r, const cln::cl_RA& width);
+
+}  // namespace rotlie::solver

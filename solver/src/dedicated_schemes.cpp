@@ -1,0 +1,111 @@
+#include "rotlie/solver/dedicated_schemes.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "rotlie/bch/modified_hamiltonian.hpp"
+#include "rotlie/lie/theorems.hpp"
+#include "rotlie/solver/real_solutions.hpp"
+
+namespace rotlie::solver {
+namespace {
+
+using clock_type = std::chrono::steady_clock;
+double since(clock_type::time_point t) { return std::chrono::duration<double>(clock_type::now() - t).count(); }
+
+GiNaC::ex exact(const cln::cl_RA& x) { return GiNaC::numeric(cln::cl_N(x)); }
+cln::cl_RA rational(const GiNaC::ex& e) {
+  return cln::the<cln::cl_RA>(GiNaC::ex_to<GiNaC::numeric>(e).to_cl_N());
+}
+
+// x rounded to `digits` significant decimal digits, exactly.
+cln::cl_RA round_to_digits(const cln::cl_RA& x, int digits) {
+  if (cln::zerop(x)) return x;
+  int e = 0;
+  cln::cl_RA a = cln::abs(x);
+  while (a >= 1) a = a / 10, ++e;
+  while (a < cln::cl_RA(1) / 10) a = a * 10, --e;
+  const cln::cl_RA scale = cln::expt(cln::cl_RA(10), digits - e);
+  return cln::round1(x * scale) / scale;
+}
+
+}  // namespace
+
+// Eq. (64) in natural units (H = Σ G_i²/(2I_i), no 2I1 scaling) for the body scaled to I3 = 1, as in
+// section 5.1: H_R5 is homogeneous of degree −5 in the moments, so the norm is multiplied by I3^5.
+// This reproduces Table 4's absolute values (×10^-2) and Table 3's ratios.
+double analytic_remainder_norm(const std::vector<double>& q, const lie::moments_of_inertia& body) {
+  double s = 0;
+  for (double v : q) s += v * v;
+  return std::sqrt(s) * std::pow(cln::double_approx(body.I[2]), 5);
+}
+
+family_result solve_dedicated(const lie::moments_of_inertia& body, const std::vector<std::string>& schemes,
+                              const std::vector<std::string>& permutations, int digits) {
+  if (digits < 10) throw std::invalid_argument("--digits must be at least 10");
+  lie::validate_moments(body);
+  family_result result;
+  const bch::inverse_inertia w{exact(cln::recip(body.I[0])), exact(cln::recip(body.I[1])), exact(cln::recip(body.I[2]))};
+  for (const auto& scheme : schemes) {
+    const auto named = bch::find_named_scheme(scheme);
+    if (!named) throw std::invalid_argument("unknown scheme '" + scheme + "'");
+    for (const auto& perm : permutations) {
+      auto t = clock_type::now();
+      const auto layout = bch::layout_scheme(named->word, named->split, perm);
+      const auto c = bch::make_coefficients(layout);
+      if (layout.free_coefficients.size() != 2)
+        throw std::invalid_argument(scheme + " has " + std::to_string(layout.free_coefficients.size()) +
+                                    " free coefficients; this solver takes two");
+      const auto stages = bch::stage_elements(layout, c, w);
+      const auto k5 = bch::compute_modified_hamiltonian(stages, 5);
+      const auto& h3 = k5.remainder[3];
+      const GiNaC::ex p1 = h3.coefficient(lie::monomial(2, 2, 0)), p2 = h3.coefficient(lie::monomial(2, 0, 2));
+      const GiNaC::ex p3 = h3.coefficient(lie::monomial(0, 2, 2));
+      result.seconds_conditions += since(t);
+
+      t = clock_type::now();
+      const GiNaC::symbol u = c.free.at(layout.free_coefficients[0]), v = c.free.at(layout.free_coefficients[1]);
+      const auto sys = solve_two_equations(p1, p2, u, v, digits);
+      result.seconds_elimination += since(t);
+
+      system_report report{scheme, perm, static_cast<int>(sys.points.size()), sys.degenerate, sys.note};
+      if (sys.degenerate && !lie::symmetry_of(body).empty())
+        report.note = "symmetric top (" + lie::symmetry_of(body) + "): " + sys.note +
+                      (named->split == bch::splitting::rs ? "; with I1 = I2 the R part G1²/2 (1/I1 − 1/I2) vanishes" : "");
+      t = clock_type::now();
+      int label = 0;
+      for (const auto& point : sys.points) {  // already sorted by u: labels follow Tables 2 and 4
+        dedicated_solution s;
+        s.scheme = scheme;
+        s.permutation = perm;
+        s.label = ++label;
+        s.layout = layout;
+        s.free = layout.free_coefficients;
+        const GiNaC::lst at = {u == exact(point.u), v == exact(point.v)};
+        const GiNaC::lst at_rounded = {u == exact(round_to_digits(point.u, digits)),
+                                       v == exact(round_to_digits(point.v, digits))};
+        for (const auto& st : layout.stages) {
+          if (std::any_of(s.coefficients.begin(), s.coefficients.end(), [&](const auto& p) { return p.first == st.coefficient; }))
+            continue;
+          s.coefficients.emplace_back(st.coefficient, rational(c.value.at(st.coefficient).subs(at)));
+        }
+        s.residual = 0;
+        for (const GiNaC::ex& p : {p1, p2, p3}) s.residual = cln::max(s.residual, cln::abs(rational(p.subs(at_rounded))));
+        std::vector<double> q;
+        for (const auto& [m, coeff] : k5.remainder[5].terms())
+          q.push_back(GiNaC::ex_to<GiNaC::numeric>(coeff.subs(at)).to_double());
+        s.analytic_remainder = analytic_remainder_norm(q, body);
+        result.solutions.push_back(std::move(s));
+      }
+      result.seconds_remainder += since(t);
+      result.systems.push_back(std::move(report));
+    }
+  }
+  std::stable_sort(result.solutions.begin(), result.solutions.end(),
+                   [](const auto& a, const auto& b) { return a.analytic_remainder < b.analytic_remainder; });
+  return result;
+}
+
+}  // namespace rotlie::solver

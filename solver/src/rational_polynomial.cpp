@@ -1,0 +1,180 @@
+#include "rotlie/solver/rational_polynomial.hpp"
+
+#include <stdexcept>
+
+namespace rotlie::solver {
+
+rational_polynomial::rational_polynomial(std::vector<cln::cl_RA> coefficients) : c_(std::move(coefficients)) { trim(); }
+
+void rational_polynomial::trim() {
+  while (!c_.empty() && cln::zerop(c_.back())) c_.pop_back();
+}
+
+rational_polynomial rational_polynomial::from_ex(const GiNaC::ex& e, const GiNaC::symbol& x) {
+  const GiNaC::ex p = e.expand();
+  if (!p.is_polynomial(x)) throw std::invalid_argument("not a polynomial");
+  std::vector<cln::cl_RA> c;
+  for (int d = 0; d <= p.degree(x); ++d) {
+    const GiNaC::ex k = p.coeff(x, d);
+    if (!GiNaC::is_a<GiNaC::numeric>(k) || !GiNaC::ex_to<GiNaC::numeric>(k).is_rational())
+      throw std::invalid_argument("coefficients must be rational numbers");
+    c.push_back(cln::the<cln::cl_RA>(GiNaC::ex_to<GiNaC::numeric>(k).to_cl_N()));
+  }
+  return rational_polynomial(std::move(c));
+}
+
+cln::cl_RA rational_polynomial::operator()(const cln::cl_RA& x) const {
+  cln::cl_RA v = 0;
+  for (auto it = c_.rbegin(); it != c_.rend(); ++it) v = v * x + *it;  // Horner
+  return v;
+}
+
+rational_polynomial rational_polynomial::derivative() const {
+  std::vector<cln::cl_RA> d;
+  for (std::size_t i = 1; i < c_.size(); ++i) d.push_back(c_[i] * static_cast<long>(i));
+  return rational_polynomial(std::move(d));
+}
+
+namespace {
+// a = q b + r
+void divide(const rational_polynomial& a, const rational_polynomial& b, rational_polynomial& q, rational_polynomial& r) {
+  if (b.is_zero()) throw std::domain_error("division by the zero polynomial");
+  std::vector<cln::cl_RA> rem = a.coefficients();
+  const auto& bc = b.coefficients();
+  const int db = b.degree();
+  std::vector<cln::cl_RA> quo(rem.size() >= bc.size() ? rem.size() - bc.size() + 1 : 0, 0);
+  for (int i = static_cast<int>(rem.size()) - 1; i >= db; --i) {
+    const cln::cl_RA f = rem[static_cast<std::size_t>(i)] / bc.back();
+    if (cln::zerop(f)) continue;
+    quo[static_cast<std::size_t>(i - db)] = f;
+    for (int j = 0; j <= db; ++j) rem[static_cast<std::size_t>(i - db + j)] = rem[static_cast<std::size_t>(i - db + j)] - f * bc[static_cast<std::size_t>(j)];
+  }
+  q = rational_polynomial(std::move(quo));
+  rem.resize(static_cast<std::size_t>(std::max(db, 0)));
+  r = rational_polynomial(std::move(rem));
+}
+}  // namespace
+
+rational_polynomial remainder(const rational_polynomial& a, const rational_polynomial& b) {
+  rational_polynomial q, r;
+  divide(a, b, q, r);
+  return r;
+}
+
+rational_polynomial quotient(const rational_polynomial& a, const rational_polynomial& b) {
+  rational_polynomial q, r;
+  divide(a, b, q, r);
+  return q;
+}
+
+rational_polynomial gcd(rational_polynomial a, rational_polynomial b) {
+  while (!b.is_zero()) {
+    rational_polynomial r = remainder(a, b);
+    a = std::move(b);
+    b = std::move(r);
+  }
+  if (a.is_zero()) return a;
+  std::vector<cln::cl_RA> c = a.coefficients();
+  const cln::cl_RA lead = c.back();
+  for (auto& x : c) x = x / lead;
+  return rational_polynomial(std::move(c));
+}
+
+rational_polynomial rational_polynomial::square_free() const {
+  if (degree() < 1) return *this;
+  return quotient(*this, gcd(*this, derivative()));
+}
+
+namespace {
+
+std::vector<rational_polynomial> sturm_sequence(const rational_polynomial& p) {
+  std::vector<rational_polynomial> s{p, p.derivative()};
+  while (!s.back().is_zero() && s.back().degree() > 0) {
+    rational_polynomial r = remainder(s[s.size() - 2], s.back());
+    std::vector<cln::cl_RA> c = r.coefficients();
+    for (auto& x : c) x = -x;
+    s.emplace_back(std::move(c));
+  }
+  if (s.back().is_zero()) s.pop_back();
+  return s;
+}
+
+int sign_changes(const std::vector<rational_polynomial>& s, const cln::cl_RA& x) {
+  int changes = 0, last = 0;
+  for (const auto& p : s) {
+    const int sg = cln::signum(p(x)) == 0 ? 0 : (cln::plusp(p(x)) ? 1 : -1);
+    if (sg == 0) continue;
+    if (last != 0 && sg != last) ++changes;
+    last = sg;
+  }
+  return changes;
+}
+
+// Cauchy's bound: every root has |x| < 1 + max |a_i / a_n|.
+cln::cl_RA root_bound(const rational_polynomial& p) {
+  cln::cl_RA m = 0;
+  const auto& c = p.coefficients();
+  for (std::size_t i = 0; i + 1 < c.size(); ++i) m = cln::max(m, cln::abs(c[i] / c.back()));
+  return m + 1;
+}
+
+}  // namespace
+
+std::vector<root_interval> isolate_real_roots(const rational_polynomial& p) {
+  if (p.is_zero()) throw std::invalid_argument("the zero polynomial has every number as a root");
+  const rational_polynomial q = p.square_free();
+  std::vector<root_interval> roots;
+  if (q.degree() < 1) return roots;
+  const auto s = sturm_sequence(q);
+  const cln::cl_RA b = root_bound(q);
+  // (lo, hi] with count = V(lo) − V(hi) distinct roots, lo and hi never roots (checked when split)
+  struct piece {
+    cln::cl_RA lo, hi;
+    int count;
+  };
+  std::vector<piece> stack{{-b, b, sign_changes(s, -b) - sign_changes(s, b)}};
+  while (!stack.empty()) {
+    piece c = stack.back();
+    stack.pop_back();
+    if (c.count == 0) continue;
+    if (c.count == 1) {
+      roots.push_back({c.lo, c.hi});
+      continue;
+    }
+    const cln::cl_RA mid = (c.lo + c.hi) / 2;
+    if (cln::zerop(q(mid))) {
+      roots.push_back({mid, mid});
+      // exclude the exact root from both halves by stepping a hair away on each side
+      cln::cl_RA eps = (c.hi - c.lo) / 1024;
+      while (sign_changes(s, mid - eps) - sign_changes(s, mid + eps) != 1) eps = eps / 2;
+      const cln::cl_RA l = mid - eps, r = mid + eps;
+      stack.push_back({c.lo, l, sign_changes(s, c.lo) - sign_changes(s, l)});
+      stack.push_back({r, c.hi, sign_changes(s, r) - sign_changes(s, c.hi)});
+      continue;
+    }
+    const int vmid = sign_changes(s, mid);
+    stack.push_back({c.lo, mid, sign_changes(s, c.lo) - vmid});
+    stack.push_back({mid, c.hi, vmid - sign_changes(s, c.hi)});
+  }
+  std::sort(roots.begin(), roots.end(), [](const root_interval& x, const root_interval& y) { return x.lo < y.lo; });
+  return roots;
+}
+
+cln::cl_RA refine_root(const rational_polynomial& p, root_interval r, const cln::cl_RA& width) {
+  if (r.lo == r.hi) return r.lo;
+  // On (lo, hi] a square-free p changes sign exactly once (hi may be the root itself).
+  if (cln::zerop(p(r.hi))) return r.hi;
+  const bool rising = cln::plusp(p(r.hi));
+  while (r.hi - r.lo > width) {
+    const cln::cl_RA mid = (r.lo + r.hi) / 2;
+    const cln::cl_RA v = p(mid);
+    if (cln::zerop(v)) return mid;
+    if (cln::plusp(v) == rising)
+      r.hi = mid;
+    else
+      r.lo = mid;
+  }
+  return (r.lo + r.hi) / 2;
+}
+
+}  // namespace rotlie::solver
