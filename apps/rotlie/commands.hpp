@@ -35,3 +35,13 @@ struct remainder_options {
 int run_remainder(const remainder_options& options);
 
 }  // namespace rotlie::app
+
+namespace rotlie::app {
+
+struct solve_options {
+  std::string family, scheme, perm = "all", inertia, digits = "40", out;
+  bool json = false;
+};
+int run_solve(const solve_options& options);
+
+}  // namespace rotlie::app

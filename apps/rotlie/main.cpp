@@ -43,6 +43,16 @@ int main(int argc, char** argv) {
   remainder_cmd->add_flag("--latex", remainder.latex, "LaTeX output");
   remainder_cmd->add_flag("--json", remainder.json, "Machine-readable output on stdout");
 
+  solve_options solve;
+  auto* solve_cmd = app.add_subcommand("solve", "All real solutions of a dedicated family for one body, ranked");
+  solve_cmd->add_option("--family", solve.family, "N (R and P: not yet)")->required();
+  solve_cmd->add_option("--scheme", solve.scheme, "One scheme of the family, e.g. N2 (default: all)");
+  solve_cmd->add_option("--perm", solve.perm, "ABC, BCA, CAB, ACB, CBA, BAC or all (default all)");
+  solve_cmd->add_option("--inertia", solve.inertia, "I1,I2,I3 as exact numbers, or water, sphere");
+  solve_cmd->add_option("--digits", solve.digits, "Significant digits of the coefficients (default 40)");
+  solve_cmd->add_option("--out", solve.out, "Write one scheme table per solution into this folder");
+  solve_cmd->add_flag("--json", solve.json, "Machine-readable output on stdout");
+
   report_command_options report;
   auto* report_cmd = app.add_subcommand("report", "Regenerate every table and figure into one folder");
   report_cmd->add_option("--out", report.out, "Output folder (default: rotlie-report)");
@@ -71,6 +81,7 @@ int main(int argc, char** argv) {
     if (*dims_cmd) return run_dims(dims);
     if (*stages_cmd) return run_stages(stages);
     if (*remainder_cmd) return run_remainder(remainder);
+    if (*solve_cmd) return run_solve(solve);
     if (*report_cmd) return run_report_command(report);
   } catch (const usage_error& e) {
     return fail(e.what(), 2);

@@ -89,7 +89,9 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
         for (const auto& st : layout.stages) {
           if (std::any_of(s.coefficients.begin(), s.coefficients.end(), [&](const auto& p) { return p.first == st.coefficient; }))
             continue;
-          s.coefficients.emplace_back(st.coefficient, rational(c.value.at(st.coefficient).subs(at)));
+          const GiNaC::ex expression = c.value.at(st.coefficient);
+          if (GiNaC::is_a<GiNaC::numeric>(expression)) s.exact.push_back(st.coefficient);
+          s.coefficients.emplace_back(st.coefficient, rational(expression.subs(at)));
         }
         s.residual = 0;
         for (const GiNaC::ex& p : {p1, p2, p3}) s.residual = cln::max(s.residual, cln::abs(rational(p.subs(at_rounded))));

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -174,6 +175,68 @@ BOOST_AUTO_TEST_CASE(remainder_bad_input) {
   expect_clean_error("remainder --scheme N4 --split XY", "--split");
   expect_clean_error("remainder --scheme N4 --split RS", "ABC scheme");
   expect_clean_error("remainder --scheme N4 --latex --json", "exclude");
+}
+
+BOOST_AUTO_TEST_CASE(solve_json_shape_for_water) {
+  const auto r = run("solve --family N --inertia water --json");
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
+  const auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j.at("family").get<std::string>() == "N");
+  BOOST_TEST(j.at("real_solutions").get<int>() == 90);  // the paper's count (section 4.3)
+  BOOST_TEST((j.at("inertia") == nlohmann::json::array({"2555/7344", "19187/29376", "1"})));
+  const auto& best = j.at("solutions")[0];
+  BOOST_TEST(best.at("scheme").get<std::string>() == "N2");
+  BOOST_TEST(best.at("perm").get<std::string>() == "BAC");
+  BOOST_TEST(best.at("label").get<int>() == 2);
+  BOOST_TEST(best.at("word").get<std::string>() == "BABCBCBAB");
+  BOOST_TEST(best.at("coefficients").at("a1").get<std::string>().rfind("4.5504624774591050429019276281136041301", 0) == 0u);
+  BOOST_TEST(std::abs(best.at("analytic_remainder").get<double>() - 0.0106) < 0.00005);
+  BOOST_TEST(best.at("residual").get<double>() < 1e-35);
+  double previous = 0;
+  for (const auto& s : j.at("solutions")) {
+    BOOST_TEST(s.at("analytic_remainder").get<double>() >= previous);
+    previous = s.at("analytic_remainder").get<double>();
+  }
+}
+
+BOOST_AUTO_TEST_CASE(solve_writes_scheme_tables_that_meet_the_contract) {
+  const fs::path out = scratch_dir() / "tables";
+  const auto r = run("solve --family N --scheme N4 --perm BCA --inertia water --digits 45 --out " + out.string());
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
+  const std::string table = slurp(out / "N4_BCA_1.scheme");
+  BOOST_TEST(table.find("word BCABCBACB") != std::string::npos);
+  // Σ of each letter's coefficients is 1 and the stages read the same backwards.
+  std::istringstream in(table);
+  std::string line;
+  std::map<char, double> sum;
+  std::vector<std::string> names;
+  while (std::getline(in, line)) {
+    if (line.rfind("stage ", 0) != 0) continue;
+    std::istringstream f(line.substr(6));
+    char letter;
+    std::string name, value;
+    f >> letter >> name >> value;
+    BOOST_TEST(value.find('e') - value.find('.') >= 45u, value);  // ≥ 45 significant digits
+    sum[letter] += std::stod(value);
+    names.push_back(std::string(1, letter) + name);
+  }
+  BOOST_REQUIRE(names.size() == 9u);
+  for (const auto& [letter, total] : sum) BOOST_TEST(std::abs(total - 1) < 1e-14, letter);
+  BOOST_TEST(std::equal(names.begin(), names.end(), names.rbegin()));
+}
+
+BOOST_AUTO_TEST_CASE(solve_bad_input) {
+  expect_clean_error("solve --family N --inertia 0.345,0.653,1", "eq. (77)");
+  expect_clean_error("solve --family N --inertia 0,1,1", "not positive");
+  expect_clean_error("solve --family N --inertia -1,1,1", "not positive");
+  expect_clean_error("solve --family N --inertia nan,1,1", "not a finite number");
+  expect_clean_error("solve --family N", "--inertia is required");
+  expect_clean_error("solve --family Q --inertia water", "--family");
+  expect_clean_error("solve --family N --scheme N9 --inertia water", "not in the N family");
+  expect_clean_error("solve --family N --perm XYZ --inertia water", "--perm");
+  expect_clean_error("solve --family N --digits 5 --inertia water", "at least 10");
+  expect_clean_error("solve --family N --digits 99999 --inertia water", "at most");
+  expect_clean_error("solve --family P --inertia water", "not available yet");
 }
 
 BOOST_AUTO_TEST_CASE(report_writes_a_complete_folder) {

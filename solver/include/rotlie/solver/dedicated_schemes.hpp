@@ -22,6 +22,7 @@ struct dedicated_solution {
   /// Every coefficient name (a1, b1, a2, …) → exact rational within 10^-(digits+10) of the solution.
   std::vector<std::pair<std::string, cln::cl_RA>> coefficients;
   std::vector<std::string> free;  ///< names of the free coefficients
+  std::vector<std::string> exact;  ///< coefficients fixed to an exact rational by the first-order conditions alone
   cln::cl_RA residual;            ///< max |P_i| of H_R3 at the coefficients rounded to `digits` digits
   double analytic_remainder = 0;  ///< ‖H_R5‖ in the normalisation of analytic_remainder_norm
   std::string name() const { return scheme + " " + permutation + " (" + std::to_string(label) + ")"; }

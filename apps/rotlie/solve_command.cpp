@@ -1,0 +1,69 @@
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+
+#include "arguments.hpp"
+#include "commands.hpp"
+#include "rotlie/reports/output_file.hpp"
+#include "rotlie/reports/solve_io.hpp"
+#include "rotlie/solver/scheme_table.hpp"
+
+namespace rotlie::app {
+namespace {
+
+constexpr int max_digits = 300;  // beyond this the exact bisection dominates for no use
+
+std::vector<std::string> schemes_of(const solve_options& o) {
+  if (o.family != "N" && o.family != "R" && o.family != "P")
+    throw usage_error("--family must be N, R or P, got '" + o.family + "'");
+  if (o.family != "N")
+    throw usage_error("the " + o.family +
+                      " family (free-parameter minimisation of ‖H_R5‖, section 3.4) is not available yet; use --family N");
+  std::vector<std::string> all;
+  for (int i = 1; i <= 7; ++i) all.push_back("N" + std::to_string(i));
+  if (o.scheme.empty()) return all;
+  if (std::find(all.begin(), all.end(), o.scheme) == all.end())
+    throw usage_error("--scheme '" + o.scheme + "' is not in the " + o.family + " family (N1 … N7)");
+  return {o.scheme};
+}
+
+}  // namespace
+
+int run_solve(const solve_options& options) {
+  const auto schemes = schemes_of(options);
+  std::vector<std::string> perms = bch::permutation_names();
+  if (options.perm != "all") {
+    if (!bch::is_permutation_name(options.perm))
+      throw usage_error("--perm must be all or one of ABC, BCA, CAB, ACB, CBA, BAC, got '" + options.perm + "'");
+    perms = {options.perm};
+  }
+  if (options.inertia.empty()) throw usage_error("--inertia is required (I1,I2,I3, water or sphere)");
+  lie::moments_of_inertia body;
+  try {
+    body = lie::parse_moments(options.inertia);
+  } catch (const std::invalid_argument& e) {
+    throw usage_error(std::string("--inertia: ") + e.what());
+  }
+  const int digits = static_cast<int>(parse_integer_in_range(options.digits, "--digits", 10, max_digits));
+
+  const auto result = solver::solve_dedicated(body, schemes, perms, digits);
+
+  if (!options.out.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(options.out, ec);
+    if (ec) throw std::runtime_error("cannot create the output folder " + options.out + ": " + ec.message());
+    for (const auto& s : result.solutions) {
+      std::string file = solver::scheme_table_name(s);
+      std::replace(file.begin(), file.end(), ':', '_');
+      reports::write_file_atomically(std::filesystem::path(options.out) / (file + ".scheme"),
+                                     solver::scheme_table_text(s, body, digits));
+    }
+  }
+  if (options.json)
+    std::cout << reports::solve_json(result, body, options.family, digits).dump(2) << "\n";
+  else
+    std::cout << reports::solve_text(result, body, digits, 20);
+  return 0;
+}
+
+}  // namespace rotlie::app
