@@ -5,6 +5,7 @@
 #include "rotlie/bch/evaluate.hpp"
 #include "rotlie/bch/lie_series.hpp"
 #include "rotlie/lie/poisson_bracket.hpp"
+#include "rotlie/lie/theorems.hpp"
 
 namespace rotlie::bch {
 namespace {
@@ -100,6 +101,12 @@ modified_hamiltonian compute_modified_hamiltonian(const std::vector<stage_elemen
   k.remainder.resize(static_cast<std::size_t>(max_order) + 1);
   for (const auto& [m, c] : z.terms()) k.remainder[m.degree() - 1].add_term(m, c);
   return k;
+}
+
+GiNaC::ex theorem2_pairing(const symbolic_polynomial& x) {
+  GiNaC::ex pairing = 0;
+  for (const auto& [m, c] : x.terms()) pairing += GiNaC::numeric(cln::cl_N(lie::theorem2_weight(m))) * c;
+  return pairing.expand();
 }
 
 std::vector<stage_element> stage_elements(const scheme_layout& layout, const coefficient_symbols& coefficients,

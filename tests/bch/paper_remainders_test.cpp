@@ -14,24 +14,6 @@ namespace {
 
 ex third(long n) { return GiNaC::numeric(n, 3); }
 
-// Exact: prem(p, f, v) = 0, i.e. f divides p (up to a factor free of v).
-bool divides(const ex& f, const ex& p, const GiNaC::symbol& v) { return GiNaC::prem(p.expand(), f.expand(), v).expand().is_zero(); }
-
-// Checks an elimination of the form f(v1) = 0, g = g0 + v2·g1 + (terms in v1) = 0 against the engine's
-// P'_1 = P'_2 = 0: (i) every root of f with v2 from g solves both, (ii) f divides Res_v2(P'_1, P'_2).
-void check_elimination(const third_order& t, const std::string& v1_name, const std::string& v2_name, const ex& f,
-                       const ex& g, const std::string& label) {
-  const GiNaC::symbol v1 = t.coefficients.free.at(v1_name), v2 = t.coefficients.free.at(v2_name);
-  const ex g1 = g.expand().coeff(v2, 1), rest = (g - v2 * g1).expand();
-  BOOST_REQUIRE(!g1.is_zero());
-  for (const ex& p : {t.p1, t.p2}) {
-    const ex substituted = GiNaC::numer(GiNaC::normal(p.subs(v2 == -rest / g1)));
-    BOOST_TEST(divides(f, substituted, v1), label << ": f(" << v1_name << ") = 0 with g = 0 solves P' = 0");
-  }
-  const ex res = GiNaC::resultant(t.p1.expand(), t.p2.expand(), v2);
-  BOOST_TEST(divides(f, res, v1), label << ": f divides the resultant");
-}
-
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(rsrsrsr_eqs_47_48) {

@@ -51,6 +51,10 @@ inline constexpr int max_remainder_order = 9;
 /// (the first stage acts first). Throws std::invalid_argument for order < 1 or > max_remainder_order.
 modified_hamiltonian compute_modified_hamiltonian(const std::vector<stage_element>& stages, int max_order);
 
+/// Σ λ_pqr β_pqr of eq. (28) for a polynomial with even exponents (eq. 63 at order 5): Theorem 2
+/// says it vanishes on odd orders ≥ 3.
+GiNaC::ex theorem2_pairing(const symbolic_polynomial& x);
+
 /// Convenience: a laid-out scheme with its coefficient values and body.
 std::vector<stage_element> stage_elements(const scheme_layout& layout, const coefficient_symbols& coefficients,
                                           const inverse_inertia& w);
