@@ -16,14 +16,14 @@ constexpr int max_digits = 300;  // beyond this the exact bisection dominates fo
 std::vector<std::string> schemes_of(const solve_options& o) {
   if (o.family != "N" && o.family != "R" && o.family != "P")
     throw usage_error("--family must be N, R or P, got '" + o.family + "'");
-  if (o.family != "N")
-    throw usage_error("the " + o.family +
-                      " family (free-parameter minimisation of ‖H_R5‖, section 3.4) is not available yet; use --family N");
   std::vector<std::string> all;
-  for (int i = 1; i <= 7; ++i) all.push_back("N" + std::to_string(i));
+  if (o.family == "R") all.push_back("R");
+  const int members = o.family == "N" ? 7 : o.family == "P" ? 15 : 0;
+  for (int i = 1; i <= members; ++i) all.push_back(o.family + std::to_string(i));
   if (o.scheme.empty()) return all;
   if (std::find(all.begin(), all.end(), o.scheme) == all.end())
-    throw usage_error("--scheme '" + o.scheme + "' is not in the " + o.family + " family (N1 … N7)");
+    throw usage_error("--scheme '" + o.scheme + "' is not in the " + o.family + " family (" + all.front() +
+                      (all.size() > 1 ? " … " + all.back() : std::string()) + ")");
   return {o.scheme};
 }
 

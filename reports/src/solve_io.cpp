@@ -37,6 +37,11 @@ nlohmann::json solve_json(const solver::family_result& r, const lie::moments_of_
     nlohmann::json j = {{"scheme", s.scheme}, {"perm", s.permutation}, {"real_solutions", s.real_solutions},
                         {"degenerate", s.degenerate}};
     if (!s.note.empty()) j["note"] = s.note;
+    j["eliminant_degree"] = s.eliminant_degree;
+    if (!s.eliminated.empty()) {
+      j["eliminated"] = s.eliminated;
+      j["discarded"] = s.discarded;
+    }
     systems.push_back(std::move(j));
   }
   return {{"inertia", {text(body.I[0]), text(body.I[1]), text(body.I[2])}},
@@ -45,7 +50,8 @@ nlohmann::json solve_json(const solver::family_result& r, const lie::moments_of_
           {"solutions", solutions},
           {"systems", systems},
           {"seconds", {{"conditions", r.seconds_conditions},
-                       {"elimination_and_roots", r.seconds_elimination},
+                       {"elimination", r.seconds_elimination},
+                       {"roots", r.seconds_roots},
                        {"analytic_remainder", r.seconds_remainder}}}};
 }
 

@@ -7,6 +7,7 @@
 
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/lie/theorems.hpp"
+#include "rotlie/solver/critical_points.hpp"
 #include "rotlie/solver/real_solutions.hpp"
 
 namespace rotlie::solver {
@@ -55,9 +56,9 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
       auto t = clock_type::now();
       const auto layout = bch::layout_scheme(named->word, named->split, perm);
       const auto c = bch::make_coefficients(layout);
-      if (layout.free_coefficients.size() != 2)
+      if (layout.free_coefficients.size() != 2 && layout.free_coefficients.size() != 3)
         throw std::invalid_argument(scheme + " has " + std::to_string(layout.free_coefficients.size()) +
-                                    " free coefficients; this solver takes two");
+                                    " free coefficients; this solver takes two (N) or three (R, P)");
       const auto stages = bch::stage_elements(layout, c, w);
       const auto k5 = bch::compute_modified_hamiltonian(stages, 5);
       const auto& h3 = k5.remainder[3];
@@ -65,27 +66,53 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
       const GiNaC::ex p3 = h3.coefficient(lie::monomial(0, 2, 2));
       result.seconds_conditions += since(t);
 
-      t = clock_type::now();
-      const GiNaC::symbol u = c.free.at(layout.free_coefficients[0]), v = c.free.at(layout.free_coefficients[1]);
-      const auto sys = solve_two_equations(p1, p2, u, v, digits);
-      result.seconds_elimination += since(t);
-
-      system_report report{scheme, perm, static_cast<int>(sys.points.size()), sys.degenerate, sys.note};
-      if (sys.degenerate && !lie::symmetry_of(body).empty())
-        report.note = "symmetric top (" + lie::symmetry_of(body) + "): " + sys.note +
+      // Two free coefficients: H_R3 = 0 has isolated solutions. Three (R, P; section 3.4): the critical
+      // points of ‖H_R5‖² (eq. 64) on the curve H_R3 = 0.
+      std::vector<std::vector<cln::cl_RA>> points;
+      system_report report;
+      report.scheme = scheme;
+      report.permutation = perm;
+      std::vector<GiNaC::symbol> unknowns;
+      for (const auto& name : layout.free_coefficients) unknowns.push_back(GiNaC::ex_to<GiNaC::symbol>(c.free.at(name)));
+      if (unknowns.size() == 2) {
+        const auto sys = solve_two_equations(p1, p2, unknowns[0], unknowns[1], digits);
+        result.seconds_elimination += sys.seconds_elimination;
+        result.seconds_roots += sys.seconds_roots;
+        report.degenerate = sys.degenerate;
+        report.note = sys.note;
+        report.eliminant_degree = sys.resultant_degree_u;
+        for (const auto& p : sys.points) points.push_back({p.u, p.v});  // sorted by u: labels follow Tables 2 and 4
+      } else {
+        GiNaC::ex norm_squared = 0;
+        for (const auto& [m, q] : k5.remainder[5].terms()) norm_squared += q * q;
+        const auto crit = constrained_critical_points(norm_squared, p1, p2, {unknowns[0], unknowns[1], unknowns[2]}, digits);
+        result.seconds_elimination += crit.seconds_elimination;
+        result.seconds_roots += crit.seconds_roots;
+        report.degenerate = crit.degenerate;
+        report.note = crit.note;
+        report.eliminant_degree = crit.eliminant_degree;
+        report.eliminated = crit.eliminated;
+        report.discarded = crit.discarded;
+        for (const auto& p : crit.points) points.push_back({p.values[0], p.values[1], p.values[2]});
+      }
+      report.real_solutions = static_cast<int>(points.size());
+      if (report.degenerate && !lie::symmetry_of(body).empty())
+        report.note = "symmetric top (" + lie::symmetry_of(body) + "): " + report.note +
                       (named->split == bch::splitting::rs ? "; with I1 = I2 the R part G1²/2 (1/I1 − 1/I2) vanishes" : "");
       t = clock_type::now();
       int label = 0;
-      for (const auto& point : sys.points) {  // already sorted by u: labels follow Tables 2 and 4
+      for (const auto& point : points) {
         dedicated_solution s;
         s.scheme = scheme;
         s.permutation = perm;
         s.label = ++label;
         s.layout = layout;
         s.free = layout.free_coefficients;
-        const GiNaC::lst at = {u == exact(point.u), v == exact(point.v)};
-        const GiNaC::lst at_rounded = {u == exact(round_to_digits(point.u, digits)),
-                                       v == exact(round_to_digits(point.v, digits))};
+        GiNaC::exmap at, at_rounded;
+        for (std::size_t k = 0; k < unknowns.size(); ++k) {
+          at[unknowns[k]] = exact(point[k]);
+          at_rounded[unknowns[k]] = exact(round_to_digits(point[k], digits));
+        }
         for (const auto& st : layout.stages) {
           if (std::any_of(s.coefficients.begin(), s.coefficients.end(), [&](const auto& p) { return p.first == st.coefficient; }))
             continue;

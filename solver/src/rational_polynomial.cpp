@@ -1,5 +1,7 @@
 #include "rotlie/solver/rational_polynomial.hpp"
 
+#include <cln/integer.h>
+
 #include <stdexcept>
 
 namespace rotlie::solver {
@@ -120,7 +122,7 @@ cln::cl_RA root_bound(const rational_polynomial& p) {
 
 }  // namespace
 
-std::vector<root_interval> isolate_real_roots(const rational_polynomial& p) {
+std::vector<root_interval> isolate_real_roots_sturm(const rational_polynomial& p) {
   if (p.is_zero()) throw std::invalid_argument("the zero polynomial has every number as a root");
   const rational_polynomial q = p.square_free();
   std::vector<root_interval> roots;
@@ -160,16 +162,33 @@ std::vector<root_interval> isolate_real_roots(const rational_polynomial& p) {
   return roots;
 }
 
+namespace {
+// sign of p(num/den), den > 0, from the integer Σ c_i num^i den^(n−i) (no rational normalisation).
+int sign_at(const std::vector<cln::cl_I>& c, const cln::cl_RA& x) {
+  const cln::cl_I num = cln::numerator(x), den = cln::denominator(x);
+  cln::cl_I s = c.back(), den_power = 1;
+  for (std::size_t i = c.size() - 1; i-- > 0;) {
+    den_power = den_power * den;
+    s = s * num + c[i] * den_power;
+  }
+  return cln::zerop(s) ? 0 : (cln::plusp(s) ? 1 : -1);
+}
+}  // namespace
+
 cln::cl_RA refine_root(const rational_polynomial& p, root_interval r, const cln::cl_RA& width) {
   if (r.lo == r.hi) return r.lo;
+  cln::cl_I denominators = 1;
+  for (const auto& c : p.coefficients()) denominators = cln::lcm(denominators, cln::denominator(c));
+  std::vector<cln::cl_I> c;
+  for (const auto& x : p.coefficients()) c.push_back(cln::the<cln::cl_I>(x * denominators));
   // On (lo, hi] a square-free p changes sign exactly once (hi may be the root itself).
-  if (cln::zerop(p(r.hi))) return r.hi;
-  const bool rising = cln::plusp(p(r.hi));
+  const int at_hi = sign_at(c, r.hi);
+  if (at_hi == 0) return r.hi;
   while (r.hi - r.lo > width) {
     const cln::cl_RA mid = (r.lo + r.hi) / 2;
-    const cln::cl_RA v = p(mid);
-    if (cln::zerop(v)) return mid;
-    if (cln::plusp(v) == rising)
+    const int v = sign_at(c, mid);
+    if (v == 0) return mid;
+    if (v == at_hi)
       r.hi = mid;
     else
       r.lo = mid;

@@ -199,6 +199,19 @@ BOOST_AUTO_TEST_CASE(solve_json_shape_for_water) {
   }
 }
 
+BOOST_AUTO_TEST_CASE(solve_p_family_gives_eq_76_first) {
+  const auto r = run("solve --family P --scheme P1 --perm BAC --inertia water --json");
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
+  const auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j.at("family").get<std::string>() == "P");
+  BOOST_TEST(j.at("real_solutions").get<int>() == 8);
+  const auto& best = j.at("solutions").at(0);
+  BOOST_TEST(best.at("label").get<int>() == 5);
+  BOOST_TEST(best.at("word").get<std::string>() == "BABABCBABAB");  // eq. (75)
+  BOOST_TEST(best.at("coefficients").at("a1").get<std::string>().rfind("2.65761371902173917814834651897593444", 0) == 0u);
+  BOOST_TEST(j.at("systems").at(0).at("eliminant_degree").get<int>() > 0);
+}
+
 BOOST_AUTO_TEST_CASE(solve_writes_scheme_tables_that_meet_the_contract) {
   const fs::path out = scratch_dir() / "tables";
   const auto r = run("solve --family N --scheme N4 --perm BCA --inertia water --digits 45 --out " + out.string());
@@ -237,7 +250,8 @@ BOOST_AUTO_TEST_CASE(solve_bad_input) {
   expect_clean_error("solve --family N --perm XYZ --inertia water", "--perm");
   expect_clean_error("solve --family N --digits 5 --inertia water", "at least 10");
   expect_clean_error("solve --family N --digits 99999 --inertia water", "at most");
-  expect_clean_error("solve --family P --inertia water", "not available yet");
+  expect_clean_error("solve --family P --scheme N2 --inertia water", "not in the P family (P1 … P15)");
+  expect_clean_error("solve --family R --scheme P1 --inertia water", "not in the R family (R)");
 }
 
 BOOST_AUTO_TEST_CASE(report_writes_a_complete_folder) {

@@ -91,8 +91,13 @@ void check_scheme(std::string_view word, bch::splitting split, std::mt19937_64& 
     const double relative = static_cast<double>(norm(miss) / (std::pow(h, p) * norm(predicted)));
     BOOST_TEST_MESSAGE(word << " h = " << static_cast<double>(h) << ": |error| " << static_cast<double>(norm(error))
                             << ", relative miss of h^" << p << " X_{H_R" << p << "}: " << relative);
-    BOOST_TEST(relative < 0.2, word << " at h = " << static_cast<double>(h));
-    if (previous > 0) BOOST_TEST((relative < 0.7 * previous), word << ": the miss falls with h");
+    // The miss is the next order, O(h) relative to h^p X_{H_Rp}: it must halve with h (a wrong
+    // H_Rp would leave a constant miss). Its level depends on the random draw: a nearly
+    // cancelling H_Rp leaves it above 1 at h = 0.04, so only the rate is asserted.
+    if (previous > 0) {
+      BOOST_TEST((relative < 0.7 * previous), word << ": the miss falls like h");
+      BOOST_TEST((relative > 0.3 * previous), word << ": the miss falls like h, not faster");
+    }
     previous = relative;
   }
 }

@@ -1,8 +1,9 @@
 #pragma once
 // Dedicated 4th-order schemes for one body (section 3): the conditions H_R3 = 0 (two independent
-// equations after Theorem 2: the coefficients P1 of G1²G2² and P2 of G1²G3²) in the two free stage
-// coefficients of an N scheme (or RSRSRSR, SRSRSRS), all their real solutions, labelled by
-// ascending first free coefficient, with residual and analytic remainder ‖H_R5‖ (eq. 64).
+// equations after Theorem 2: the coefficients P1 of G1²G2² and P2 of G1²G3²). With two free stage
+// coefficients (N1–N7, RSRSRSR, SRSRSRS) all their real solutions; with three (R, P1–P15, section
+// 3.4) all real critical points of ‖H_R5‖² on that curve. Labelled by ascending first free
+// coefficient, with residual and analytic remainder ‖H_R5‖ (eq. 64).
 #include <cln/rational.h>
 
 #include <string>
@@ -33,15 +34,18 @@ struct system_report {
   int real_solutions = 0;
   bool degenerate = false;
   std::string note;
+  int eliminant_degree = 0;  ///< degree of the univariate resultant whose real roots were isolated
+  std::string eliminated;    ///< R, P: the coefficient solved linearly from one condition
+  int discarded = 0;         ///< R, P: roots of the reduced system where that linear solve is undefined
 };
 
 struct family_result {
   std::vector<dedicated_solution> solutions;  ///< sorted by analytic remainder
   std::vector<system_report> systems;
-  double seconds_conditions = 0, seconds_elimination = 0, seconds_remainder = 0;
+  double seconds_conditions = 0, seconds_elimination = 0, seconds_roots = 0, seconds_remainder = 0;
 };
 
-/// Solves every (scheme, permutation) pair; schemes must have exactly two free coefficients.
+/// Solves every (scheme, permutation) pair; schemes must have two or three free coefficients.
 /// Throws std::invalid_argument for an unknown scheme or permutation or digits < 10.
 family_result solve_dedicated(const lie::moments_of_inertia& body, const std::vector<std::string>& schemes,
                               const std::vector<std::string>& permutations, int digits);

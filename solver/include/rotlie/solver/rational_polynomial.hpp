@@ -1,6 +1,6 @@
 #pragma once
-// Univariate polynomials with exact rational coefficients: Euclid, square-free part, Sturm
-// sequences, certified isolation of every real root, and refinement to any number of digits
+// Univariate polynomials with exact rational coefficients: Euclid, square-free part, certified
+// isolation (Descartes, with Sturm as a second method) of every real root, and refinement to any number of digits
 // by exact bisection. Nothing here is approximate until the caller rounds a root.
 #include <cln/rational.h>
 #include <ginac/ginac.h>
@@ -33,13 +33,22 @@ class rational_polynomial {
   std::vector<cln::cl_RA> c_;
 };
 
+/// True when gcd(p, p') = 1 modulo 2^61 − 1 with the degree kept: then p is square-free over Q.
+/// False means "no certificate" (p may still be square-free).
+bool square_free_certified_mod_prime(const rational_polynomial& p);
+
 /// An interval (lo, hi] holding exactly one real root, or the root itself when lo == hi.
 struct root_interval {
   cln::cl_RA lo, hi;
 };
 
-/// Every distinct real root of p (p ≠ 0), isolated by Sturm's theorem, in increasing order.
+/// Every distinct real root of p (p ≠ 0), in increasing order: Descartes' rule of signs with
+/// bisection on the primitive integer square-free part (descartes_isolation.cpp).
 std::vector<root_interval> isolate_real_roots(const rational_polynomial& p);
+/// The same for a p already known to be square-free (skips the gcd with p', the costly part at high degree).
+std::vector<root_interval> isolate_real_roots_of_square_free(const rational_polynomial& p);
+/// The same by Sturm sequences over Q: a second, independent method (slow beyond degree ~20).
+std::vector<root_interval> isolate_real_roots_sturm(const rational_polynomial& p);
 
 /// Shrinks an isolating interval of a square-free p by exact bisection until hi − lo ≤ width;
 /// returns the midpoint (an exact rational within width/2 of the root).

@@ -22,6 +22,8 @@ struct system_result {
   std::string note;         ///< why, when degenerate
   std::vector<real_point> points;  ///< sorted by u, then v
   int resultant_degree_u = 0, resultant_degree_v = 0;
+  double seconds_elimination = 0;  ///< gcd check and the two resultants
+  double seconds_roots = 0;        ///< square-free parts, isolation, refinement and pairing
 };
 
 /// e1 = e2 = 0 over the reals, to `digits` significant digits (≥ 10).

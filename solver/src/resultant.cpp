@@ -1,0 +1,116 @@
+#include "rotlie/solver/resultant.hpp"
+
+#include <cln/integer.h>
+
+#include <stdexcept>
+
+namespace rotlie::solver {
+namespace {
+
+// coefficient[j][i] of v^j u^i, integers after clearing denominators.
+using bivariate_integer = std::vector<std::vector<cln::cl_I>>;
+
+bivariate_integer integer_coefficients(const GiNaC::ex& e, const GiNaC::symbol& v, const GiNaC::symbol& u) {
+  const GiNaC::ex p = e.expand();
+  if (!p.is_polynomial(GiNaC::lst{u, v})) throw std::invalid_argument("resultant: not a polynomial");
+  std::vector<std::vector<cln::cl_RA>> r(static_cast<std::size_t>(std::max(p.degree(v), 0)) + 1);
+  cln::cl_I denominators = 1;
+  for (int j = 0; j <= p.degree(v); ++j) {
+    const GiNaC::ex pj = p.coeff(v, j);
+    auto& row = r[static_cast<std::size_t>(j)];
+    row.assign(static_cast<std::size_t>(std::max(pj.degree(u), 0)) + 1, 0);
+    for (int i = 0; i <= pj.degree(u); ++i) {
+      const GiNaC::ex c = pj.coeff(u, i);
+      if (!GiNaC::is_a<GiNaC::numeric>(c) || !GiNaC::ex_to<GiNaC::numeric>(c).is_rational())
+        throw std::invalid_argument("resultant: coefficients must be rational");
+      row[static_cast<std::size_t>(i)] = cln::the<cln::cl_RA>(GiNaC::ex_to<GiNaC::numeric>(c).to_cl_N());
+      denominators = cln::lcm(denominators, cln::denominator(row[static_cast<std::size_t>(i)]));
+    }
+  }
+  bivariate_integer out(r.size());
+  for (std::size_t j = 0; j < r.size(); ++j)
+    for (const auto& c : r[j]) out[j].push_back(cln::the<cln::cl_I>(c * denominators));
+  return out;
+}
+
+int degree_in_u(const bivariate_integer& p) {
+  int d = 0;
+  for (const auto& row : p) d = std::max(d, static_cast<int>(row.size()) - 1);
+  return d;
+}
+
+std::vector<cln::cl_I> at_u(const bivariate_integer& p, const cln::cl_I& x) {
+  std::vector<cln::cl_I> out;
+  for (const auto& row : p) {
+    cln::cl_I s = 0;
+    for (auto it = row.rbegin(); it != row.rend(); ++it) s = s * x + *it;
+    out.push_back(s);
+  }
+  return out;
+}
+
+// Sylvester matrix of a (degree m) and b (degree n) with formal degrees kept even when the leading
+// coefficients vanish at this point, so the determinant is the specialisation of the resultant.
+std::vector<std::vector<cln::cl_I>> sylvester(const std::vector<cln::cl_I>& a, const std::vector<cln::cl_I>& b) {
+  const std::size_t m = a.size() - 1, n = b.size() - 1, size = m + n;
+  std::vector<std::vector<cln::cl_I>> s(size, std::vector<cln::cl_I>(size, 0));
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t k = 0; k <= m; ++k) s[r][r + k] = a[m - k];
+  for (std::size_t r = 0; r < m; ++r)
+    for (std::size_t k = 0; k <= n; ++k) s[n + r][r + k] = b[n - k];
+  return s;
+}
+
+}  // namespace
+
+cln::cl_I bareiss_determinant(std::vector<std::vector<cln::cl_I>> m) {
+  const std::size_t n = m.size();
+  if (n == 0) return 1;
+  cln::cl_I previous = 1;
+  int sign = 1;
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    if (cln::zerop(m[k][k])) {
+      std::size_t r = k + 1;
+      while (r < n && cln::zerop(m[r][k])) ++r;
+      if (r == n) return 0;
+      std::swap(m[k], m[r]);
+      sign = -sign;
+    }
+    for (std::size_t i = k + 1; i < n; ++i) {
+      for (std::size_t j = k + 1; j < n; ++j) m[i][j] = cln::exquo(m[i][j] * m[k][k] - m[i][k] * m[k][j], previous);
+    }
+    previous = m[k][k];
+  }
+  return sign > 0 ? m[n - 1][n - 1] : -m[n - 1][n - 1];
+}
+
+rational_polynomial resultant_in(const GiNaC::ex& p, const GiNaC::ex& q, const GiNaC::symbol& eliminated,
+                                 const GiNaC::symbol& kept) {
+  const auto a = integer_coefficients(p, eliminated, kept), b = integer_coefficients(q, eliminated, kept);
+  const std::size_t m = a.size() - 1, n = b.size() - 1;
+  if (m == 0 && n == 0) return rational_polynomial({1});
+  // Each of the n rows of a has entries of degree ≤ deg_u a, each of the m rows of b ≤ deg_u b.
+  const int bound = static_cast<int>(n) * degree_in_u(a) + static_cast<int>(m) * degree_in_u(b);
+  std::vector<cln::cl_RA> xs, divided;  // Newton's divided differences, built incrementally
+  for (int k = 0; k <= bound; ++k) {
+    const cln::cl_I x = (k % 2 == 0) ? cln::cl_I(k / 2) : cln::cl_I(-(k + 1) / 2);  // 0, −1, 1, −2, 2, …
+    cln::cl_RA y = bareiss_determinant(sylvester(at_u(a, x), at_u(b, x)));
+    for (std::size_t i = 0; i < xs.size(); ++i) y = (y - divided[i]) / (x - xs[i]);
+    xs.push_back(x);
+    divided.push_back(y);
+  }
+  // Newton form → monomial coefficients: Horner over (u − x_k).
+  std::vector<cln::cl_RA> c{divided.back()};
+  for (std::size_t k = divided.size() - 1; k-- > 0;) {
+    std::vector<cln::cl_RA> next(c.size() + 1, 0);
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      next[i + 1] = next[i + 1] + c[i];
+      next[i] = next[i] - xs[k] * c[i];
+    }
+    next[0] = next[0] + divided[k];
+    c = std::move(next);
+  }
+  return rational_polynomial(std::move(c));
+}
+
+}  // namespace rotlie::solver
