@@ -45,3 +45,25 @@ struct solve_options {
 int run_solve(const solve_options& options);
 
 }  // namespace rotlie::app
+
+namespace rotlie::app {
+
+struct integrate_options {
+  std::string scheme, inertia, h, T = "1", G0 = "1,1,1";
+  bool json = false;
+};
+int run_integrate(const integrate_options& options);
+
+struct order_options {
+  std::string scheme, inertia, T = "1", G0 = "1,1,1", scalar = "double", min_level = "1", max_level = "10";
+  bool json = false;
+};
+int run_order(const order_options& options);
+
+struct exact_options {
+  std::string inertia, T, G0 = "1,1,1";
+  bool json = false;
+};
+int run_exact(const exact_options& options);
+
+}  // namespace rotlie::app

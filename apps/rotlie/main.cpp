@@ -45,13 +45,40 @@ int main(int argc, char** argv) {
 
   solve_options solve;
   auto* solve_cmd = app.add_subcommand("solve", "All real solutions of a dedicated family for one body, ranked");
-  solve_cmd->add_option("--family", solve.family, "N (R and P: not yet)")->required();
+  solve_cmd->add_option("--family", solve.family, "N, R or P")->required();
   solve_cmd->add_option("--scheme", solve.scheme, "One scheme of the family, e.g. N2 (default: all)");
   solve_cmd->add_option("--perm", solve.perm, "ABC, BCA, CAB, ACB, CBA, BAC or all (default all)");
   solve_cmd->add_option("--inertia", solve.inertia, "I1,I2,I3 as exact numbers, or water, sphere");
   solve_cmd->add_option("--digits", solve.digits, "Significant digits of the coefficients (default 40)");
   solve_cmd->add_option("--out", solve.out, "Write one scheme table per solution into this folder");
   solve_cmd->add_flag("--json", solve.json, "Machine-readable output on stdout");
+
+  integrate_options integrate;
+  auto* integrate_cmd = app.add_subcommand("integrate", "Mean attitude error and CPU time of one run against the exact solution");
+  integrate_cmd->add_option("--scheme", integrate.scheme, "Reference name (RS4-S5-McLachlan:CBA), SCHEME:PERM:LABEL (N2:BAC:2) or a scheme-table file")->required();
+  integrate_cmd->add_option("--inertia", integrate.inertia, "I1,I2,I3 as exact numbers, or water, sphere")->required();
+  integrate_cmd->add_option("--h", integrate.h, "Step, e.g. 1/64 or 0.01")->required();
+  integrate_cmd->add_option("--T", integrate.T, "Total time (default 1), a whole number of steps");
+  integrate_cmd->add_option("--G0", integrate.G0, "Initial body angular momentum g1,g2,g3 (default 1,1,1)");
+  integrate_cmd->add_flag("--json", integrate.json, "Machine-readable output on stdout");
+
+  order_options order;
+  auto* order_cmd = app.add_subcommand("order", "Numeric order: errors at h = T/2^i and the fitted slope");
+  order_cmd->add_option("--scheme", order.scheme, "Reference name, SCHEME:PERM:LABEL or a scheme-table file")->required();
+  order_cmd->add_option("--inertia", order.inertia, "I1,I2,I3 as exact numbers, or water, sphere")->required();
+  order_cmd->add_option("--scalar", order.scalar, "double, long-double or float128 (default double)");
+  order_cmd->add_option("--min-level", order.min_level, "Coarsest step T/2^i (default i = 1)");
+  order_cmd->add_option("--max-level", order.max_level, "Finest step T/2^i (default i = 10)");
+  order_cmd->add_option("--T", order.T, "Total time (default 1)");
+  order_cmd->add_option("--G0", order.G0, "Initial body angular momentum (default 1,1,1)");
+  order_cmd->add_flag("--json", order.json, "Machine-readable output on stdout");
+
+  exact_options exact;
+  auto* exact_cmd = app.add_subcommand("exact", "The exact free-body state (G, attitude Q) at time T");
+  exact_cmd->add_option("--inertia", exact.inertia, "I1,I2,I3 as exact numbers, or water, sphere")->required();
+  exact_cmd->add_option("--T", exact.T, "Time")->required();
+  exact_cmd->add_option("--G0", exact.G0, "Initial body angular momentum (default 1,1,1)");
+  exact_cmd->add_flag("--json", exact.json, "Machine-readable output on stdout");
 
   report_command_options report;
   auto* report_cmd = app.add_subcommand("report", "Regenerate every table and figure into one folder");
@@ -82,6 +109,9 @@ int main(int argc, char** argv) {
     if (*stages_cmd) return run_stages(stages);
     if (*remainder_cmd) return run_remainder(remainder);
     if (*solve_cmd) return run_solve(solve);
+    if (*integrate_cmd) return run_integrate(integrate);
+    if (*order_cmd) return run_order(order);
+    if (*exact_cmd) return run_exact(exact);
     if (*report_cmd) return run_report_command(report);
   } catch (const usage_error& e) {
     return fail(e.what(), 2);
