@@ -47,6 +47,19 @@ int run_solve(const solve_options& options) {
   const int digits = static_cast<int>(parse_integer_in_range(options.digits, "--digits", 10, max_digits));
 
   const auto result = solver::solve_dedicated(body, schemes, perms, digits);
+  // A degenerate system has no isolated solutions at this body: an error when it is all that was
+  // asked for, a warning next to the others.
+  const auto degenerate = std::count_if(result.systems.begin(), result.systems.end(),
+                                        [](const solver::system_report& r) { return r.degenerate; });
+  for (const auto& r : result.systems)
+    if (r.degenerate && degenerate < static_cast<long>(result.systems.size()))
+      std::cerr << "rotlie: warning: " << r.scheme << " " << r.permutation << " is undefined for this body: " << r.note
+                << "\n";
+  if (degenerate == static_cast<long>(result.systems.size()) && !result.systems.empty()) {
+    const auto& r = result.systems.front();
+    throw usage_error(r.scheme + " " + r.permutation + (result.systems.size() > 1 ? " (and every other system asked for)" : "") +
+                      " is undefined for this body: " + r.note);
+  }
 
   if (!options.out.empty()) {
     std::error_code ec;

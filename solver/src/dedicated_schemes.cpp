@@ -13,6 +13,33 @@
 namespace rotlie::solver {
 namespace {
 
+/// Why a system has no isolated solutions, in the body's terms: a symmetric top whose equal
+/// moments remove a part of the splitting, or else a singular elimination at this body.
+std::string degeneracy_reason(const lie::moments_of_inertia& body, bch::splitting split, const std::string& perm,
+                              const std::string& what_vanished) {
+  const auto axis = [&](int k) { return perm[static_cast<std::size_t>(k)] - 'A'; };
+  const auto name = [](int i) { return "I" + std::to_string(i + 1); };
+  const auto equal = [&](int i, int j) { return name(std::min(i, j)) + " = " + name(std::max(i, j)); };
+  if (split == bch::splitting::rs) {
+    // R = G_x²/2 (1/I_x − 1/I_y), S = G_z²/2 (1/I_z − 1/I_y) + G²/(2 I_y) with x, y, z = the permuted axes
+    const int x = axis(0), y = axis(1), z = axis(2);
+    const std::string gx = "G" + std::to_string(x + 1);
+    if (body.I[x] == body.I[y])
+      return "symmetric top (" + equal(x, y) + "): the R part " + gx + "²/2 (1/" + name(x) + " − 1/" +
+             name(y) + ") vanishes, so R and S commute and no choice of coefficients changes H_R3 (" + what_vanished + ")";
+    if (body.I[z] == body.I[y])
+      return "symmetric top (" + equal(z, y) + "): S reduces to the rotation about G, which commutes with R (" +
+             what_vanished + ")";
+  }
+  const std::string symmetry = lie::symmetry_of(body);
+  if (!symmetry.empty()) return "symmetric top (" + symmetry + "): " + what_vanished;
+  return "the elimination is singular at this body (" + what_vanished +
+         "), one of the isolated points of the paper's Fig. 9";
+}
+
+}  // namespace
+namespace {
+
 using clock_type = std::chrono::steady_clock;
 double since(clock_type::time_point t) { return std::chrono::duration<double>(clock_type::now() - t).count(); }
 
@@ -96,9 +123,7 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
         for (const auto& p : crit.points) points.push_back({p.values[0], p.values[1], p.values[2]});
       }
       report.real_solutions = static_cast<int>(points.size());
-      if (report.degenerate && !lie::symmetry_of(body).empty())
-        report.note = "symmetric top (" + lie::symmetry_of(body) + "): " + report.note +
-                      (named->split == bch::splitting::rs ? "; with I1 = I2 the R part G1²/2 (1/I1 − 1/I2) vanishes" : "");
+      if (report.degenerate) report.note = degeneracy_reason(body, named->split, perm, report.note);
       t = clock_type::now();
       int label = 0;
       for (const auto& point : points) {

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <fstream>
@@ -252,6 +253,82 @@ BOOST_AUTO_TEST_CASE(solve_bad_input) {
   expect_clean_error("solve --family N --digits 99999 --inertia water", "at most");
   expect_clean_error("solve --family P --scheme N2 --inertia water", "not in the P family (P1 … P15)");
   expect_clean_error("solve --family R --scheme P1 --inertia water", "not in the R family (R)");
+}
+
+BOOST_AUTO_TEST_CASE(solve_symmetric_top_where_the_scheme_degenerates) {
+  // With I1 = I2 the R part of RS splitting ABC vanishes: nothing to solve for.
+  expect_clean_error("solve --family R --perm ABC --inertia 1/2,1/2,1", "R part G1²/2 (1/I1 − 1/I2) vanishes");
+  expect_clean_error("solve --family R --inertia sphere", "undefined for this body");
+  // Over all permutations the undefined ones are warned about and the others solved.
+  const auto r = run("solve --family R --inertia 1/2,1/2,1 --json");
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
+  BOOST_TEST(r.err.find("warning: R ABC is undefined") != std::string::npos);
+  BOOST_TEST(nlohmann::json::parse(r.out).at("real_solutions").get<int>() > 0);
+}
+
+BOOST_AUTO_TEST_CASE(integrate_json_shape_and_value) {
+  const auto r = run("integrate --scheme N2:BAC:2 --inertia water --h 1/64 --json");
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
+  const auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j.at("scheme").get<std::string>() == "N2:BAC:2");
+  BOOST_REQUIRE(j.at("points").size() == 1u);
+  const auto& p = j.at("points")[0];
+  BOOST_TEST(p.at("h").get<double>() == 1.0 / 64);
+  BOOST_TEST(p.at("h_over_C").get<double>() == 1.0 / 64 / 9, boost::test_tools::tolerance(1e-15));  // 9 stages, 9 C0
+  BOOST_TEST(p.at("cpu_s").get<double>() > 0);
+  // 4th order: the error at h = 1/64 is far below that of leapfrog at the same step.
+  const auto leap = nlohmann::json::parse(run("integrate --scheme ABCBA2:BAC --inertia water --h 1/64 --json").out);
+  BOOST_TEST(p.at("error").get<double>() > 0);
+  BOOST_TEST(p.at("error").get<double>() * 1e3 < leap.at("points")[0].at("error").get<double>());
+}
+
+BOOST_AUTO_TEST_CASE(order_json_gives_the_declared_slope) {
+  const auto r = run("order --scheme ABCBA2 --inertia water --min-level 3 --max-level 9 --json");
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
+  const auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j.at("points").size() == 7u);
+  BOOST_TEST(std::abs(j.at("slope").get<double>() - 2) < 0.1);
+}
+
+BOOST_AUTO_TEST_CASE(exact_json_conserves_the_invariants) {
+  const auto r = run("exact --inertia water --T 7/3 --G0 1,1,1 --json");
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
+  const auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j.at("T").get<double>() == 7.0 / 3, boost::test_tools::tolerance(1e-15));
+  const std::array<double, 3> I{10220.0 / 29376, 19187.0 / 29376, 1};
+  double g2 = 0, energy = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double g = j.at("G")[i].get<double>();
+    g2 += g * g;
+    energy += g * g / (2 * I[i]);
+  }
+  BOOST_TEST(g2 == 3.0, boost::test_tools::tolerance(1e-13));
+  BOOST_TEST(energy == (1 / I[0] + 1 / I[1] + 1 / I[2]) / 2, boost::test_tools::tolerance(1e-13));
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      double dot = 0;
+      for (int k = 0; k < 3; ++k) dot += j.at("Q")[a][k].get<double>() * j.at("Q")[b][k].get<double>();
+      BOOST_TEST(std::abs(dot - (a == b ? 1 : 0)) < 1e-14);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(numeric_commands_bad_input) {
+  expect_clean_error("integrate --scheme ABCBA2 --inertia water --h 0", "--h must be positive");
+  expect_clean_error("integrate --scheme ABCBA2 --inertia water --h -1/64", "--h must be positive");
+  expect_clean_error("integrate --scheme ABCBA2 --inertia water --h 1/64 --T 0", "--T must be positive");
+  expect_clean_error("integrate --scheme ABCBA2 --inertia water --h 1e-9 --T 1000", "over the limit");
+  expect_clean_error("integrate --scheme ABCBA2 --inertia nan,1,1 --h 1/64", "not a finite number");
+  expect_clean_error("integrate --scheme ABCBA2 --inertia water --h nan", "--h");
+  expect_clean_error("integrate --scheme FOO --inertia water --h 1/64", "unknown scheme");
+  expect_clean_error("integrate --scheme N2:XYZ:2 --inertia water --h 1/64", "unknown permutation");
+  expect_clean_error("integrate --scheme N2:BAC:9 --inertia water --h 1/64", "no label 9");
+  expect_clean_error("exact --inertia water --T -1", "--T must be positive");
+  expect_clean_error("order --scheme ABCBA2 --inertia water --min-level 5 --max-level 2", "level");
+  // A table whose A coefficients do not sum to 1.
+  const fs::path table = scratch_dir() / "bad.scheme";
+  std::ofstream(table) << "format_version 1\nname broken\nsplit ABC\nword ABA\norder 2\nsymmetric true\nstages 3\n"
+                          "stage A a1 0.4\nstage B b1 1\nstage A a1 0.4\n";
+  expect_clean_error("integrate --scheme " + table.string() + " --inertia water --h 1/64", "sum to 0.800000, not 1");
 }
 
 BOOST_AUTO_TEST_CASE(report_writes_a_complete_folder) {
