@@ -16,6 +16,7 @@ std::vector<std::filesystem::path> run_report(const report_options& options) {
   sections.push_back(lie_algebra_section(options));
   sections.push_back(remainder_section(options));
   sections.push_back(dedicated_section(options));
+  sections.push_back(accuracy_section(options));
 
   std::ostringstream index;
   index << "# rotlie report\n\n"
