@@ -43,7 +43,9 @@ std::string gnuplot_script(const chart& c, const std::filesystem::path& png) {
   bool first = true;
   for (std::size_t k = 0; k < c.series.size(); ++k) {
     g << (first ? "" : ", \\\n     ") << "$s" << k << " using 1:2 with "
-      << (c.series[k].points_only ? "points pt 7" : "linespoints pt 7 ps 0.6") << " title " << quoted(c.series[k].name);
+      << (c.series[k].points_only ? "points pt " + std::to_string(7 + 2 * k) : "linespoints pt 7 ps 0.6")
+      // gnuplot's palette has 8 colours: the next eight series are dashed, then dotted
+      << " dt " << 1 + k / 8 << " lw " << (k >= 8 ? 1.5 : 1.0) << " title " << quoted(c.series[k].name);
     first = false;
   }
   if (c.horizontal_line)

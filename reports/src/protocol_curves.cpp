@@ -31,9 +31,9 @@ models::body_state<long double> paper_initial_state() {
 
 }  // namespace
 
-protocol_runner::protocol_runner(const lie::moments_of_inertia& body, int min_level, int max_level)
+protocol_runner::protocol_runner(const lie::moments_of_inertia& body, int min_level, int max_level, bool time_steps)
     : I_(moments(body)), initial_(paper_initial_state()), exact_(I_, initial_, 1.0L, max_level),
-      min_level_(min_level), max_level_(max_level) {
+      min_level_(min_level), max_level_(max_level), time_steps_(time_steps) {
   if (min_level < 0 || max_level - min_level + 1 < fit_points)
     throw std::invalid_argument("the protocol needs at least three step levels");
 }
@@ -51,8 +51,8 @@ scheme_curve protocol_runner::run(const schemes::scheme_table& table) const {
   // The fastest of several short timings: interference from the rest of the machine only ever
   // slows a run down, and errors at equal CPU time go as the 4th power of this number.
   const double h_timing = 1.0 / 64;
-  c.seconds_per_step = std::numeric_limits<double>::infinity();
-  for (int repeat = 0; repeat < 7; ++repeat)
+  c.seconds_per_step = time_steps_ ? std::numeric_limits<double>::infinity() : 0;
+  for (int repeat = 0; time_steps_ && repeat < 7; ++repeat)
     c.seconds_per_step =
         std::min(c.seconds_per_step, models::cpu_seconds_per_unit_time(fast, s0, h_timing, 0.005) * h_timing);
   std::vector<double> hs, es;

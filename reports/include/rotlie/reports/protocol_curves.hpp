@@ -31,7 +31,8 @@ struct scheme_curve {
 
 class protocol_runner {
  public:
-  protocol_runner(const lie::moments_of_inertia& body, int min_level, int max_level);
+  /// With time_steps false the CPU columns stay 0 (for choosing a permutation quickly).
+  protocol_runner(const lie::moments_of_inertia& body, int min_level, int max_level, bool time_steps = true);
   scheme_curve run(const schemes::scheme_table& table) const;
   /// The permutation of a reference scheme (base name such as RSR4-SS3-Yoshida) with the smallest constant.
   scheme_curve best_permutation(const std::string& base_name) const;
@@ -41,6 +42,7 @@ class protocol_runner {
   models::body_state<long double> initial_;
   models::exact_samples<long double> exact_;
   int min_level_, max_level_;
+  bool time_steps_;
 };
 
 /// How many times more accurate `better` is than `worse` at equal reduced step h/C.

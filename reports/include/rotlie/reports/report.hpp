@@ -37,4 +37,7 @@ report_section dedicated_section(const report_options& options);
 /// Section "Accuracy against cost": LV section 4 (Figs. 1-5, Table 3's numeric column, the claims).
 report_section accuracy_section(const report_options& options);
 
+/// Section "Stability": the step beyond which each scheme stops working, for three bodies.
+report_section stability_section(const report_options& options);
+
 }  // namespace rotlie::reports
