@@ -18,6 +18,7 @@ std::vector<std::filesystem::path> run_report(const report_options& options) {
   sections.push_back(dedicated_section(options));
   sections.push_back(accuracy_section(options));
   sections.push_back(stability_section(options));
+  sections.push_back(exact_flow_section(options));
 
   std::ostringstream index;
   index << "# rotlie report\n\n"

@@ -86,6 +86,9 @@ class exact_free_body {
     A0w_ = W_ * transpose(initial.Q);  // van Zon's A = Qᵀ, in the working frame
   }
 
+  /// The elliptic parameter m of the momentum's motion (0 for a steady rotation, 1 on the separatrix).
+  T parameter() const { return kind_ == motion::steady ? T(0) : m_; }
+
   /// The state at time t (any sign).
   body_state<T> at(const T& t) const {
     if (kind_ == motion::steady) {

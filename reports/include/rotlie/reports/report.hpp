@@ -40,4 +40,7 @@ report_section accuracy_section(const report_options& options);
 /// Section "Stability": the step beyond which each scheme stops working, for three bodies.
 report_section stability_section(const report_options& options);
 
+/// Section "Exact free-body flow near the unstable axis": conditioning of the double exact flow.
+report_section exact_flow_section(const report_options& options);
+
 }  // namespace rotlie::reports
