@@ -33,8 +33,13 @@ std::string degeneracy_reason(const lie::moments_of_inertia& body, bch::splittin
   }
   const std::string symmetry = lie::symmetry_of(body);
   if (!symmetry.empty()) return "symmetric top (" + symmetry + "): " + what_vanished;
-  return "the elimination is singular at this body (" + what_vanished +
-         "), one of the isolated points of the paper's Fig. 9";
+  std::string flat;
+  for (int k = 0; k < 3; ++k)  // eq. (77) with equality: a planar body
+    if (body.I[static_cast<std::size_t>(k)] ==
+        body.I[static_cast<std::size_t>((k + 1) % 3)] + body.I[static_cast<std::size_t>((k + 2) % 3)])
+      flat = " on this flat body (" + name(k) + " = " + name((k + 1) % 3) + " + " + name((k + 2) % 3) + ")";
+  return "the elimination is singular" + (flat.empty() ? std::string(" at this body") : flat) + ": " + what_vanished +
+         " (the automatic resolution fails here, like at the isolated points of the paper's Fig. 9)";
 }
 
 }  // namespace
