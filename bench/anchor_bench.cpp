@@ -17,9 +17,8 @@
 #include "euler_odeint.hpp"
 #include "rotlie/models/composition_stepper.hpp"
 #include "rotlie/models/exact_free_body.hpp"
+#include "rotlie/reports/protocol_curves.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
-#include "rotlie/solver/dedicated_schemes.hpp"
-#include "rotlie/solver/scheme_table.hpp"
 
 namespace {
 
@@ -110,10 +109,8 @@ double seconds_per_run(const method& m, long n, double T) {
 
 schemes::scheme_table dedicated(const std::string& scheme, const std::string& perm, int label) {
   const auto body = lie::parse_moments("water");
-  const auto r = solver::solve_dedicated(body, {scheme}, {perm}, 40);
-  for (const auto& s : r.solutions)
-    if (s.label == label) return schemes::parse_scheme_table(solver::scheme_table_text(s, body, 40));
-  throw std::runtime_error("no " + scheme + " " + perm + " solution " + std::to_string(label));
+  return reports::table_of(reports::find_solution(solver::solve_dedicated(body, {scheme}, {perm}, 40), scheme, perm, label),
+                           body);
 }
 
 }  // namespace

@@ -17,8 +17,6 @@ namespace {
 
 const std::vector<std::string> n_family = {"N1", "N2", "N3", "N4", "N5", "N6", "N7"};
 
-std::string display_name(const solver::dedicated_solution& s) { return s.name(); }
-
 enum class axis { reduced_step, cpu };
 
 chart accuracy_chart(const std::string& title, const std::vector<scheme_curve>& curves, axis x) {
@@ -45,11 +43,7 @@ struct figure_writer {
   void operator()(const std::string& file, const chart& c, const std::string& caption) {
     const auto f = write_chart(options.out_dir, file, c);
     section.files.insert(section.files.end(), f.written.begin(), f.written.end());
-    if (f.png)
-      md << "![" << caption << "](" << file << ".png)\n\n";
-    else
-      md << "*" << f.note << "*\n\n";
-    md << caption << " Data: [" << file << ".csv](" << file << ".csv).\n\n";
+    md << chart_markdown(f, file, caption);
   }
   void pair(const std::string& file, const std::string& title, const std::vector<scheme_curve>& curves,
             const std::string& caption) {
@@ -82,6 +76,12 @@ void curve_table(std::ostringstream& md, const std::vector<scheme_curve>& curves
   }
   md << "\nColumns × " << anchor.name << ": the scheme's error divided by that of " << anchor.name
      << " at equal h/C (or equal CPU time); below 1 is more accurate.\n\n";
+}
+
+const scheme_curve* named(const std::vector<scheme_curve>& curves, const std::string& name) {
+  for (const auto& k : curves)
+    if (k.name == name) return &k;
+  return nullptr;
 }
 
 struct claim {
@@ -119,16 +119,15 @@ report_section accuracy_section(const report_options& options) {
   std::sort(by_label.begin(), by_label.end(), [](auto* a, auto* b) { return a->name() < b->name(); });
   for (const auto* x : by_label) {
     auto c = sphere_runner.run(table_of(*x, sphere));
-    c.name = display_name(*x);
+    c.name = x->name();
     sphere_curves.push_back(std::move(c));
   }
   const std::size_t n_count = sphere_curves.size();
   sphere_curves.push_back(sphere_runner.run(*schemes::reference_scheme("ABCBA2")));
   sphere_curves.push_back(sphere_runner.run(*schemes::reference_scheme("ABCBA4-SS3-Yoshida")));
-  const scheme_curve* n5_2 = nullptr;
-  for (const auto& c : sphere_curves)
-    if (c.name == "N5 ABC (2)") n5_2 = &c;
-  if (!n5_2) throw std::runtime_error("the solver did not return N5 (2) for the spherical top");
+  const scheme_curve* n5_2 = named(sphere_curves, "N5 ABC (2)");
+  const scheme_curve* yoshida_sphere = named(sphere_curves, "ABCBA4-SS3-Yoshida");
+  if (!n5_2 || !yoshida_sphere) throw std::runtime_error("the spherical top lacks N5 (2) or Yoshida");
 
   md << "### Spherical top\n\n";
   figure.pair("fig1_sphere", "Fig. 1: spherical top, the N integrators of Table 2, leapfrog and Yoshida", sphere_curves,
@@ -152,9 +151,7 @@ report_section accuracy_section(const report_options& options) {
      << "| integrator | numeric (ours) | numeric (LV) | deviation | analytic (ours) | analytic (LV) |\n"
      << "|:--|--:|--:|--:|--:|--:|\n";
   for (const auto& [name, lv] : table3) {
-    const scheme_curve* c = nullptr;
-    for (const auto& k : sphere_curves)
-      if (k.name == name) c = &k;
+    const scheme_curve* c = named(sphere_curves, name);
     const solver::dedicated_solution* sol = nullptr;
     for (const auto* x : by_label)
       if (x->name() == name) sol = x;
@@ -194,7 +191,7 @@ report_section accuracy_section(const report_options& options) {
     c.name = x.name();
     fig3.push_back(std::move(c));
   }
-  const scheme_curve n2 = fig3[5];
+  const scheme_curve n2 = *named(fig3, "N2 BAC (2)");
   std::vector<scheme_curve> references;
   for (const auto& base : schemes::reference_scheme_names()) references.push_back(water_runner.best_permutation(base));
   const auto reference = [&](const std::string& base) -> const scheme_curve& {
@@ -221,22 +218,19 @@ report_section accuracy_section(const report_options& options) {
               "Fig. 5 (water).");
 
   md << "Every water curve, against N2 BAC (2) (reference schemes at the permutation with the smallest error):\n\n";
-  std::vector<scheme_curve> all = fig3;
-  for (const auto& r : references)
-    if (r.name.rfind("ABCBA2:", 0) != 0 && r.name.rfind("RSR2:", 0) != 0 && r.name.rfind("ABCBA4-SS3-Yoshida:", 0) != 0 &&
-        r.name.rfind("RSR4-SS3-Yoshida:", 0) != 0)
-      all.push_back(r);
-  all.push_back(p1_bac5), all.push_back(r_abc4);
-  if (rs4_s5_cba.name != reference("RS4-S5-McLachlan").name) all.push_back(rs4_s5_cba);
+  std::vector<scheme_curve> all;
+  const std::vector<const std::vector<scheme_curve>*> sets = {&fig3, &references, &fig5};
+  for (const auto* set : sets)
+    for (const auto& k : *set)
+      if (!named(all, k.name)) all.push_back(k);
   std::sort(all.begin(), all.end(), [](const scheme_curve& a, const scheme_curve& b) {
     return a.order != b.order ? a.order > b.order : a.constant < b.constant;
   });
   curve_table(md, all, n2);
 
   // The paper's claims next to ours.
-  const scheme_curve& yoshida_sphere = sphere_curves.back();
   const std::vector<claim> claims = {
-      {"spherical top: N5 (2) more accurate than ABCBA4 Yoshida", 700, &yoshida_sphere, n5_2},
+      {"spherical top: N5 (2) more accurate than ABCBA4 Yoshida", 700, yoshida_sphere, n5_2},
       {"water: N2 BAC (2) more accurate than ABCBA4 Yoshida (best permutation)", 170, &reference("ABCBA4-SS3-Yoshida"), &n2},
       {"water: N2 BAC (2) more accurate than RSR4 Yoshida (best permutation)", 1.6, &reference("RSR4-SS3-Yoshida"), &n2},
       {"water: RS4 S5 McLachlan CBA more accurate than N2 BAC (2)", 4.7, &n2, &rs4_s5_cba},

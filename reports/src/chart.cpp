@@ -104,4 +104,9 @@ chart_files write_chart(const std::filesystem::path& dir, const std::string& nam
   return out;
 }
 
+std::string chart_markdown(const chart_files& files, const std::string& name, const std::string& caption) {
+  const std::string image = files.png ? "![" + caption + "](" + name + ".png)" : "*" + files.note + "*";
+  return image + "\n\n" + caption + " Data: [" + name + ".csv](" + name + ".csv).\n\n";
+}
+
 }  // namespace rotlie::reports

@@ -106,8 +106,7 @@ report_section exact_flow_section(const report_options& options) {
   c.series = {one, two, momentum};
   const auto f = write_chart(options.out_dir, "exact_flow_conditioning", c);
   s.files = f.written;
-  md << "\n" << (f.png ? "![exact flow conditioning](exact_flow_conditioning.png)" : "*" + f.note + "*")
-     << "\n\nData: [exact_flow_conditioning.csv](exact_flow_conditioning.csv).\n\n";
+  md << "\n" << chart_markdown(f, "exact_flow_conditioning", "Exact-flow conditioning near the middle axis.");
   s.markdown = md.str();
   return s;
 }

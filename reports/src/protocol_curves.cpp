@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "rotlie/bch/scheme_word.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
@@ -78,7 +79,7 @@ scheme_curve protocol_runner::run(const schemes::scheme_table& table) const {
 scheme_curve protocol_runner::best_permutation(const std::string& base_name) const {
   scheme_curve best;
   best.constant = std::numeric_limits<double>::infinity();
-  for (const std::string perm : {"ABC", "BCA", "CAB", "ACB", "CBA", "BAC"}) {
+  for (const auto& perm : bch::permutation_names()) {
     const auto table = schemes::reference_scheme(base_name + ":" + perm);
     if (!table) throw std::invalid_argument("unknown reference scheme " + base_name);
     auto c = run(*table);

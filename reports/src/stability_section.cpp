@@ -97,9 +97,7 @@ report_section stability_section(const report_options& options) {
     md << "\n";
     const auto f = write_chart(options.out_dir, "stability_" + b.key, c);
     s.files.insert(s.files.end(), f.written.begin(), f.written.end());
-    if (f.png) md << "![stability, " << b.title << "](stability_" << b.key << ".png)\n\n";
-    else md << "*" << f.note << "*\n\n";
-    md << "Data: [stability_" << b.key << ".csv](stability_" << b.key << ".csv).\n\n";
+    md << chart_markdown(f, "stability_" + b.key, "Stability, " + b.title + ".");
   }
   s.markdown = md.str();
   return s;

@@ -34,4 +34,8 @@ struct chart_files {
 /// Throws std::runtime_error when a file cannot be written.
 chart_files write_chart(const std::filesystem::path& dir, const std::string& name, const chart& c);
 
+/// The report's markdown for a chart written as `name`: the image (or why there is none), the
+/// caption and a link to the CSV.
+std::string chart_markdown(const chart_files& files, const std::string& name, const std::string& caption);
+
 }  // namespace rotlie::reports
