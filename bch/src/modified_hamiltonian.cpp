@@ -1,6 +1,9 @@
 #include "rotlie/bch/modified_hamiltonian.hpp"
 
+#include <map>
+#include <mutex>
 #include <stdexcept>
+#include <type_traits>
 
 #include "rotlie/bch/evaluate.hpp"
 #include "rotlie/bch/lie_series.hpp"
@@ -12,23 +15,33 @@ namespace {
 
 // The Lie–Poisson algebra truncated at a maximal order: terms of order > max_order
 // (polynomial degree > max_order + 1) are dropped as soon as they appear.
+template <class R>
 struct truncated_poisson_algebra {
   int max_order;
-  symbolic_polynomial bracket(const symbolic_polynomial& a, const symbolic_polynomial& b) const {
-    symbolic_polynomial out;
+  lie::polynomial<R> bracket(const lie::polynomial<R>& a, const lie::polynomial<R>& b) const {
+    lie::polynomial<R> out;
     const auto max_degree = static_cast<std::uint32_t>(max_order + 1);
     for (const auto& [ma, ca] : a.terms())
       for (const auto& [mb, cb] : b.terms()) {
         if (ma.degree() + mb.degree() - 1 > max_degree) continue;  // {deg p, deg q} has degree p + q − 1
-        lie::bracket_of_monomials(ma, mb, [&](const lie::monomial& m, long c) { out.add_term(m, c * ca * cb); });
+        const R product = ca * cb;
+        lie::bracket_of_monomials(ma, mb, [&](const lie::monomial& m, long c) { out.add_term(m, R(c) * product); });
       }
     return out;
   }
-  void add_scaled(symbolic_polynomial& acc, const cln::cl_RA& c, const symbolic_polynomial& x) const {
-    const GiNaC::ex factor = GiNaC::numeric(cln::cl_N(c));
+  void add_scaled(lie::polynomial<R>& acc, const cln::cl_RA& c, const lie::polynomial<R>& x) const {
+    const R factor = scalar(c);
     for (const auto& [m, v] : x.terms()) acc.add_term(m, factor * v);
   }
-  symbolic_polynomial zero() const { return {}; }
+  static R scalar(const cln::cl_RA& c) {
+    if constexpr (std::is_same_v<R, GiNaC::ex>)
+      return GiNaC::numeric(cln::cl_N(c));
+    else if constexpr (std::is_same_v<R, double>)
+      return cln::double_approx(c);
+    else
+      return R(c);
+  }
+  lie::polynomial<R> zero() const { return {}; }
 };
 
 bool is_palindrome(const std::vector<stage_element>& s) {
@@ -77,30 +90,129 @@ symbolic_polynomial part_hamiltonian(char letter, splitting split, const std::st
   throw std::invalid_argument("not an RS part");
 }
 
-modified_hamiltonian compute_modified_hamiltonian(const std::vector<stage_element>& stages, int max_order) {
+lie::polynomial<cln::cl_RA> rational_part_hamiltonian(char letter, splitting split, const std::string& permutation,
+                                                     const std::array<cln::cl_RA, 3>& w) {
+  const inverse_inertia symbolic{GiNaC::numeric(cln::cl_N(w[0])), GiNaC::numeric(cln::cl_N(w[1])),
+                                 GiNaC::numeric(cln::cl_N(w[2]))};
+  lie::polynomial<cln::cl_RA> out;
+  const symbolic_polynomial part = part_hamiltonian(letter, split, permutation, symbolic);
+  for (const auto& [m, c] : part.terms())
+    out.add_term(m, cln::the<cln::cl_RA>(GiNaC::ex_to<GiNaC::numeric>(c).to_cl_N()));
+  return out;
+}
+
+namespace {
+
+void check_order(int max_order) {
   if (max_order < 1 || max_order > max_remainder_order)
     throw std::invalid_argument("the order must be between 1 and " + std::to_string(max_remainder_order));
-  if (stages.empty()) throw std::invalid_argument("a scheme needs at least one stage");
-  const truncated_poisson_algebra algebra{max_order};
-  symbolic_polynomial z;
-  if (is_palindrome(stages)) {
-    // log(e^x e^Z e^x) from the middle stage outwards.
-    const auto series = symmetric_bch_series(max_order);
-    const std::size_t n = stages.size();
-    z = scaled(stages[n / 2]);
-    for (std::size_t i = n / 2; i-- > 0;)
-      z = evaluate(series, std::vector<symbolic_polynomial>{scaled(stages[i]), z}, algebra, max_order);
+}
+
+// The series depend only on the order: computed once per order for the whole program.
+const lie_series& cached_series(int max_order, bool symmetric) {
+  static std::mutex guard;
+  static std::map<std::pair<int, bool>, lie_series> cache;
+  const std::lock_guard<std::mutex> lock(guard);
+  auto it = cache.find({max_order, symmetric});
+  if (it == cache.end())
+    it = cache.emplace(std::make_pair(max_order, symmetric),
+                       symmetric ? symmetric_bch_series(max_order) : bch_series(max_order)).first;
+  return it->second;
+}
+
+// x_i = c_i X_i for each stage; palindromes by nested symmetric BCH from the middle outwards
+// (log(e^x e^Z e^x)), others by nested BCH from the left.
+template <class R>
+std::vector<lie::polynomial<R>> nested_bch(const std::vector<lie::polynomial<R>>& x, bool palindrome, int max_order) {
+  const truncated_poisson_algebra<R> algebra{max_order};
+  lie::polynomial<R> z;
+  if (palindrome) {
+    const auto& series = cached_series(max_order, true);
+    const std::size_t n = x.size();
+    z = x[n / 2];
+    for (std::size_t i = n / 2; i-- > 0;) z = evaluate(series, std::vector<lie::polynomial<R>>{x[i], z}, algebra, max_order);
   } else {
-    const auto series = bch_series(max_order);
-    z = scaled(stages.front());
-    for (std::size_t i = 1; i < stages.size(); ++i)
-      z = evaluate(series, std::vector<symbolic_polynomial>{z, scaled(stages[i])}, algebra, max_order);
+    const auto& series = cached_series(max_order, false);
+    z = x.front();
+    for (std::size_t i = 1; i < x.size(); ++i) z = evaluate(series, std::vector<lie::polynomial<R>>{z, x[i]}, algebra, max_order);
   }
+  std::vector<lie::polynomial<R>> by_order(static_cast<std::size_t>(max_order) + 1);
+  for (const auto& [m, c] : z.terms()) by_order[m.degree() - 1].add_term(m, c);
+  return by_order;
+}
+
+}  // namespace
+
+modified_hamiltonian compute_modified_hamiltonian(const std::vector<stage_element>& stages, int max_order) {
+  check_order(max_order);
+  if (stages.empty()) throw std::invalid_argument("a scheme needs at least one stage");
+  std::vector<symbolic_polynomial> x;
+  for (const auto& s : stages) x.push_back(scaled(s));
   modified_hamiltonian k;
   k.max_order = max_order;
-  k.remainder.resize(static_cast<std::size_t>(max_order) + 1);
-  for (const auto& [m, c] : z.terms()) k.remainder[m.degree() - 1].add_term(m, c);
+  k.remainder = nested_bch(x, is_palindrome(stages), max_order);
   return k;
+}
+
+exact_modified_hamiltonian compute_exact_modified_hamiltonian(const scheme_layout& layout,
+                                                              const std::array<cln::cl_RA, 3>& w, int max_order) {
+  check_order(max_order);
+  if (layout.stages.empty()) throw std::invalid_argument("a scheme needs at least one stage");
+  if (layout.free_coefficients.size() > static_cast<std::size_t>(lie::coefficient_polynomial::max_unknowns))
+    throw std::invalid_argument("too many free coefficients for the exact path");
+  // Free coefficients are the unknowns x_0, x_1, …; each eliminated one solves its first-order condition.
+  std::map<std::string, lie::coefficient_polynomial> value;
+  for (std::size_t k = 0; k < layout.free_coefficients.size(); ++k)
+    value.emplace(layout.free_coefficients[k], lie::coefficient_polynomial::unknown(static_cast<int>(k)));
+  for (const auto& last : layout.eliminated) {
+    lie::coefficient_polynomial others;
+    int multiplicity = 0;
+    for (const auto& s : layout.stages) {
+      if (s.coefficient[0] != last[0]) continue;
+      if (s.coefficient == last)
+        ++multiplicity;
+      else
+        others += value.at(s.coefficient);
+    }
+    value.emplace(last, (lie::coefficient_polynomial(1) - others) * lie::coefficient_polynomial(cln::recip(cln::cl_RA(multiplicity))));
+  }
+  std::vector<exact_polynomial> x;
+  for (const auto& s : layout.stages) {
+    exact_polynomial stage;
+    const auto part = rational_part_hamiltonian(s.letter, layout.split, layout.permutation, w);
+    for (const auto& [m, c] : part.terms())
+      stage.add_term(m, value.at(s.coefficient) * lie::coefficient_polynomial(c));
+    x.push_back(std::move(stage));
+  }
+  bool palindrome = true;
+  for (std::size_t i = 0; i < x.size() / 2; ++i)
+    palindrome = palindrome && x[i] == x[x.size() - 1 - i];
+  exact_modified_hamiltonian k;
+  k.max_order = max_order;
+  k.unknowns = layout.free_coefficients;
+  k.remainder = nested_bch(x, palindrome, max_order);
+  k.coefficient_values = std::move(value);
+  return k;
+}
+
+std::vector<lie::polynomial<double>> compute_numeric_modified_hamiltonian(const scheme_layout& layout,
+                                                                          const std::array<cln::cl_RA, 3>& w,
+                                                                          const std::map<std::string, double>& values,
+                                                                          int max_order) {
+  check_order(max_order);
+  if (layout.stages.empty()) throw std::invalid_argument("a scheme needs at least one stage");
+  std::vector<lie::polynomial<double>> x;
+  for (const auto& s : layout.stages) {
+    const double c = values.at(s.coefficient);
+    lie::polynomial<double> stage;
+    const auto part = rational_part_hamiltonian(s.letter, layout.split, layout.permutation, w);
+    for (const auto& [m, p] : part.terms()) stage.add_term(m, c * cln::double_approx(p));
+    x.push_back(std::move(stage));
+  }
+  // Palindromic in letters and coefficient names, as for the exact path (equal values suffice).
+  bool palindrome = true;
+  for (std::size_t i = 0; i < x.size() / 2; ++i) palindrome = palindrome && x[i] == x[x.size() - 1 - i];
+  return nested_bch(x, palindrome, max_order);
 }
 
 GiNaC::ex theorem2_pairing(const symbolic_polynomial& x) {

@@ -1,77 +1,122 @@
 #include "rotlie/solver/critical_points.hpp"
 
+#include <cln/float.h>
+#include <cln/real.h>
+#include <ginac/ginac.h>
+
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
 #include "rotlie/solver/real_solutions.hpp"
+#include "rotlie/solver/resultant.hpp"
 
 namespace rotlie::solver {
 namespace {
 
-GiNaC::ex exact(const cln::cl_RA& x) { return GiNaC::numeric(cln::cl_N(x)); }
-cln::cl_RA rational(const GiNaC::ex& e) { return cln::the<cln::cl_RA>(GiNaC::ex_to<GiNaC::numeric>(e).to_cl_N()); }
+using lie::coefficient_polynomial;
 cln::cl_RA ten_to_minus(int n) { return cln::recip(cln::expt(cln::cl_RA(10), n)); }
 
-GiNaC::ex determinant3(const GiNaC::ex& f, const GiNaC::ex& g1, const GiNaC::ex& g2, const std::array<GiNaC::symbol, 3>& s) {
-  GiNaC::matrix m(3, 3);
-  for (unsigned j = 0; j < 3; ++j) {
-    m(0, j) = f.diff(s[j]);
-    m(1, j) = g1.diff(s[j]);
-    m(2, j) = g2.diff(s[j]);
+coefficient_polynomial determinant3(const coefficient_polynomial& f, const coefficient_polynomial& g1,
+                                    const coefficient_polynomial& g2) {
+  std::array<std::array<coefficient_polynomial, 3>, 3> m;
+  for (int j = 0; j < 3; ++j) {
+    m[0][static_cast<std::size_t>(j)] = f.derivative(j);
+    m[1][static_cast<std::size_t>(j)] = g1.derivative(j);
+    m[2][static_cast<std::size_t>(j)] = g2.derivative(j);
   }
-  return m.determinant().expand();
+  // Along the first row: f's gradient is the largest polynomial, so it is multiplied once per term.
+  const auto minor = [&](int a, int b) { return m[1][static_cast<std::size_t>(a)] * m[2][static_cast<std::size_t>(b)] -
+                                                m[1][static_cast<std::size_t>(b)] * m[2][static_cast<std::size_t>(a)]; };
+  return m[0][0] * minor(1, 2) - m[0][1] * minor(0, 2) + m[0][2] * minor(0, 1);
 }
 
 // p(z = −B/A) · A^deg_z(p): a polynomial in the remaining unknowns.
-GiNaC::ex substitute_linear(const GiNaC::ex& p, const GiNaC::symbol& z, const GiNaC::ex& A, const GiNaC::ex& B) {
+coefficient_polynomial substitute_linear(const coefficient_polynomial& p, int z, const coefficient_polynomial& A,
+                                         const coefficient_polynomial& B) {
   const int d = p.degree(z);
-  GiNaC::ex out = 0;
-  for (int k = 0; k <= d; ++k) out += p.coeff(z, k) * GiNaC::pow(-B, k) * GiNaC::pow(A, d - k);
-  return out.expand();
-}
-
-// Removes from p every factor it shares with A: those vanish where z = −B/A is undefined.
-GiNaC::ex strip_common_factors(GiNaC::ex p, const GiNaC::ex& A, const std::array<GiNaC::symbol, 3>& s) {
-  for (;;) {
-    const GiNaC::ex g = GiNaC::gcd(p, A);
-    if (g.degree(s[0]) + g.degree(s[1]) + g.degree(s[2]) == 0) return p;
-    GiNaC::ex quotient;
-    if (!GiNaC::divide(p, g, quotient)) throw std::logic_error("a gcd does not divide its argument");
-    p = quotient.expand();
+  std::vector<coefficient_polynomial> a_powers{coefficient_polynomial(1)}, minus_b_powers{coefficient_polynomial(1)};
+  for (int k = 1; k <= d; ++k) {
+    a_powers.push_back(a_powers.back() * A);
+    minus_b_powers.push_back(minus_b_powers.back() * (-B));
   }
+  coefficient_polynomial out;
+  for (int k = 0; k <= d; ++k)
+    out += p.coefficient(z, k) * minus_b_powers[static_cast<std::size_t>(k)] * a_powers[static_cast<std::size_t>(d - k)];
+  return out;
 }
 
-// A polynomial in the three unknowns as (coefficient, exponents) terms, for exact evaluation
-// without GiNaC: the check in three unknowns runs once per root and the determinant has
-// hundreds of terms.
-class sparse3 {
- public:
-  sparse3(const GiNaC::ex& p, const std::array<GiNaC::symbol, 3>& s) {
-    const GiNaC::ex e = p.expand();
-    for (int i = 0; i <= e.degree(s[0]); ++i) {
-      const GiNaC::ex ei = e.coeff(s[0], i);
-      for (int j = 0; j <= ei.degree(s[1]); ++j) {
-        const GiNaC::ex ej = ei.coeff(s[1], j);
-        for (int k = 0; k <= ej.degree(s[2]); ++k) {
-          const GiNaC::ex c = ej.coeff(s[2], k);
-          if (!c.is_zero()) terms_.push_back({rational(c), {i, j, k}});
-          degree_ = std::max({degree_, i, j, k});
-        }
+// GiNaC for the multivariate gcd only, which is rare here (the linear coefficient A is usually constant).
+GiNaC::ex to_ex(const coefficient_polynomial& p, const std::array<GiNaC::symbol, 3>& s) {
+  GiNaC::ex out = 0;
+  for (const auto& t : p.terms()) {
+    const auto e = coefficient_polynomial::unpack(t.key);
+    GiNaC::ex term = GiNaC::numeric(cln::cl_N(t.c));
+    for (std::size_t k = 0; k < 3; ++k) term *= GiNaC::pow(s[k], e[k]);
+    out += term;
+  }
+  return out;
+}
+coefficient_polynomial from_ex(const GiNaC::ex& e, const std::array<GiNaC::symbol, 3>& s) {
+  coefficient_polynomial out;
+  const GiNaC::ex p = e.expand();
+  for (int i = 0; i <= p.degree(s[0]); ++i) {
+    const GiNaC::ex pi = p.coeff(s[0], i);
+    for (int j = 0; j <= pi.degree(s[1]); ++j) {
+      const GiNaC::ex pj = pi.coeff(s[1], j);
+      for (int k = 0; k <= pj.degree(s[2]); ++k) {
+        const GiNaC::ex c = pj.coeff(s[2], k);
+        if (!c.is_zero())
+          out += coefficient_polynomial::monomial({i, j, k, 0}, cln::the<cln::cl_RA>(GiNaC::ex_to<GiNaC::numeric>(c).to_cl_N()));
       }
     }
   }
-  /// |p(x)| / (1 + Σ |terms|): vanishes to the refinement width at a true root, O(1) elsewhere.
-  cln::cl_RA relative_value(const std::array<cln::cl_RA, 3>& x) const {
-    std::array<std::vector<cln::cl_RA>, 3> powers;
+  return out;
+}
+const std::array<GiNaC::symbol, 3>& gcd_symbols() {
+  static const std::array<GiNaC::symbol, 3> s{GiNaC::symbol("x0"), GiNaC::symbol("x1"), GiNaC::symbol("x2")};
+  return s;
+}
+bool nonconstant_gcd(const coefficient_polynomial& a, const coefficient_polynomial& b) {
+  if (a.is_constant() || b.is_constant()) return false;
+  const GiNaC::ex g = GiNaC::gcd(to_ex(a, gcd_symbols()), to_ex(b, gcd_symbols()));
+  return !GiNaC::is_a<GiNaC::numeric>(g);
+}
+
+// Removes from p every factor it shares with A: those vanish where z = −B/A is undefined.
+coefficient_polynomial strip_common_factors(coefficient_polynomial p, const coefficient_polynomial& A) {
+  if (A.is_constant()) return p;
+  const auto& s = gcd_symbols();
+  GiNaC::ex pe = to_ex(p, s);
+  const GiNaC::ex ae = to_ex(A, s);
+  for (;;) {
+    const GiNaC::ex g = GiNaC::gcd(pe, ae);
+    if (GiNaC::is_a<GiNaC::numeric>(g)) return from_ex(pe, s);
+    GiNaC::ex quotient;
+    if (!GiNaC::divide(pe, g, quotient)) throw std::logic_error("a gcd does not divide its argument");
+    pe = quotient.expand();
+  }
+}
+
+// |p(x)| / (1 + Σ |terms|) in floating point of digits + 30 digits: vanishes to the refinement
+// width at a true root, O(1) elsewhere; the rounding error is 10^-27 of the threshold.
+class relative_value {
+ public:
+  relative_value(const coefficient_polynomial& p, const cln::float_format_t& format) : format_(format) {
+    for (const auto& t : p.terms()) terms_.push_back({cln::cl_float(t.c, format), coefficient_polynomial::unpack(t.key)});
+    for (const auto& t : terms_) degree_ = std::max({degree_, t.e[0], t.e[1], t.e[2]});
+  }
+  cln::cl_F operator()(const std::array<cln::cl_RA, 3>& x) const {
+    std::array<std::vector<cln::cl_F>, 3> powers;
     for (std::size_t v = 0; v < 3; ++v) {
-      powers[v].push_back(1);
-      for (int d = 1; d <= degree_; ++d) powers[v].push_back(powers[v].back() * x[v]);
+      const cln::cl_F xv = cln::cl_float(x[v], format_);
+      powers[v].push_back(cln::cl_float(1, format_));
+      for (int d = 1; d <= degree_; ++d) powers[v].push_back(powers[v].back() * xv);
     }
-    cln::cl_RA value = 0, size = 1;
+    cln::cl_F value = cln::cl_float(0, format_), size = cln::cl_float(1, format_);
     for (const auto& t : terms_) {
-      const cln::cl_RA product = t.c * powers[0][static_cast<std::size_t>(t.e[0])] * powers[1][static_cast<std::size_t>(t.e[1])] *
-                              powers[2][static_cast<std::size_t>(t.e[2])];
+      const cln::cl_F product = t.c * powers[0][static_cast<std::size_t>(t.e[0])] * powers[1][static_cast<std::size_t>(t.e[1])] *
+                                powers[2][static_cast<std::size_t>(t.e[2])];
       value = value + product;
       size = size + cln::abs(product);
     }
@@ -80,22 +125,22 @@ class sparse3 {
 
  private:
   struct term {
-    cln::cl_RA c;
-    std::array<int, 3> e;
+    cln::cl_F c;
+    coefficient_polynomial::exponents e;
   };
+  cln::float_format_t format_;
   std::vector<term> terms_;
   int degree_ = 0;
 };
 
 }  // namespace
 
-critical_result constrained_critical_points(const GiNaC::ex& f, const GiNaC::ex& g1, const GiNaC::ex& g2,
-                                            const std::array<GiNaC::symbol, 3>& s, int digits) {
+critical_result constrained_critical_points(const coefficient_polynomial& f, const coefficient_polynomial& e1,
+                                            const coefficient_polynomial& e2, int digits) {
   critical_result result;
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
-  const GiNaC::ex e1 = g1.expand(), e2 = g2.expand();
-  const GiNaC::ex det = determinant3(f.expand(), e1, e2, s);
+  const coefficient_polynomial det = determinant3(f, e1, e2);
   if (e1.is_zero() || e2.is_zero() || det.is_zero()) {
     result.degenerate = true;
     result.note = "a condition or the Lagrange determinant vanishes identically";
@@ -103,12 +148,11 @@ critical_result constrained_critical_points(const GiNaC::ex& f, const GiNaC::ex&
   }
   // The linear unknown with the simplest leading coefficient A (a constant avoids any spurious root).
   int best_eq = -1, best_var = -1, best_cost = 1 << 30;
-  const std::array<GiNaC::ex, 2> eqs{e1, e2};
+  const std::array<const coefficient_polynomial*, 2> eqs{&e1, &e2};
   for (int q = 0; q < 2; ++q)
     for (int v = 0; v < 3; ++v) {
-      if (eqs[q].degree(s[v]) != 1) continue;
-      const GiNaC::ex A = eqs[q].coeff(s[v], 1);
-      const int cost = A.degree(s[0]) + A.degree(s[1]) + A.degree(s[2]);
+      if (eqs[static_cast<std::size_t>(q)]->degree(v) != 1) continue;
+      const int cost = eqs[static_cast<std::size_t>(q)]->coefficient(v, 1).total_degree();
       if (cost < best_cost) best_eq = q, best_var = v, best_cost = cost;
     }
   if (best_eq < 0) {
@@ -116,21 +160,27 @@ critical_result constrained_critical_points(const GiNaC::ex& f, const GiNaC::ex&
     result.note = "no order condition is linear in an unknown: this elimination does not apply";
     return result;
   }
-  const GiNaC::symbol z = s[best_var];
-  const GiNaC::ex linear = eqs[best_eq], other = eqs[1 - best_eq];
-  const GiNaC::ex A = linear.coeff(z, 1), B = linear.coeff(z, 0);
-  if (const GiNaC::ex h = GiNaC::gcd(A, B); h.degree(s[0]) + h.degree(s[1]) + h.degree(s[2]) > 0) {
+  const int z = best_var;
+  const coefficient_polynomial& linear = *eqs[static_cast<std::size_t>(best_eq)];
+  const coefficient_polynomial& other = *eqs[static_cast<std::size_t>(1 - best_eq)];
+  const coefficient_polynomial A = linear.coefficient(z, 1), B = linear.coefficient(z, 0);
+  if (nonconstant_gcd(A, B)) {
     result.degenerate = true;
     result.note = "the linear condition factors: its zero set contains a whole surface";
     return result;
   }
-  std::array<GiNaC::symbol, 2> rest;
+  std::array<int, 2> rest{};
   for (int v = 0, k = 0; v < 3; ++v)
-    if (v != best_var) rest[k++] = s[v];
-  result.eliminated = z.get_name();
-  const GiNaC::ex reduced_other = strip_common_factors(substitute_linear(other, z, A, B), A, s);
-  const GiNaC::ex reduced_det = strip_common_factors(substitute_linear(det, z, A, B), A, s);
-  const system_result planar = solve_two_equations(reduced_other, reduced_det, rest[0], rest[1], digits);
+    if (v != z) rest[static_cast<std::size_t>(k++)] = v;
+  result.eliminated = z;
+  const coefficient_polynomial reduced_other = strip_common_factors(substitute_linear(other, z, A, B), A);
+  const coefficient_polynomial reduced_det = strip_common_factors(substitute_linear(det, z, A, B), A);
+  // Where A = B = 0 both reduced equations vanish to high order: those points are multiple roots of
+  // the eliminant, at the roots of Res(A, B). Kept once (then discarded below), not certified away.
+  const rational_polynomial spurious =
+      A.is_constant() ? rational_polynomial() : resultant_in(A, B, rest[1], rest[0]);
+  const system_result planar = solve_two_equations(reduced_other, reduced_det, rest[0], rest[1], digits,
+                                                   solve_method::automatic, spurious);
   result.eliminant_degree = planar.resultant_degree_u;
   const auto check_start = clock::now();
   result.seconds_elimination = std::chrono::duration<double>(check_start - start).count() - planar.seconds_roots;
@@ -141,29 +191,32 @@ critical_result constrained_critical_points(const GiNaC::ex& f, const GiNaC::ex&
     return result;
   }
   const cln::cl_RA tolerance = ten_to_minus(digits + 2);
-  const sparse3 check1(e1, s), check2(e2, s), check_det(det, s);
+  const cln::float_format_t format = cln::float_format(digits + 30);
+  const relative_value check1(e1, format), check2(e2, format), check_det(det, format);
+  const cln::cl_F float_tolerance = cln::cl_float(tolerance, format);
   for (const auto& p : planar.points) {
-    const GiNaC::exmap at2{{rest[0], exact(p.u)}, {rest[1], exact(p.v)}};
-    const cln::cl_RA a = rational(A.subs(at2)), b = rational(B.subs(at2));
+    std::vector<cln::cl_RA> at(3, 0);
+    at[static_cast<std::size_t>(rest[0])] = p.u;
+    at[static_cast<std::size_t>(rest[1])] = p.v;
+    const cln::cl_RA a = A(at), b = B(at);
     if (cln::abs(a) <= tolerance * (1 + cln::abs(b))) {
       ++result.discarded;
       continue;
     }
     critical_point c;
-    c.values[static_cast<std::size_t>(best_var)] = -b / a;
-    for (int v = 0, k = 0; v < 3; ++v)
-      if (v != best_var) c.values[static_cast<std::size_t>(v)] = k++ == 0 ? p.u : p.v;
-    c.residual = cln::max(check1.relative_value(c.values),
-                          cln::max(check2.relative_value(c.values), check_det.relative_value(c.values)));
-    if (c.residual > tolerance) {
+    c.values = {at[0], at[1], at[2]};
+    c.values[static_cast<std::size_t>(z)] = -b / a;
+    const cln::cl_F worst = cln::max(check1(c.values), cln::max(check2(c.values), check_det(c.values)));
+    if (worst > float_tolerance) {
       ++result.discarded;
       continue;
     }
+    c.residual = cln::rational(worst);
     result.points.push_back(std::move(c));
   }
   if (result.discarded > 0)
-    result.note = std::to_string(result.discarded) + " root(s) of the reduced system discarded: the linear solve for " +
-                  result.eliminated + " is undefined there";
+    result.note = std::to_string(result.discarded) + " root(s) of the reduced system discarded: the linear solve for x_" +
+                  std::to_string(z) + " is undefined there";
   std::sort(result.points.begin(), result.points.end(),
             [](const critical_point& x, const critical_point& y) { return x.values[0] < y.values[0]; });
   result.seconds_roots += std::chrono::duration<double>(clock::now() - check_start).count();

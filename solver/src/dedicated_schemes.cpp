@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "rotlie/bch/modified_hamiltonian.hpp"
@@ -48,10 +49,6 @@ namespace {
 using clock_type = std::chrono::steady_clock;
 double since(clock_type::time_point t) { return std::chrono::duration<double>(clock_type::now() - t).count(); }
 
-GiNaC::ex exact(const cln::cl_RA& x) { return GiNaC::numeric(cln::cl_N(x)); }
-cln::cl_RA rational(const GiNaC::ex& e) {
-  return cln::the<cln::cl_RA>(GiNaC::ex_to<GiNaC::numeric>(e).to_cl_N());
-}
 
 // x rounded to `digits` significant decimal digits, exactly.
 cln::cl_RA round_to_digits(const cln::cl_RA& x, int digits) {
@@ -80,22 +77,22 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
   if (digits < 10) throw std::invalid_argument("--digits must be at least 10");
   lie::validate_moments(body);
   family_result result;
-  const bch::inverse_inertia w{exact(cln::recip(body.I[0])), exact(cln::recip(body.I[1])), exact(cln::recip(body.I[2]))};
+  const std::array<cln::cl_RA, 3> w{cln::recip(body.I[0]), cln::recip(body.I[1]), cln::recip(body.I[2])};
   for (const auto& scheme : schemes) {
     const auto named = bch::find_named_scheme(scheme);
     if (!named) throw std::invalid_argument("unknown scheme '" + scheme + "'");
     for (const auto& perm : permutations) {
       auto t = clock_type::now();
       const auto layout = bch::layout_scheme(named->word, named->split, perm);
-      const auto c = bch::make_coefficients(layout);
-      if (layout.free_coefficients.size() != 2 && layout.free_coefficients.size() != 3)
-        throw std::invalid_argument(scheme + " has " + std::to_string(layout.free_coefficients.size()) +
+      const std::size_t unknowns = layout.free_coefficients.size();
+      if (unknowns != 2 && unknowns != 3)
+        throw std::invalid_argument(scheme + " has " + std::to_string(unknowns) +
                                     " free coefficients; this solver takes two (N) or three (R, P)");
-      const auto stages = bch::stage_elements(layout, c, w);
-      const auto k5 = bch::compute_modified_hamiltonian(stages, 5);
-      const auto& h3 = k5.remainder[3];
-      const GiNaC::ex p1 = h3.coefficient(lie::monomial(2, 2, 0)), p2 = h3.coefficient(lie::monomial(2, 0, 2));
-      const GiNaC::ex p3 = h3.coefficient(lie::monomial(0, 2, 2));
+      // H_R3 for the conditions; H_R5 as well when it is minimised (R, P), else only at each solution.
+      const auto k = bch::compute_exact_modified_hamiltonian(layout, w, unknowns == 3 ? 5 : 3);
+      const auto& h3 = k.remainder[3];
+      const auto p1 = h3.coefficient(lie::monomial(2, 2, 0)), p2 = h3.coefficient(lie::monomial(2, 0, 2));
+      const auto p3 = h3.coefficient(lie::monomial(0, 2, 2));
       result.seconds_conditions += since(t);
 
       // Two free coefficients: H_R3 = 0 has isolated solutions. Three (R, P; section 3.4): the critical
@@ -104,10 +101,8 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
       system_report report;
       report.scheme = scheme;
       report.permutation = perm;
-      std::vector<GiNaC::symbol> unknowns;
-      for (const auto& name : layout.free_coefficients) unknowns.push_back(GiNaC::ex_to<GiNaC::symbol>(c.free.at(name)));
-      if (unknowns.size() == 2) {
-        const auto sys = solve_two_equations(p1, p2, unknowns[0], unknowns[1], digits);
+      if (unknowns == 2) {
+        const auto sys = solve_two_equations(p1, p2, 0, 1, digits);
         result.seconds_elimination += sys.seconds_elimination;
         result.seconds_roots += sys.seconds_roots;
         report.degenerate = sys.degenerate;
@@ -115,16 +110,19 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
         report.eliminant_degree = sys.resultant_degree_u;
         for (const auto& p : sys.points) points.push_back({p.u, p.v});  // sorted by u: labels follow Tables 2 and 4
       } else {
-        GiNaC::ex norm_squared = 0;
-        for (const auto& [m, q] : k5.remainder[5].terms()) norm_squared += q * q;
-        const auto crit = constrained_critical_points(norm_squared, p1, p2, {unknowns[0], unknowns[1], unknowns[2]}, digits);
+        lie::coefficient_polynomial norm_squared;
+        for (const auto& [m, q] : k.remainder[5].terms()) norm_squared += q * q;
+        const auto crit = constrained_critical_points(norm_squared, p1, p2, digits);
         result.seconds_elimination += crit.seconds_elimination;
         result.seconds_roots += crit.seconds_roots;
         report.degenerate = crit.degenerate;
         report.note = crit.note;
         report.eliminant_degree = crit.eliminant_degree;
-        report.eliminated = crit.eliminated;
+        if (crit.eliminated >= 0) report.eliminated = layout.free_coefficients[static_cast<std::size_t>(crit.eliminated)];
         report.discarded = crit.discarded;
+        if (crit.discarded > 0)
+          report.note = std::to_string(crit.discarded) + " root(s) of the reduced system discarded: the linear solve for " +
+                        report.eliminated + " is undefined there";
         for (const auto& p : crit.points) points.push_back({p.values[0], p.values[1], p.values[2]});
       }
       report.real_solutions = static_cast<int>(points.size());
@@ -138,23 +136,27 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
         s.label = ++label;
         s.layout = layout;
         s.free = layout.free_coefficients;
-        GiNaC::exmap at, at_rounded;
-        for (std::size_t k = 0; k < unknowns.size(); ++k) {
-          at[unknowns[k]] = exact(point[k]);
-          at_rounded[unknowns[k]] = exact(round_to_digits(point[k], digits));
-        }
+        std::vector<cln::cl_RA> rounded;
+        for (const auto& x : point) rounded.push_back(round_to_digits(x, digits));
+        std::map<std::string, double> numeric;
         for (const auto& st : layout.stages) {
-          if (std::any_of(s.coefficients.begin(), s.coefficients.end(), [&](const auto& p) { return p.first == st.coefficient; }))
-            continue;
-          const GiNaC::ex expression = c.value.at(st.coefficient);
-          if (GiNaC::is_a<GiNaC::numeric>(expression)) s.exact.push_back(st.coefficient);
-          s.coefficients.emplace_back(st.coefficient, rational(expression.subs(at)));
+          if (numeric.count(st.coefficient) != 0) continue;
+          const auto& expression = k.coefficient_values.at(st.coefficient);
+          if (expression.is_constant()) s.exact.push_back(st.coefficient);
+          s.coefficients.emplace_back(st.coefficient, expression(point));
+          numeric[st.coefficient] = cln::double_approx(s.coefficients.back().second);
         }
         s.residual = 0;
-        for (const GiNaC::ex& p : {p1, p2, p3}) s.residual = cln::max(s.residual, cln::abs(rational(p.subs(at_rounded))));
+        for (const auto* p : {&p1, &p2, &p3}) s.residual = cln::max(s.residual, cln::abs((*p)(rounded)));
         std::vector<double> q;
-        for (const auto& [m, coeff] : k5.remainder[5].terms())
-          q.push_back(GiNaC::ex_to<GiNaC::numeric>(coeff.subs(at)).to_double());
+        if (unknowns == 3) {
+          std::vector<double> x;
+          for (const auto& v : point) x.push_back(cln::double_approx(v));
+          for (const auto& [m, coefficient] : k.remainder[5].terms()) q.push_back(coefficient.evaluate(x));
+        } else {
+          const auto h = bch::compute_numeric_modified_hamiltonian(layout, w, numeric, 5);
+          for (const auto& [m, coefficient] : h[5].terms()) q.push_back(coefficient);
+        }
         s.analytic_remainder = analytic_remainder_norm(q, body);
         result.solutions.push_back(std::move(s));
       }

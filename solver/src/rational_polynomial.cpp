@@ -164,7 +164,7 @@ std::vector<root_interval> isolate_real_roots_sturm(const rational_polynomial& p
 
 namespace {
 // sign of p(num/den), den > 0, from the integer Σ c_i num^i den^(n−i) (no rational normalisation).
-int sign_at(const std::vector<cln::cl_I>& c, const cln::cl_RA& x) {
+int integer_sign_at(const std::vector<cln::cl_I>& c, const cln::cl_RA& x) {
   const cln::cl_I num = cln::numerator(x), den = cln::denominator(x);
   cln::cl_I s = c.back(), den_power = 1;
   for (std::size_t i = c.size() - 1; i-- > 0;) {
@@ -182,11 +182,11 @@ cln::cl_RA refine_root(const rational_polynomial& p, root_interval r, const cln:
   std::vector<cln::cl_I> c;
   for (const auto& x : p.coefficients()) c.push_back(cln::the<cln::cl_I>(x * denominators));
   // On (lo, hi] a square-free p changes sign exactly once (hi may be the root itself).
-  const int at_hi = sign_at(c, r.hi);
+  const int at_hi = integer_sign_at(c, r.hi);
   if (at_hi == 0) return r.hi;
   while (r.hi - r.lo > width) {
     const cln::cl_RA mid = (r.lo + r.hi) / 2;
-    const int v = sign_at(c, mid);
+    const int v = integer_sign_at(c, mid);
     if (v == 0) return mid;
     if (v == at_hi)
       r.hi = mid;
@@ -194,6 +194,63 @@ cln::cl_RA refine_root(const rational_polynomial& p, root_interval r, const cln:
       r.lo = mid;
   }
   return (r.lo + r.hi) / 2;
+}
+
+root_polisher::root_polisher(const rational_polynomial& p, int digits)
+    : p_(p), digits_(digits), width_(cln::recip(cln::expt(cln::cl_RA(10), digits + 10))) {
+  cln::cl_I denominators = 1;
+  for (const auto& c : p.coefficients()) denominators = cln::lcm(denominators, cln::denominator(c));
+  const cln::float_format_t format = cln::float_format(digits + 40);
+  for (const auto& c : p.coefficients()) {
+    integer_.push_back(cln::the<cln::cl_I>(c * denominators));
+    value_.push_back(cln::cl_float(integer_.back(), format));
+  }
+  for (std::size_t i = 1; i < value_.size(); ++i) slope_.push_back(value_[i] * cln::cl_float(cln::cl_I(static_cast<long>(i)), format));
+}
+
+int root_polisher::sign_at(const cln::cl_RA& x) const { return integer_sign_at(integer_, x); }
+
+cln::cl_RA root_polisher::polish(const root_interval& r) const {
+  if (r.lo == r.hi) return r.lo;
+  const int sign_hi = sign_at(r.hi);
+  if (sign_hi == 0) return r.hi;
+  const cln::float_format_t format = cln::float_format(digits_ + 40);
+  const auto horner = [](const std::vector<cln::cl_F>& c, const cln::cl_F& x) {
+    cln::cl_F s = c.back();
+    for (std::size_t i = c.size() - 1; i-- > 0;) s = s * x + c[i];
+    return s;
+  };
+  cln::cl_F lo = cln::cl_float(r.lo, format), hi = cln::cl_float(r.hi, format);
+  cln::cl_F x = (lo + hi) / 2;
+  const cln::cl_F step_goal = cln::cl_float(width_ / 1000, format);
+  for (int iteration = 0; iteration < 400; ++iteration) {
+    const cln::cl_F value = horner(value_, x);
+    if (cln::zerop(value)) break;
+    // Keep the bracket: the sign at hi is the exact one; a rounding error here only costs a step.
+    if ((cln::plusp(value) ? 1 : -1) == sign_hi)
+      hi = x;
+    else
+      lo = x;
+    const cln::cl_F slope = slope_.empty() ? cln::cl_float(0, format) : horner(slope_, x);
+    cln::cl_F next = (lo + hi) / 2;
+    if (!cln::zerop(slope)) {
+      const cln::cl_F newton = x - value / slope;
+      if (newton > lo && newton < hi) next = newton;
+    }
+    const cln::cl_F step = cln::abs(next - x);
+    x = next;
+    if (step <= step_goal * (1 + cln::abs(x))) break;
+  }
+  // Certificate: a sign change of p across (x − width/2, x + width/2], inside the isolating interval.
+  const cln::cl_RA xr = cln::rational(x), a = xr - width_ / 2, b = xr + width_ / 2;
+  if (a >= r.lo && b <= r.hi) {
+    const int sa = sign_at(a), sb = sign_at(b);
+    if (sa == 0) return a;
+    if (sb == 0) return b;
+    if (sa != sb) return xr;
+  }
+  ++uncertified_;
+  return refine_root(p_, r, width_);
 }
 
 }  // namespace rotlie::solver

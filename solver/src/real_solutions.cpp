@@ -1,7 +1,14 @@
 #include "rotlie/solver/real_solutions.hpp"
 
+#include <cln/float.h>
+#include <cln/integer.h>
+#include <cln/real.h>
+#include <ginac/ginac.h>
+
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <stdexcept>
 
 #include "rotlie/solver/rational_polynomial.hpp"
@@ -10,29 +17,27 @@
 namespace rotlie::solver {
 namespace {
 
-cln::cl_RA rational_of(const GiNaC::ex& c) {
-  if (!GiNaC::is_a<GiNaC::numeric>(c) || !GiNaC::ex_to<GiNaC::numeric>(c).is_rational())
-    throw std::invalid_argument("the equations must have rational coefficients");
-  return cln::the<cln::cl_RA>(GiNaC::ex_to<GiNaC::numeric>(c).to_cl_N());
-}
+using lie::coefficient_polynomial;
+using clock_type = std::chrono::steady_clock;
+double since(clock_type::time_point t) { return std::chrono::duration<double>(clock_type::now() - t).count(); }
+cln::cl_RA ten_to_minus(int n) { return cln::recip(cln::expt(cln::cl_RA(10), n)); }
 
 // A bivariate polynomial as rows c[i][j] of u^i v^j, evaluated exactly: first in u (once per root u),
-// then in v by Horner, so pairing n × m roots costs n·terms + n·m·deg_v operations.
+// then in v by Horner.
 class bivariate {
  public:
-  bivariate(const GiNaC::ex& e, const GiNaC::symbol& u, const GiNaC::symbol& v) {
-    const GiNaC::ex p = e.expand();
-    c_.resize(static_cast<std::size_t>(p.degree(u)) + 1);
-    for (int i = 0; i <= p.degree(u); ++i) {
-      const GiNaC::ex pu = p.coeff(u, i);
-      for (int j = 0; j <= pu.degree(v); ++j) {
-        auto& row = c_[static_cast<std::size_t>(i)];
-        row.resize(static_cast<std::size_t>(pu.degree(v)) + 1, 0);
-        row[static_cast<std::size_t>(j)] = rational_of(pu.coeff(v, j));
-      }
+  bivariate(const coefficient_polynomial& p, int u, int v) {
+    for (const auto& t : p.terms()) {
+      const auto e = coefficient_polynomial::unpack(t.key);
+      const auto i = static_cast<std::size_t>(e[static_cast<std::size_t>(u)]);
+      const auto j = static_cast<std::size_t>(e[static_cast<std::size_t>(v)]);
+      if (c_.size() <= i) c_.resize(i + 1);
+      if (c_[i].size() <= j) c_[i].resize(j + 1, 0);
+      c_[i][j] = t.c;
+      degree_v_ = std::max(degree_v_, static_cast<int>(j));
     }
-    for (const auto& row : c_) degree_v_ = std::max(degree_v_, static_cast<int>(row.size()) - 1);
   }
+  int degree_v() const { return degree_v_; }
   /// (value, magnitude) at u fixed, as polynomials in v: value Σ c_ij u^i v^j and Σ |c_ij| max(1,|u|)^i.
   struct in_v {
     std::vector<cln::cl_RA> value, magnitude;
@@ -54,79 +59,287 @@ class bivariate {
     for (auto it = c.rbegin(); it != c.rend(); ++it) s = s * y + *it;
     return s;
   }
+  /// |e(x, y)| when it is below tolerance × (1 + size of the terms), i.e. (x, y) is a root to that width.
+  std::optional<cln::cl_RA> vanishes(const in_v& at_x, const cln::cl_RA& y, const cln::cl_RA& tolerance) const {
+    const cln::cl_RA ay = cln::max(cln::cl_RA(1), cln::abs(y));
+    const cln::cl_RA r = cln::abs(horner(at_x.value, y));
+    if (r <= tolerance * (1 + horner(at_x.magnitude, ay))) return r;
+    return std::nullopt;
+  }
 
  private:
   std::vector<std::vector<cln::cl_RA>> c_;
   int degree_v_ = 0;
 };
 
-cln::cl_RA ten_to_minus(int n) { return cln::recip(cln::expt(cln::cl_RA(10), n)); }
-
-// The real roots of a univariate resultant, refined by exact bisection to `width`. The square-free
-// part comes from GiNaC's gcd (heuristic integer gcd), far faster than Euclid over Q at high degree.
-std::vector<cln::cl_RA> real_roots(const rational_polynomial& eliminant, const cln::cl_RA& width) {
-  std::vector<cln::cl_RA> out;
-  if (square_free_certified_mod_prime(eliminant)) {  // the usual case: skip the gcd over Q
-    for (const auto& r : isolate_real_roots_of_square_free(eliminant)) out.push_back(refine_root(eliminant, r, width));
-    return out;
+// The same polynomial with floating-point coefficients of a fixed precision, for Newton's method.
+class float_bivariate {
+ public:
+  float_bivariate(const coefficient_polynomial& p, int u, int v, const cln::float_format_t& format) {
+    for (const auto& t : p.terms()) {
+      const auto e = coefficient_polynomial::unpack(t.key);
+      terms_.push_back({cln::cl_float(t.c, format), e[static_cast<std::size_t>(u)], e[static_cast<std::size_t>(v)]});
+      degree_ = std::max({degree_, terms_.back().i, terms_.back().j});
+    }
+    zero_ = cln::cl_float(0, format);
   }
-  const GiNaC::symbol x("x");
-  GiNaC::ex resultant = 0;
-  for (std::size_t i = 0; i < eliminant.coefficients().size(); ++i)
-    resultant += GiNaC::numeric(cln::cl_N(eliminant.coefficients()[i])) * GiNaC::pow(x, static_cast<int>(i));
-  const GiNaC::ex g = GiNaC::gcd(resultant, resultant.diff(x));
-  const GiNaC::ex square_free = GiNaC::quo(resultant, g, x);
-  const auto p = rational_polynomial::from_ex(square_free, x);
-  for (const auto& r : isolate_real_roots_of_square_free(p)) out.push_back(refine_root(p, r, width));
+  cln::cl_F operator()(const std::vector<cln::cl_F>& pu, const std::vector<cln::cl_F>& pv) const {
+    cln::cl_F s = zero_;
+    for (const auto& t : terms_) s = s + t.c * pu[static_cast<std::size_t>(t.i)] * pv[static_cast<std::size_t>(t.j)];
+    return s;
+  }
+  int degree() const { return degree_; }
+
+ private:
+  struct term {
+    cln::cl_F c;
+    int i, j;
+  };
+  std::vector<term> terms_;
+  int degree_ = 0;
+  cln::cl_F zero_;
+};
+
+std::vector<cln::cl_F> powers_of(const cln::cl_F& x, int degree) {
+  std::vector<cln::cl_F> p{cln::cl_float(1, x)};
+  for (int d = 1; d <= degree; ++d) p.push_back(p.back() * x);
+  return p;
+}
+
+// Real roots of the eliminant, isolated exactly. The square-free part comes from GiNaC's gcd
+// (heuristic integer gcd) when the cheap modular certificate fails; the repeated part is kept (its
+// roots are where back-substitution's uniqueness argument does not hold).
+struct eliminant_roots {
+  rational_polynomial square_free;
+  rational_polynomial multiple;  ///< square-free, its roots are the multiple roots of the eliminant (1 if none)
+  std::vector<root_interval> intervals;
+};
+
+GiNaC::ex as_ex(const rational_polynomial& p, const GiNaC::symbol& x) {
+  GiNaC::ex r = 0;
+  for (std::size_t i = 0; i < p.coefficients().size(); ++i)
+    r += GiNaC::numeric(cln::cl_N(p.coefficients()[i])) * GiNaC::pow(x, static_cast<int>(i));
+  return r;
+}
+
+eliminant_roots isolate(const rational_polynomial& eliminant) {
+  eliminant_roots out;
+  out.multiple = rational_polynomial({1});
+  if (square_free_certified_mod_prime(eliminant)) {
+    out.square_free = eliminant;
+  } else {
+    const GiNaC::symbol x("x");
+    const GiNaC::ex r = as_ex(eliminant, x);
+    const GiNaC::ex g = GiNaC::gcd(r, r.diff(x));
+    out.square_free = rational_polynomial::from_ex(GiNaC::quo(r, g, x), x);
+    if (!GiNaC::is_a<GiNaC::numeric>(g)) {
+      const GiNaC::ex h = GiNaC::gcd(g, g.diff(x));
+      out.multiple = rational_polynomial::from_ex(GiNaC::quo(g, h, x), x);
+    }
+  }
+  out.intervals = isolate_real_roots_of_square_free(out.square_free);
   return out;
+}
+
+// The pairing method: the real roots v of the other resultant, every pair with the given u tested.
+std::vector<real_point> pair_roots(const coefficient_polynomial& e1, const coefficient_polynomial& e2, int u, int v,
+                                   const std::vector<cln::cl_RA>& us, int digits) {
+  std::vector<cln::cl_RA> vs;
+  const eliminant_roots in_v = isolate(resultant_in(e1, e2, u, v));
+  const root_polisher polish_v(in_v.square_free, digits);
+  for (const auto& r : in_v.intervals) vs.push_back(polish_v.polish(r));
+  const bivariate b1(e1, u, v), b2(e2, u, v);
+  // A true solution leaves |e| ≲ deg·|terms|·width; any other pair leaves a fixed nonzero algebraic
+  // number, far above 10^-(digits+3) of the size of the terms.
+  const cln::cl_RA tolerance = ten_to_minus(digits + 3);
+  std::vector<real_point> points;
+  for (const auto& x : us) {
+    const auto f1 = b1.at_u(x), f2 = b2.at_u(x);
+    for (const auto& y : vs) {
+      const auto r1 = b1.vanishes(f1, y, tolerance);
+      if (!r1) continue;
+      if (const auto r2 = b2.vanishes(f2, y, tolerance)) points.push_back({x, y, cln::max(*r1, *r2)});
+    }
+  }
+  return points;
+}
+
+std::vector<cln::cl_RA> polished_roots(const eliminant_roots& in_u, int digits) {
+  const root_polisher polisher(in_u.square_free, digits);
+  std::vector<cln::cl_RA> us;
+  for (const auto& r : in_u.intervals) us.push_back(polisher.polish(r));
+  return us;
+}
+
+// Back-substitution at every simple real root of the eliminant; nullopt when any root fails, so
+// that the caller falls back to pairing.
+// The multiple roots of R are set aside in `multiple_roots` for pairing.
+std::optional<std::vector<real_point>> back_substitute(const coefficient_polynomial& e1, const coefficient_polynomial& e2,
+                                                       int u, int v, const eliminant_roots& in_u, int digits,
+                                                       std::vector<cln::cl_RA>& multiple_roots) {
+  const cln::float_format_t format = cln::float_format(digits + 30);
+  const float_bivariate f1(e1, u, v, format), f2(e2, u, v, format);
+  const float_bivariate d1u(e1.derivative(u), u, v, format), d1v(e1.derivative(v), u, v, format);
+  const float_bivariate d2u(e2.derivative(u), u, v, format), d2v(e2.derivative(v), u, v, format);
+  const bivariate b1(e1, u, v), b2(e2, u, v);
+  const int degree = std::max(f1.degree(), f2.degree());
+  // The equation of lower positive degree in v gives the candidates; the other one selects.
+  const bool first_is_lower = b2.degree_v() == 0 || (b1.degree_v() > 0 && b1.degree_v() <= b2.degree_v());
+  const bivariate& low = first_is_lower ? b1 : b2;
+  const bivariate& other = first_is_lower ? b2 : b1;
+  const cln::cl_RA tolerance = ten_to_minus(digits + 3), width = ten_to_minus(digits + 10);
+  const cln::cl_F converged = cln::cl_float(cln::cl_RA(width) / 100, format);
+  std::vector<real_point> points;
+  // Where both leading coefficients in v vanish, R vanishes for a point at infinity; R square-free
+  // then leaves no finite solution above that root. Those roots are the roots of gcd(lc1, lc2).
+  const auto leading = [&](const coefficient_polynomial& e) {
+    const coefficient_polynomial lc = e.coefficient(v, e.degree(v));
+    std::vector<cln::cl_RA> c(static_cast<std::size_t>(std::max(lc.degree(u), 0)) + 1, 0);
+    for (const auto& t : lc.terms()) c[static_cast<std::size_t>(coefficient_polynomial::unpack(t.key)[static_cast<std::size_t>(u)])] = t.c;
+    return rational_polynomial(std::move(c));
+  };
+  const rational_polynomial at_infinity = gcd(leading(e1), leading(e2));
+  const root_polisher polisher(in_u.square_free, digits);
+  for (const auto& interval : in_u.intervals) {
+    const cln::cl_RA u0 = polisher.polish(interval);  // certified to width/2
+    if (in_u.multiple.degree() >= 1 &&
+        cln::signum(in_u.multiple(u0 - width / 2)) * cln::signum(in_u.multiple(u0 + width / 2)) <= 0) {
+      multiple_roots.push_back(u0);
+      continue;
+    }
+    if (at_infinity.degree() >= 1 && cln::signum(at_infinity(u0 - width / 2)) * cln::signum(at_infinity(u0 + width / 2)) <= 0)
+      continue;
+    const auto low_at = low.at_u(u0), other_at = other.at_u(u0);
+    std::vector<double> coefficients;
+    for (const auto& c : low_at.value) coefficients.push_back(cln::double_approx(c));
+    while (!coefficients.empty() && coefficients.back() == 0) coefficients.pop_back();
+    // Candidates: every root of low(u0, ·) (companion matrix), ordered by how well the other equation vanishes.
+    std::vector<std::pair<double, double>> candidates;  // (relative |other| + |imaginary part|, v)
+    if (coefficients.size() >= 2) {
+      const auto n = static_cast<Eigen::Index>(coefficients.size() - 1);
+      Eigen::MatrixXd companion = Eigen::MatrixXd::Zero(n, n);
+      for (Eigen::Index i = 1; i < n; ++i) companion(i, i - 1) = 1;
+      for (Eigen::Index i = 0; i < n; ++i) companion(i, n - 1) = -coefficients[static_cast<std::size_t>(i)] / coefficients.back();
+      const Eigen::VectorXcd eigenvalues = companion.eigenvalues();
+      for (const auto& z : eigenvalues) {
+        const double y = z.real();
+        double value = 0, size = 0;
+        for (std::size_t j = other_at.value.size(); j-- > 0;) {
+          value = value * y + cln::double_approx(other_at.value[j]);
+          size = size * std::max(1.0, std::abs(y)) + cln::double_approx(other_at.magnitude[j]);
+        }
+        candidates.push_back({std::abs(value) / (1 + size) + std::abs(z.imag()) / (1 + std::abs(y)), y});
+      }
+      std::sort(candidates.begin(), candidates.end());
+    }
+    bool found = false;
+    const cln::cl_F x0 = cln::cl_float(u0, format);
+    for (std::size_t k = 0; k < std::min<std::size_t>(candidates.size(), 3) && !found; ++k) {
+      // Newton on (e1, e2) in (u, v) from (u0, candidate): quadratic from about 16 digits. The
+      // intersection is simple (R is square-free), so the Jacobian is regular there.
+      const cln::cl_F y0 = cln::cl_float(cln::rational(cln::cl_DF(candidates[k].second)), format);
+      cln::cl_F x = x0, y = y0;
+      bool newton_converged = false;
+      for (int iteration = 0; iteration < 40 && !newton_converged; ++iteration) {
+        const auto pu = powers_of(x, degree), pv = powers_of(y, degree);
+        const cln::cl_F a = d1u(pu, pv), b = d1v(pu, pv), c = d2u(pu, pv), d = d2v(pu, pv);
+        const cln::cl_F det = a * d - b * c;
+        if (cln::zerop(det)) break;
+        const cln::cl_F r1 = f1(pu, pv), r2 = f2(pu, pv);
+        const cln::cl_F dx = (d * r1 - b * r2) / det, dy = (a * r2 - c * r1) / det;
+        x = x - dx;
+        y = y - dy;
+        newton_converged = cln::abs(dx) <= converged * (1 + cln::abs(x)) && cln::abs(dy) <= converged * (1 + cln::abs(y));
+      }
+      // Newton only polishes: it converged near its start (a root at infinity sends it away), on the
+      // same root of R, and both equations vanish, exactly evaluated.
+      if (!newton_converged || cln::abs(y - y0) > cln::cl_float(cln::cl_RA(1) / 1000000, format) * (1 + cln::abs(y0)) ||
+          cln::abs(x - x0) > cln::cl_float(width, format))
+        continue;
+      const cln::cl_RA yr = cln::rational(y);
+      const auto r1 = b1.vanishes(b1.at_u(u0), yr, tolerance);
+      if (!r1) continue;
+      const auto r2 = b2.vanishes(b2.at_u(u0), yr, tolerance);
+      if (!r2) continue;
+      points.push_back({u0, yr, cln::max(*r1, *r2)});
+      found = true;
+    }
+    // No finite common root passed: a root at infinity (both leading coefficients in v vanish) or a
+    // candidate Newton could not reach. Pairing decides those exactly.
+    if (!found) return std::nullopt;
+  }
+  return points;
+}
+
+// A common factor free of v divides the contents of both equations (their coefficients in v).
+bool share_factor_in_u(const coefficient_polynomial& e1, const coefficient_polynomial& e2, int u, int v) {
+  const auto content = [&](const coefficient_polynomial& e) {
+    rational_polynomial g;
+    for (int j = 0; j <= e.degree(v); ++j) {
+      const coefficient_polynomial cj = e.coefficient(v, j);
+      if (cj.is_zero()) continue;
+      std::vector<cln::cl_RA> c(static_cast<std::size_t>(cj.degree(u)) + 1, 0);
+      for (const auto& t : cj.terms()) c[static_cast<std::size_t>(coefficient_polynomial::unpack(t.key)[static_cast<std::size_t>(u)])] = t.c;
+      g = g.is_zero() ? rational_polynomial(c) : gcd(g, rational_polynomial(c));
+      if (g.degree() == 0) return g;
+    }
+    return g;
+  };
+  const rational_polynomial c1 = content(e1);
+  if (c1.degree() <= 0) return false;
+  const rational_polynomial c2 = content(e2);
+  return c2.degree() > 0 && gcd(c1, c2).degree() > 0;
+}
+
+// R with every factor of q that it holds more than once reduced to one copy: known multiple roots
+// (the caller's spurious points) cost the square-free certificate otherwise.
+rational_polynomial reduce_known_multiple_factors(rational_polynomial r, const rational_polynomial& q) {
+  if (q.degree() < 1) return r;
+  for (;;) {
+    const rational_polynomial g = gcd(r, q);
+    if (g.degree() < 1) return r;
+    const rational_polynomial repeated = gcd(quotient(r, g), g);  // factors of q still in r after one copy
+    if (repeated.degree() < 1) return r;
+    r = quotient(r, repeated);
+  }
 }
 
 }  // namespace
 
-system_result solve_two_equations(const GiNaC::ex& e1, const GiNaC::ex& e2, const GiNaC::symbol& u,
-                                  const GiNaC::symbol& v, int digits) {
+system_result solve_two_equations(const coefficient_polynomial& e1, const coefficient_polynomial& e2, int u, int v,
+                                  int digits, solve_method method, const rational_polynomial& multiple_factor) {
   if (digits < 10) throw std::invalid_argument("at least 10 digits");
   system_result result;
-  using clock = std::chrono::steady_clock;
-  const auto start = clock::now();
-  const GiNaC::ex p1 = e1.expand(), p2 = e2.expand();
-  if (p1.is_zero() || p2.is_zero()) {
+  const auto start = clock_type::now();
+  if (e1.is_zero() || e2.is_zero()) {
     result.degenerate = true;
     result.note = "a condition vanishes identically: the coefficients are not determined";
     return result;
   }
-  if (const GiNaC::ex g = GiNaC::gcd(p1, p2); g.degree(u) > 0 || g.degree(v) > 0) {
+  const rational_polynomial ru = resultant_in(e1, e2, v, u);
+  if (ru.is_zero() || share_factor_in_u(e1, e2, u, v)) {
     result.degenerate = true;
     result.note = "the two conditions share a factor: their solutions form a curve, not isolated points";
     return result;
   }
-  const rational_polynomial ru = resultant_in(p1, p2, v, u), rv = resultant_in(p1, p2, u, v);
-  if (ru.is_zero() || rv.is_zero()) {
-    result.degenerate = true;
-    result.note = "the two conditions share a factor: their solutions form a curve, not isolated points";
-    return result;
-  }
-  const auto eliminated = clock::now();
-  result.seconds_elimination = std::chrono::duration<double>(eliminated - start).count();
   result.resultant_degree_u = ru.degree();
-  result.resultant_degree_v = rv.degree();
-  const cln::cl_RA width = ten_to_minus(digits + 10);
-  const auto us = real_roots(ru, width), vs = real_roots(rv, width);
-  const bivariate b1(p1, u, v), b2(p2, u, v);
-  // A true solution leaves |e| ≲ deg·|terms|·width; any other pair leaves a fixed nonzero algebraic
-  // number, far above 10^-(digits+3) of the size of the terms.
-  const cln::cl_RA tolerance = ten_to_minus(digits + 3);
-  for (const auto& x : us) {
-    const auto f1 = b1.at_u(x), f2 = b2.at_u(x);
-    for (const auto& y : vs) {
-      const cln::cl_RA ay = cln::max(cln::cl_RA(1), cln::abs(y));
-      const cln::cl_RA r1 = cln::abs(bivariate::horner(f1.value, y)), r2 = cln::abs(bivariate::horner(f2.value, y));
-      if (r1 <= tolerance * (1 + bivariate::horner(f1.magnitude, ay)) &&
-          r2 <= tolerance * (1 + bivariate::horner(f2.magnitude, ay)))
-        result.points.push_back({x, y, cln::max(r1, r2)});
-    }
+  result.seconds_elimination = since(start);
+  const auto roots_start = clock_type::now();
+  const eliminant_roots in_u = isolate(reduce_known_multiple_factors(ru, multiple_factor));
+  std::optional<std::vector<real_point>> points;
+  std::vector<cln::cl_RA> multiple_roots;
+  if (method == solve_method::automatic) points = back_substitute(e1, e2, u, v, in_u, digits, multiple_roots);
+  if (!points) {  // the second resultant is timed with the pairing it serves
+    result.paired = true;
+    points = pair_roots(e1, e2, u, v, polished_roots(in_u, digits), digits);
+  } else if (!multiple_roots.empty()) {
+    result.multiple_roots_paired = static_cast<int>(multiple_roots.size());
+    for (auto& p : pair_roots(e1, e2, u, v, multiple_roots, digits)) points->push_back(std::move(p));
   }
-  result.seconds_roots = std::chrono::duration<double>(clock::now() - eliminated).count();
+  result.points = std::move(*points);
+  std::sort(result.points.begin(), result.points.end(),
+            [](const real_point& a, const real_point& b) { return a.u != b.u ? a.u < b.u : a.v < b.v; });
+  result.seconds_roots = since(roots_start);
   return result;
 }
 

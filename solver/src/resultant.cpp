@@ -10,26 +10,25 @@ namespace {
 // coefficient[j][i] of v^j u^i, integers after clearing denominators.
 using bivariate_integer = std::vector<std::vector<cln::cl_I>>;
 
-bivariate_integer integer_coefficients(const GiNaC::ex& e, const GiNaC::symbol& v, const GiNaC::symbol& u) {
-  const GiNaC::ex p = e.expand();
-  if (!p.is_polynomial(GiNaC::lst{u, v})) throw std::invalid_argument("resultant: not a polynomial");
-  std::vector<std::vector<cln::cl_RA>> r(static_cast<std::size_t>(std::max(p.degree(v), 0)) + 1);
-  cln::cl_I denominators = 1;
-  for (int j = 0; j <= p.degree(v); ++j) {
-    const GiNaC::ex pj = p.coeff(v, j);
-    auto& row = r[static_cast<std::size_t>(j)];
-    row.assign(static_cast<std::size_t>(std::max(pj.degree(u), 0)) + 1, 0);
-    for (int i = 0; i <= pj.degree(u); ++i) {
-      const GiNaC::ex c = pj.coeff(u, i);
-      if (!GiNaC::is_a<GiNaC::numeric>(c) || !GiNaC::ex_to<GiNaC::numeric>(c).is_rational())
-        throw std::invalid_argument("resultant: coefficients must be rational");
-      row[static_cast<std::size_t>(i)] = cln::the<cln::cl_RA>(GiNaC::ex_to<GiNaC::numeric>(c).to_cl_N());
-      denominators = cln::lcm(denominators, cln::denominator(row[static_cast<std::size_t>(i)]));
-    }
+bivariate_integer integer_coefficients(const lie::coefficient_polynomial& p, int v, int u) {
+  for (const auto& t : p.terms()) {
+    const auto e = lie::coefficient_polynomial::unpack(t.key);
+    for (int k = 0; k < lie::coefficient_polynomial::max_unknowns; ++k)
+      if (k != u && k != v && e[static_cast<std::size_t>(k)] != 0)
+        throw std::invalid_argument("resultant: a third unknown appears");
   }
-  bivariate_integer out(r.size());
-  for (std::size_t j = 0; j < r.size(); ++j)
-    for (const auto& c : r[j]) out[j].push_back(cln::the<cln::cl_I>(c * denominators));
+  bivariate_integer out(static_cast<std::size_t>(std::max(p.degree(v), 0)) + 1);
+  cln::cl_I denominators = 1;
+  for (const auto& t : p.terms()) denominators = cln::lcm(denominators, cln::denominator(t.c));
+  for (const auto& t : p.terms()) {
+    const auto e = lie::coefficient_polynomial::unpack(t.key);
+    auto& row = out[static_cast<std::size_t>(e[static_cast<std::size_t>(v)])];
+    const auto i = static_cast<std::size_t>(e[static_cast<std::size_t>(u)]);
+    if (row.size() <= i) row.resize(i + 1, 0);
+    row[i] = cln::the<cln::cl_I>(t.c * denominators);
+  }
+  for (auto& row : out)
+    if (row.empty()) row.push_back(0);
   return out;
 }
 
@@ -84,8 +83,8 @@ cln::cl_I bareiss_determinant(std::vector<std::vector<cln::cl_I>> m) {
   return sign > 0 ? m[n - 1][n - 1] : -m[n - 1][n - 1];
 }
 
-rational_polynomial resultant_in(const GiNaC::ex& p, const GiNaC::ex& q, const GiNaC::symbol& eliminated,
-                                 const GiNaC::symbol& kept) {
+rational_polynomial resultant_in(const lie::coefficient_polynomial& p, const lie::coefficient_polynomial& q, int eliminated,
+                                 int kept) {
   const auto a = integer_coefficients(p, eliminated, kept), b = integer_coefficients(q, eliminated, kept);
   const std::size_t m = a.size() - 1, n = b.size() - 1;
   if (m == 0 && n == 0) return rational_polynomial({1});

@@ -4,6 +4,9 @@
 #define BOOST_TEST_MODULE modified_hamiltonian
 #include <boost/test/unit_test.hpp>
 
+#include <array>
+#include <map>
+
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/lie/poisson_bracket.hpp"
 #include "rotlie/lie/theorems.hpp"
@@ -98,4 +101,53 @@ BOOST_AUTO_TEST_CASE(orders_outside_the_range_are_refused) {
   BOOST_CHECK_THROW(bch::compute_modified_hamiltonian(st, 0), std::invalid_argument);
   BOOST_CHECK_THROW(bch::compute_modified_hamiltonian(st, bch::max_remainder_order + 1), std::invalid_argument);
   BOOST_CHECK_THROW(bch::compute_modified_hamiltonian({}, 3), std::invalid_argument);
+}
+
+// The exact path (coefficient_polynomial, no GiNaC) against the GiNaC path, coefficient by
+// coefficient, for every named scheme in two permutations, on water's rational moments.
+BOOST_AUTO_TEST_CASE(exact_path_equals_the_ginac_path) {
+  const std::array<cln::cl_RA, 3> w{cln::cl_RA(29376) / 10220, cln::cl_RA(29376) / 19187, 1};
+  const bch::inverse_inertia wg{GiNaC::numeric(cln::cl_N(w[0])), GiNaC::numeric(cln::cl_N(w[1])), GiNaC::numeric(cln::cl_N(w[2]))};
+  for (const auto& s : bch::named_schemes())
+    for (const std::string perm : {"ABC", "CAB"}) {
+      const auto layout = bch::layout_scheme(s.word, s.split, perm);
+      const auto c = bch::make_coefficients(layout);
+      const auto symbolic = bch::compute_modified_hamiltonian(bch::stage_elements(layout, c, wg), 5);
+      const auto exact = bch::compute_exact_modified_hamiltonian(layout, w, 5);
+      BOOST_TEST_CONTEXT(std::string(s.name) + " " + perm) {
+        BOOST_REQUIRE(exact.unknowns == layout.free_coefficients);
+        for (int order = 1; order <= 5; ++order) {
+          BOOST_TEST(exact.remainder[static_cast<std::size_t>(order)].size() ==
+                     symbolic.remainder[static_cast<std::size_t>(order)].size());
+          for (const auto& [m, q] : symbolic.remainder[static_cast<std::size_t>(order)].terms()) {
+            ex converted = 0;
+            const auto coefficient = exact.remainder[static_cast<std::size_t>(order)].coefficient(m);
+            for (const auto& t : coefficient.terms()) {
+              const auto e = lie::coefficient_polynomial::unpack(t.key);
+              ex term = GiNaC::numeric(cln::cl_N(t.c));
+              for (std::size_t k = 0; k < exact.unknowns.size(); ++k) term *= GiNaC::pow(c.free.at(exact.unknowns[k]), e[k]);
+              converted += term;
+            }
+            BOOST_TEST((converted - q).expand().is_zero(), "order " << order << " " << lie::to_string(m));
+          }
+        }
+      }
+    }
+}
+
+// The double-precision path at a numeric point equals the exact path evaluated there.
+BOOST_AUTO_TEST_CASE(numeric_path_equals_the_exact_path_at_a_point) {
+  const std::array<cln::cl_RA, 3> w{cln::cl_RA(29376) / 10220, cln::cl_RA(29376) / 19187, 1};
+  for (const std::string name : {"N2", "P1", "R"}) {
+    const auto s = *bch::find_named_scheme(name);
+    const auto layout = bch::layout_scheme(s.word, s.split, "BAC");
+    const auto exact = bch::compute_exact_modified_hamiltonian(layout, w, 5);
+    std::vector<double> x;
+    for (std::size_t k = 0; k < exact.unknowns.size(); ++k) x.push_back(0.1 + 0.07 * static_cast<double>(k));
+    std::map<std::string, double> values;
+    for (const auto& [coefficient, expression] : exact.coefficient_values) values[coefficient] = expression.evaluate(x);
+    const auto numeric = bch::compute_numeric_modified_hamiltonian(layout, w, values, 5);
+    for (const auto& [m, q] : exact.remainder[5].terms())
+      BOOST_TEST(numeric[5].coefficient(m) == q.evaluate(x), boost::test_tools::tolerance(1e-11));
+  }
 }

@@ -6,6 +6,8 @@
 #include <random>
 
 #include "random_seed.hpp"
+#include <cln/rational_io.h>
+
 #include "rotlie/solver/rational_polynomial.hpp"
 
 using namespace rotlie::solver;
@@ -60,6 +62,29 @@ BOOST_AUTO_TEST_CASE(irrational_roots_to_fifty_digits) {
   const cl_RA x = refine_root(wallis, rw[0], w);
   BOOST_TEST(cln::double_approx(cln::abs(x - cl_RA(20945514815423265LL) / cl_RA(10000000000000000LL))) < 1e-15);
   BOOST_TEST(cln::double_approx(cln::abs(wallis(x))) < 1e-48);
+}
+
+// The Newton polisher against exact bisection (a second method): the same root to the width asked,
+// on random integer polynomials of degree up to 40 whose real roots are isolated first.
+BOOST_AUTO_TEST_CASE(polisher_agrees_with_exact_bisection) {
+  std::mt19937_64 rng(rotlie::test::test_seed("polisher_agrees_with_exact_bisection"));
+  std::uniform_int_distribution<long> coefficient(-1000000, 1000000);
+  const int digits = 40;
+  const cl_RA width = cln::recip(cln::expt(cl_RA(10), digits + 10));
+  int roots_checked = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<cl_RA> c;
+    for (int i = 0; i <= 5 + 2 * trial - trial / 2; ++i) c.push_back(coefficient(rng));
+    const auto p = rational_polynomial(c).square_free();
+    const root_polisher polisher(p, digits);
+    for (const auto& r : isolate_real_roots_of_square_free(p)) {
+      const cl_RA fast = polisher.polish(r), slow = refine_root(p, r, width);
+      BOOST_TEST(cln::abs(fast - slow) <= width);
+      ++roots_checked;
+    }
+    BOOST_TEST(polisher.uncertified() == 0);
+  }
+  BOOST_TEST(roots_checked > 20);
 }
 
 BOOST_AUTO_TEST_CASE(no_real_roots_and_refusals) {

@@ -4,9 +4,13 @@
 // polynomials in the free stage coefficients and in the inverse moments of inertia.
 #include <ginac/ginac.h>
 
+#include <array>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "rotlie/bch/scheme_word.hpp"
+#include "rotlie/lie/coefficient_polynomial.hpp"
 #include "rotlie/lie/coefficient_ring_ginac.hpp"
 #include "rotlie/lie/polynomial.hpp"
 
@@ -50,6 +54,32 @@ inline constexpr int max_remainder_order = 9;
 /// Palindromic stage lists use nested symmetric BCH; others nested BCH from the left
 /// (the first stage acts first). Throws std::invalid_argument for order < 1 or > max_remainder_order.
 modified_hamiltonian compute_modified_hamiltonian(const std::vector<stage_element>& stages, int max_order);
+
+/// The same expansion for a body with rational moments, without GiNaC: every coefficient is an exact
+/// polynomial in the free stage coefficients, which are the unknowns x_0, x_1, … in the order of
+/// layout.free_coefficients (the eliminated ones solve the first-order conditions). This is the
+/// solver's input: the same H_Rk as compute_modified_hamiltonian, in microseconds per order.
+using exact_polynomial = lie::polynomial<lie::coefficient_polynomial>;
+struct exact_modified_hamiltonian {
+  int max_order = 0;
+  std::vector<std::string> unknowns;           ///< names of x_0, x_1, …
+  std::vector<exact_polynomial> remainder;     ///< remainder[k] = H_Rk
+  std::map<std::string, lie::coefficient_polynomial> coefficient_values;  ///< every stage coefficient's name → its value
+};
+/// w = (1/I1, 1/I2, 1/I3). Throws std::invalid_argument as compute_modified_hamiltonian.
+exact_modified_hamiltonian compute_exact_modified_hamiltonian(const scheme_layout& layout,
+                                                              const std::array<cln::cl_RA, 3>& w, int max_order);
+
+/// The same at numeric stage-coefficient values (name → value), in double: the analytic remainder of
+/// a solution, where three digits are all that is asked and the exact expansion would cost more.
+std::vector<lie::polynomial<double>> compute_numeric_modified_hamiltonian(const scheme_layout& layout,
+                                                                          const std::array<cln::cl_RA, 3>& w,
+                                                                          const std::map<std::string, double>& values,
+                                                                          int max_order);
+
+/// part_hamiltonian with rational inverse moments.
+lie::polynomial<cln::cl_RA> rational_part_hamiltonian(char letter, splitting split, const std::string& permutation,
+                                                     const std::array<cln::cl_RA, 3>& w);
 
 /// Σ λ_pqr β_pqr of eq. (28) for a polynomial with even exponents (eq. 63 at order 5): Theorem 2
 /// says it vanishes on odd orders ≥ 3.

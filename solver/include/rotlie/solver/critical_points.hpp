@@ -3,9 +3,10 @@
 // with H_R3 = 0). By Lagrange, ∇f, ∇g1, ∇g2 are dependent there, so the points solve
 // g1 = g2 = det[∇f; ∇g1; ∇g2] = 0. One condition is linear in some unknown z = −B/A; substituting
 // it leaves two equations in two unknowns for solve_two_equations, and every point found is
-// checked back in all three equations, exactly.
+// checked back in all three equations.
 #include <cln/rational.h>
-#include <ginac/ginac.h>
+
+#include "rotlie/lie/coefficient_polynomial.hpp"
 
 #include <array>
 #include <string>
@@ -14,7 +15,7 @@
 namespace rotlie::solver {
 
 struct critical_point {
-  std::array<cln::cl_RA, 3> values;  ///< in the order of the unknowns given, within 10^-(digits+10)
+  std::array<cln::cl_RA, 3> values;  ///< x_0, x_1, x_2, within 10^-(digits+10)
   cln::cl_RA residual;               ///< max |g1|, |g2|, |det| relative to the size of their terms
 };
 
@@ -22,15 +23,16 @@ struct critical_result {
   bool degenerate = false;
   std::string note;                   ///< why degenerate, or what was discarded
   std::vector<critical_point> points;  ///< sorted by the first unknown
-  std::string eliminated;              ///< the unknown solved linearly
+  int eliminated = -1;                 ///< the unknown solved linearly
   int eliminant_degree = 0;            ///< degree of the univariate resultant in the first remaining unknown
   int discarded = 0;                   ///< roots of the reduced system where the linear solve fails (A = 0)
   double seconds_elimination = 0;      ///< Lagrange determinant, substitution, resultants
   double seconds_roots = 0;            ///< isolation, refinement, pairing and the check in three unknowns
 };
 
-/// All real critical points of f restricted to g1 = g2 = 0 (rational coefficients), to `digits` digits.
-critical_result constrained_critical_points(const GiNaC::ex& f, const GiNaC::ex& g1, const GiNaC::ex& g2,
-                                            const std::array<GiNaC::symbol, 3>& unknowns, int digits);
+/// All real critical points of f restricted to g1 = g2 = 0, polynomials in the unknowns x_0, x_1, x_2
+/// with rational coefficients, to `digits` digits.
+critical_result constrained_critical_points(const lie::coefficient_polynomial& f, const lie::coefficient_polynomial& g1,
+                                            const lie::coefficient_polynomial& g2, int digits);
 
 }  // namespace rotlie::solver

@@ -2,6 +2,8 @@
 // Univariate polynomials with exact rational coefficients: Euclid, square-free part, certified
 // isolation (Descartes, with Sturm as a second method) of every real root, and refinement to any number of digits
 // by exact bisection. Nothing here is approximate until the caller rounds a root.
+#include <cln/float.h>
+#include <cln/integer.h>
 #include <cln/rational.h>
 #include <ginac/ginac.h>
 
@@ -53,5 +55,25 @@ std::vector<root_interval> isolate_real_roots_sturm(const rational_polynomial& p
 /// Shrinks an isolating interval of a square-free p by exact bisection until hi − lo ≤ width;
 /// returns the midpoint (an exact rational within width/2 of the root).
 cln::cl_RA refine_root(const rational_polynomial& square_free_p, root_interval r, const cln::cl_RA& width);
+
+/// The same result as refine_root, faster: Newton's method safeguarded by bisection in floating point
+/// of digits + 40 digits, then an exact certificate (p changes sign across x ± width/2 inside the
+/// isolating interval); exact bisection only when the certificate fails. Built once per polynomial.
+class root_polisher {
+ public:
+  root_polisher(const rational_polynomial& square_free_p, int digits);
+  /// An exact rational within width/2 = 10^-(digits+10)/2 of the root isolated by r.
+  cln::cl_RA polish(const root_interval& r) const;
+  int uncertified() const { return uncertified_; }  ///< calls that needed the exact bisection
+
+ private:
+  int sign_at(const cln::cl_RA& x) const;
+  const rational_polynomial& p_;
+  int digits_;
+  cln::cl_RA width_;
+  std::vector<cln::cl_I> integer_;  ///< p times the lcm of its denominators
+  std::vector<cln::cl_F> value_, slope_;  ///< p and p' rounded to the working precision
+  mutable int uncertified_ = 0;
+};
 
 }  // namespace rotlie::solver

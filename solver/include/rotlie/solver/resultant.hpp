@@ -4,16 +4,16 @@
 // deg + 1 integer values of the kept unknown, and the exact polynomial is rebuilt by Newton
 // interpolation. Same result as GiNaC::resultant up to a constant factor, orders of magnitude faster
 // when the entries of the Sylvester matrix are themselves polynomials of degree 10–20.
-#include <ginac/ginac.h>
+#include "rotlie/lie/coefficient_polynomial.hpp"
 
 #include "rotlie/solver/rational_polynomial.hpp"
 
 namespace rotlie::solver {
 
 /// Res_v(p, q) as a polynomial in u, scaled to integer coefficients (the scale does not move roots).
-/// Throws std::invalid_argument when p or q is not a polynomial in u, v with rational coefficients.
-rational_polynomial resultant_in(const GiNaC::ex& p, const GiNaC::ex& q, const GiNaC::symbol& eliminated,
-                                 const GiNaC::symbol& kept);
+/// p, q are polynomials in the unknowns x_eliminated and x_kept only (std::invalid_argument otherwise).
+rational_polynomial resultant_in(const lie::coefficient_polynomial& p, const lie::coefficient_polynomial& q, int eliminated,
+                                 int kept);
 
 /// Determinant of a square integer matrix (row-major), fraction-free Gaussian elimination.
 cln::cl_I bareiss_determinant(std::vector<std::vector<cln::cl_I>> m);

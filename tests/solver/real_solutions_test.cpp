@@ -1,0 +1,78 @@
+// Two equations in two unknowns: back-substitution (the fast path) against pairing (both resultants,
+// every pair tested: the second method) on every N system for water and for a near-flat body, and
+// on constructed systems with a root at infinity, a shared factor, and two solutions over one u.
+#define BOOST_TEST_MODULE real_solutions
+#include <boost/test/unit_test.hpp>
+
+#include <cln/rational_io.h>
+
+#include "rotlie/bch/modified_hamiltonian.hpp"
+#include "rotlie/lie/rigid_body.hpp"
+#include "rotlie/solver/real_solutions.hpp"
+
+using namespace rotlie;
+using lie::coefficient_polynomial;
+
+namespace {
+
+const coefficient_polynomial x = coefficient_polynomial::unknown(0), y = coefficient_polynomial::unknown(1);
+
+void same_points(const solver::system_result& a, const solver::system_result& b, const cln::cl_RA& width) {
+  BOOST_REQUIRE(a.points.size() == b.points.size());
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    BOOST_TEST(cln::abs(a.points[i].u - b.points[i].u) <= width);
+    BOOST_TEST(cln::abs(a.points[i].v - b.points[i].v) <= width);
+  }
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(back_substitution_equals_pairing_on_every_n_system) {
+  const int digits = 40;
+  const cln::cl_RA width = cln::recip(cln::expt(cln::cl_RA(10), digits + 8));
+  int systems = 0, back_substituted = 0;
+  for (const std::string body_name : {"water", "1/3,0.7,1"}) {
+    const auto body = lie::parse_moments(body_name);
+    const std::array<cln::cl_RA, 3> w{cln::recip(body.I[0]), cln::recip(body.I[1]), cln::recip(body.I[2])};
+    for (int n = 1; n <= 7; ++n)
+      for (const auto& perm : bch::permutation_names()) {
+        const auto s = *bch::find_named_scheme("N" + std::to_string(n));
+        const auto k = bch::compute_exact_modified_hamiltonian(bch::layout_scheme(s.word, s.split, perm), w, 3);
+        const auto p1 = k.remainder[3].coefficient(lie::monomial(2, 2, 0)), p2 = k.remainder[3].coefficient(lie::monomial(2, 0, 2));
+        const auto fast = solver::solve_two_equations(p1, p2, 0, 1, digits);
+        const auto paired = solver::solve_two_equations(p1, p2, 0, 1, digits, solver::solve_method::pairing);
+        BOOST_TEST_CONTEXT(body_name << " N" << n << " " << perm) { same_points(fast, paired, width); }
+        ++systems;
+        back_substituted += fast.paired ? 0 : 1;
+      }
+  }
+  BOOST_TEST(systems == 84);
+  BOOST_TEST(back_substituted == systems);  // no system needs the full fallback
+}
+
+BOOST_AUTO_TEST_CASE(root_at_infinity_is_not_a_solution) {
+  // x y − 1 = 0 and x y + x − 2 = 0: Res_y ∝ x(x − 1); x = 0 is a common zero of both leading
+  // coefficients (a point at infinity), x = 1 gives the one solution (1, 1).
+  const auto e1 = x * y - 1, e2 = x * y + x - 2;
+  const auto r = solver::solve_two_equations(e1, e2, 0, 1, 20);
+  BOOST_TEST(!r.paired);
+  BOOST_REQUIRE(r.points.size() == 1u);
+  BOOST_TEST(r.points[0].u == 1);
+  BOOST_TEST(cln::double_approx(cln::abs(r.points[0].v - 1)) < 1e-25);
+}
+
+BOOST_AUTO_TEST_CASE(two_solutions_over_one_u_are_paired) {
+  // y² = x and x = 4: (4, ±2) share u = 4, a double root of the eliminant in x.
+  const auto r = solver::solve_two_equations(y * y - x, x - 4, 0, 1, 20);
+  BOOST_TEST(!r.paired);
+  BOOST_TEST(r.multiple_roots_paired == 1);
+  BOOST_REQUIRE(r.points.size() == 2u);
+  BOOST_TEST(cln::double_approx(r.points[0].v) == -2.0, boost::test_tools::tolerance(1e-20));
+  BOOST_TEST(cln::double_approx(r.points[1].v) == 2.0, boost::test_tools::tolerance(1e-20));
+}
+
+BOOST_AUTO_TEST_CASE(shared_factors_are_degenerate) {
+  BOOST_TEST(solver::solve_two_equations((x - y) * (x + 1), (x - y) * (y - 2), 0, 1, 20).degenerate);
+  BOOST_TEST(solver::solve_two_equations((x - 3) * (y + 1), (x - 3) * (y - 2), 0, 1, 20).degenerate);  // free of y
+  BOOST_TEST(!solver::solve_two_equations(x * x + y * y - 2, x - y, 0, 1, 20).degenerate);
+}
