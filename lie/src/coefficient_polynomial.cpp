@@ -1,5 +1,7 @@
 #include "rotlie/lie/coefficient_polynomial.hpp"
 
+#include <cln/integer.h>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -88,6 +90,17 @@ coefficient_polynomial coefficient_polynomial::substitute(int k, const cln::cl_R
   coefficient_polynomial p;
   p.combine_sorted(std::move(out));
   return p;
+}
+
+coefficient_polynomial coefficient_polynomial::primitive_integer() const {
+  cln::cl_I denominators = 1, numerators = 0;
+  for (const auto& t : terms_) {
+    denominators = cln::lcm(denominators, cln::denominator(t.c));
+    numerators = cln::gcd(numerators, cln::numerator(t.c));
+  }
+  coefficient_polynomial out(*this);
+  if (!terms_.empty()) out *= cln::cl_RA(denominators) / numerators;
+  return out;
 }
 
 cln::cl_RA coefficient_polynomial::operator()(const std::vector<cln::cl_RA>& x) const {

@@ -31,18 +31,17 @@ coefficient_polynomial determinant3(const coefficient_polynomial& f, const coeff
   return m[0][0] * minor(1, 2) - m[0][1] * minor(0, 2) + m[0][2] * minor(0, 1);
 }
 
-// p(z = −B/A) · A^deg_z(p): a polynomial in the remaining unknowns.
+// p(z = −B/A) · A^deg_z(p): a polynomial in the remaining unknowns, by Horner in −B,
+// L_d = p_d, L_k = L_{k+1}·(−B) + p_k·A^(d−k), so that only the small −B multiplies the growing sum.
 coefficient_polynomial substitute_linear(const coefficient_polynomial& p, int z, const coefficient_polynomial& A,
                                          const coefficient_polynomial& B) {
   const int d = p.degree(z);
-  std::vector<coefficient_polynomial> a_powers{coefficient_polynomial(1)}, minus_b_powers{coefficient_polynomial(1)};
-  for (int k = 1; k <= d; ++k) {
-    a_powers.push_back(a_powers.back() * A);
-    minus_b_powers.push_back(minus_b_powers.back() * (-B));
+  const coefficient_polynomial minus_b = -B;
+  coefficient_polynomial a_power(1), out = p.coefficient(z, d);
+  for (int k = d - 1; k >= 0; --k) {
+    a_power = a_power * A;
+    out = out * minus_b + p.coefficient(z, k) * a_power;
   }
-  coefficient_polynomial out;
-  for (int k = 0; k <= d; ++k)
-    out += p.coefficient(z, k) * minus_b_powers[static_cast<std::size_t>(k)] * a_powers[static_cast<std::size_t>(d - k)];
   return out;
 }
 
@@ -135,12 +134,14 @@ class relative_value {
 
 }  // namespace
 
-critical_result constrained_critical_points(const coefficient_polynomial& f, const coefficient_polynomial& e1,
-                                            const coefficient_polynomial& e2, int digits) {
+critical_result constrained_critical_points(const coefficient_polynomial& f, const coefficient_polynomial& g1,
+                                            const coefficient_polynomial& g2, int digits) {
+  const coefficient_polynomial e1 = g1.primitive_integer(), e2 = g2.primitive_integer();
   critical_result result;
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
-  const coefficient_polynomial det = determinant3(f, e1, e2);
+  // Integer coefficients throughout (same zero sets): rational arithmetic would pay a gcd per operation.
+  const coefficient_polynomial det = determinant3(f.primitive_integer(), e1, e2).primitive_integer();
   if (e1.is_zero() || e2.is_zero() || det.is_zero()) {
     result.degenerate = true;
     result.note = "a condition or the Lagrange determinant vanishes identically";
@@ -173,8 +174,8 @@ critical_result constrained_critical_points(const coefficient_polynomial& f, con
   for (int v = 0, k = 0; v < 3; ++v)
     if (v != z) rest[static_cast<std::size_t>(k++)] = v;
   result.eliminated = z;
-  const coefficient_polynomial reduced_other = strip_common_factors(substitute_linear(other, z, A, B), A);
-  const coefficient_polynomial reduced_det = strip_common_factors(substitute_linear(det, z, A, B), A);
+  const coefficient_polynomial reduced_other = strip_common_factors(substitute_linear(other, z, A, B), A).primitive_integer();
+  const coefficient_polynomial reduced_det = strip_common_factors(substitute_linear(det, z, A, B), A).primitive_integer();
   // Where A = B = 0 both reduced equations vanish to high order: those points are multiple roots of
   // the eliminant, at the roots of Res(A, B). Kept once (then discarded below), not certified away.
   const rational_polynomial spurious =

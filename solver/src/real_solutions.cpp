@@ -7,6 +7,8 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
+#include <complex>
 #include <chrono>
 #include <optional>
 #include <stdexcept>
@@ -53,6 +55,18 @@ class bivariate {
         r.magnitude[j] = r.magnitude[j] * ax + cln::abs(c);
       }
     return r;
+  }
+  /// The degree in v at the root u* known to lie in (x − h, x + h): leading coefficients c_j(u) that
+  /// change sign (or vanish) across that interval vanish at u* and are dropped.
+  int degree_v_at_root(const cln::cl_RA& x, const cln::cl_RA& h) const {
+    const auto coefficient_at = [&](int j, const cln::cl_RA& at) {
+      cln::cl_RA s = 0;
+      for (std::size_t i = c_.size(); i-- > 0;) s = s * at + (static_cast<std::size_t>(j) < c_[i].size() ? c_[i][static_cast<std::size_t>(j)] : cln::cl_RA(0));
+      return s;
+    };
+    int d = degree_v_;
+    while (d > 0 && cln::signum(coefficient_at(d, x - h)) * cln::signum(coefficient_at(d, x + h)) <= 0) --d;
+    return d;
   }
   static cln::cl_RA horner(const std::vector<cln::cl_RA>& c, const cln::cl_RA& y) {
     cln::cl_RA s = 0;
@@ -171,6 +185,76 @@ std::vector<cln::cl_RA> polished_roots(const eliminant_roots& in_u, int digits) 
   return us;
 }
 
+// All complex roots of a univariate polynomial (exact coefficients, index = power), in double, as the
+// eigenvalues of its companion matrix: starting points only, every one is polished and checked.
+std::vector<std::complex<double>> complex_roots(const std::vector<cln::cl_RA>& exact) {
+  std::vector<double> c;
+  for (const auto& x : exact) c.push_back(cln::double_approx(x));
+  while (!c.empty() && c.back() == 0) c.pop_back();
+  if (c.size() < 2) return {};
+  const auto n = static_cast<Eigen::Index>(c.size() - 1);
+  Eigen::MatrixXd companion = Eigen::MatrixXd::Zero(n, n);
+  for (Eigen::Index i = 1; i < n; ++i) companion(i, i - 1) = 1;
+  for (Eigen::Index i = 0; i < n; ++i) companion(i, n - 1) = -c[static_cast<std::size_t>(i)] / c.back();
+  const Eigen::VectorXcd eigenvalues = companion.eigenvalues();
+  return {eigenvalues.begin(), eigenvalues.end()};
+}
+
+// Above a multiple root u0 of R (certified, exact) back-substitution's uniqueness fails: there may be
+// several common roots, or a tangency. Every real root v of e1(u0, ·) and of e2(u0, ·) is polished by
+// Newton's method in v on an equation where it is simple, and kept when both equations vanish.
+std::vector<real_point> solve_above(const bivariate& b1, const bivariate& b2, const cln::cl_RA& u0, int digits) {
+  const cln::float_format_t format = cln::float_format(digits + 30);
+  const cln::cl_RA tolerance = ten_to_minus(digits + 3);
+  const cln::cl_F converged = cln::cl_float(ten_to_minus(digits + 12), format);
+  std::array<bivariate::in_v, 2> at{b1.at_u(u0), b2.at_u(u0)};
+  // Coefficients that vanish at the exact root are zero, not tiny: else they add roots near infinity.
+  const cln::cl_RA half_width = ten_to_minus(digits + 10) / 2;
+  at[0].value.resize(static_cast<std::size_t>(b1.degree_v_at_root(u0, half_width)) + 1);
+  at[1].value.resize(static_cast<std::size_t>(b2.degree_v_at_root(u0, half_width)) + 1);
+  std::array<std::vector<cln::cl_F>, 2> value, slope;
+  for (std::size_t e = 0; e < 2; ++e) {
+    for (const auto& c : at[e].value) value[e].push_back(cln::cl_float(c, format));
+    for (std::size_t j = 1; j < value[e].size(); ++j) slope[e].push_back(value[e][j] * cln::cl_float(cln::cl_I(static_cast<long>(j)), format));
+  }
+  const auto horner = [&](const std::vector<cln::cl_F>& c, const cln::cl_F& y) {
+    cln::cl_F r = cln::cl_float(0, format);
+    for (auto it = c.rbegin(); it != c.rend(); ++it) r = r * y + *it;
+    return r;
+  };
+  std::vector<real_point> points;
+  for (std::size_t source = 0; source < 2; ++source)
+    for (const auto& z : complex_roots(at[source].value)) {
+      if (std::abs(z.imag()) > 1e-4 * (1 + std::abs(z.real()))) continue;
+      const cln::cl_F y0 = cln::cl_float(cln::rational(cln::cl_DF(z.real())), format);
+      cln::cl_F y = y0;
+      bool newton_converged = false;
+      for (int iteration = 0; iteration < 60 && !newton_converged; ++iteration) {
+        // Newton on the equation with the larger slope here: a tangency is a double root of one only.
+        const cln::cl_F s0 = slope[0].empty() ? cln::cl_float(0, format) : horner(slope[0], y);
+        const cln::cl_F s1 = slope[1].empty() ? cln::cl_float(0, format) : horner(slope[1], y);
+        const std::size_t e = cln::abs(s0) >= cln::abs(s1) ? 0 : 1;
+        const cln::cl_F s = e == 0 ? s0 : s1;
+        if (cln::zerop(s)) break;
+        const cln::cl_F step = horner(value[e], y) / s;
+        y = y - step;
+        newton_converged = cln::abs(step) <= converged * (1 + cln::abs(y));
+      }
+      // Polishing only: a start that runs away is not a root here (e.g. a point at infinity).
+      if (!newton_converged || cln::abs(y - y0) > cln::cl_float(cln::cl_RA(1) / 10000, format) * (1 + cln::abs(y0))) continue;
+      const cln::cl_RA yr = cln::rational(y);
+      const auto r1 = b1.vanishes(at[0], yr, tolerance);
+      if (!r1) continue;
+      const auto r2 = b2.vanishes(at[1], yr, tolerance);
+      if (!r2) continue;
+      const bool seen = std::any_of(points.begin(), points.end(), [&](const real_point& p) {
+        return cln::abs(p.v - yr) <= ten_to_minus(digits) * (1 + cln::abs(yr));
+      });
+      if (!seen) points.push_back({u0, yr, cln::max(*r1, *r2)});
+    }
+  return points;
+}
+
 // Back-substitution at every simple real root of the eliminant; nullopt when any root fails, so
 // that the caller falls back to pairing.
 // The multiple roots of R are set aside in `multiple_roots` for pairing.
@@ -210,28 +294,18 @@ std::optional<std::vector<real_point>> back_substitute(const coefficient_polynom
     if (at_infinity.degree() >= 1 && cln::signum(at_infinity(u0 - width / 2)) * cln::signum(at_infinity(u0 + width / 2)) <= 0)
       continue;
     const auto low_at = low.at_u(u0), other_at = other.at_u(u0);
-    std::vector<double> coefficients;
-    for (const auto& c : low_at.value) coefficients.push_back(cln::double_approx(c));
-    while (!coefficients.empty() && coefficients.back() == 0) coefficients.pop_back();
-    // Candidates: every root of low(u0, ·) (companion matrix), ordered by how well the other equation vanishes.
+    // Candidates: every root of low(u0, ·), ordered by how well the other equation vanishes.
     std::vector<std::pair<double, double>> candidates;  // (relative |other| + |imaginary part|, v)
-    if (coefficients.size() >= 2) {
-      const auto n = static_cast<Eigen::Index>(coefficients.size() - 1);
-      Eigen::MatrixXd companion = Eigen::MatrixXd::Zero(n, n);
-      for (Eigen::Index i = 1; i < n; ++i) companion(i, i - 1) = 1;
-      for (Eigen::Index i = 0; i < n; ++i) companion(i, n - 1) = -coefficients[static_cast<std::size_t>(i)] / coefficients.back();
-      const Eigen::VectorXcd eigenvalues = companion.eigenvalues();
-      for (const auto& z : eigenvalues) {
-        const double y = z.real();
-        double value = 0, size = 0;
-        for (std::size_t j = other_at.value.size(); j-- > 0;) {
-          value = value * y + cln::double_approx(other_at.value[j]);
-          size = size * std::max(1.0, std::abs(y)) + cln::double_approx(other_at.magnitude[j]);
-        }
-        candidates.push_back({std::abs(value) / (1 + size) + std::abs(z.imag()) / (1 + std::abs(y)), y});
+    for (const auto& z : complex_roots(low_at.value)) {
+      const double y = z.real();
+      double value = 0, size = 0;
+      for (std::size_t j = other_at.value.size(); j-- > 0;) {
+        value = value * y + cln::double_approx(other_at.value[j]);
+        size = size * std::max(1.0, std::abs(y)) + cln::double_approx(other_at.magnitude[j]);
       }
-      std::sort(candidates.begin(), candidates.end());
+      candidates.push_back({std::abs(value) / (1 + size) + std::abs(z.imag()) / (1 + std::abs(y)), y});
     }
+    std::sort(candidates.begin(), candidates.end());
     bool found = false;
     const cln::cl_F x0 = cln::cl_float(u0, format);
     for (std::size_t k = 0; k < std::min<std::size_t>(candidates.size(), 3) && !found; ++k) {
@@ -333,8 +407,10 @@ system_result solve_two_equations(const coefficient_polynomial& e1, const coeffi
     result.paired = true;
     points = pair_roots(e1, e2, u, v, polished_roots(in_u, digits), digits);
   } else if (!multiple_roots.empty()) {
-    result.multiple_roots_paired = static_cast<int>(multiple_roots.size());
-    for (auto& p : pair_roots(e1, e2, u, v, multiple_roots, digits)) points->push_back(std::move(p));
+    result.multiple_roots = static_cast<int>(multiple_roots.size());
+    const bivariate b1(e1, u, v), b2(e2, u, v);
+    for (const auto& u0 : multiple_roots)
+      for (auto& p : solve_above(b1, b2, u0, digits)) points->push_back(std::move(p));
   }
   result.points = std::move(*points);
   std::sort(result.points.begin(), result.points.end(),

@@ -46,6 +46,10 @@ class coefficient_polynomial {
   /// x_k ← value (exact).
   coefficient_polynomial substitute(int k, const cln::cl_RA& value) const;
 
+  /// The same zero set with coprime integer coefficients (the product by a positive rational):
+  /// integer arithmetic skips the gcd that every rational operation pays.
+  coefficient_polynomial primitive_integer() const;
+
   cln::cl_RA operator()(const std::vector<cln::cl_RA>& x) const;
   double evaluate(const std::vector<double>& x) const;
 

@@ -10,10 +10,13 @@
 // on (e1, e2) in (digits + 30)-digit floating point, and accepted when both equations vanish to
 // 10^-(digits+3) of the size of their terms, evaluated exactly.
 //
+// Above a real multiple root u* of R (several common roots, or a tangency), every real root of
+// e1(u*, ·) and of e2(u*, ·) is polished by Newton's method in v and kept when both vanish.
+//
 // Pairing (the fallback, and the second method of the tests): the resultants in each unknown, their
-// real roots certified, and every pair tested exactly. Used at the multiple real roots of R, and for
-// every root when any back-substitution fails its check. A simple root of R where both leading
-// coefficients in v vanish is a point at infinity, not a solution.
+// real roots certified, and every pair tested exactly. Used for every root when any
+// back-substitution fails its check. A simple root of R where both leading coefficients in v
+// vanish is a point at infinity, not a solution.
 #include <cln/rational.h>
 
 #include <string>
@@ -37,7 +40,7 @@ struct system_result {
   std::vector<real_point> points;  ///< sorted by u, then v
   int resultant_degree_u = 0;      ///< degree of Res_v(e1, e2)
   bool paired = false;             ///< every root paired (requested, or the fallback)
-  int multiple_roots_paired = 0;   ///< real multiple roots of R paired while the simple ones were back-substituted
+  int multiple_roots = 0;          ///< real multiple roots of R, each solved above by solve_above (below)
   double seconds_elimination = 0;  ///< common-factor check and resultant(s)
   double seconds_roots = 0;        ///< isolation, refinement, back-substitution or pairing, checks
 };
