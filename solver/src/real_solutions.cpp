@@ -3,7 +3,6 @@
 #include <cln/float.h>
 #include <cln/integer.h>
 #include <cln/real.h>
-#include <ginac/ginac.h>
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -120,8 +119,8 @@ std::vector<cln::cl_F> powers_of(const cln::cl_F& x, int degree) {
   return p;
 }
 
-// Real roots of the eliminant, isolated exactly. The square-free part comes from GiNaC's gcd
-// (heuristic integer gcd) when the cheap modular certificate fails; the repeated part is kept (its
+// Real roots of the eliminant, isolated exactly. When the cheap modular certificate of
+// square-freeness fails, gcd(R, R') splits R into its square-free part and its repeated part (whose
 // roots are where back-substitution's uniqueness argument does not hold).
 struct eliminant_roots {
   rational_polynomial square_free;
@@ -129,27 +128,15 @@ struct eliminant_roots {
   std::vector<root_interval> intervals;
 };
 
-GiNaC::ex as_ex(const rational_polynomial& p, const GiNaC::symbol& x) {
-  GiNaC::ex r = 0;
-  for (std::size_t i = 0; i < p.coefficients().size(); ++i)
-    r += GiNaC::numeric(cln::cl_N(p.coefficients()[i])) * GiNaC::pow(x, static_cast<int>(i));
-  return r;
-}
-
 eliminant_roots isolate(const rational_polynomial& eliminant) {
   eliminant_roots out;
   out.multiple = rational_polynomial({1});
   if (square_free_certified_mod_prime(eliminant)) {
     out.square_free = eliminant;
   } else {
-    const GiNaC::symbol x("x");
-    const GiNaC::ex r = as_ex(eliminant, x);
-    const GiNaC::ex g = GiNaC::gcd(r, r.diff(x));
-    out.square_free = rational_polynomial::from_ex(GiNaC::quo(r, g, x), x);
-    if (!GiNaC::is_a<GiNaC::numeric>(g)) {
-      const GiNaC::ex h = GiNaC::gcd(g, g.diff(x));
-      out.multiple = rational_polynomial::from_ex(GiNaC::quo(g, h, x), x);
-    }
+    const rational_polynomial g = modular_gcd(eliminant, eliminant.derivative());
+    out.square_free = quotient(eliminant, g);
+    if (g.degree() >= 1) out.multiple = quotient(g, modular_gcd(g, g.derivative()));
   }
   out.intervals = isolate_real_roots_of_square_free(out.square_free);
   return out;

@@ -2,6 +2,7 @@
 
 #include <cln/integer.h>
 
+#include <optional>
 #include <stdexcept>
 
 namespace rotlie::solver {
@@ -60,6 +61,33 @@ std::vector<std::vector<cln::cl_I>> sylvester(const std::vector<cln::cl_I>& a, c
   return s;
 }
 
+// Res(a, b) of univariate integer polynomials with formal degrees m = a.size() − 1, n = b.size() − 1,
+// in the Sylvester convention (n rows of a first): α^n Π b(ξ) over the roots ξ of a, α = lc(a).
+// With b = q a + r, b(ξ) = r(ξ), so Res(a, b) = α^(n − deg r) Res(a, r): one division and an
+// (m + deg r)-square determinant instead of (m + n)-square. nullopt when the lower-degree
+// polynomial's leading coefficient vanishes (the caller picks another point).
+std::optional<cln::cl_RA> resultant_at(const std::vector<cln::cl_I>& a, const std::vector<cln::cl_I>& b) {
+  const std::size_t m = a.size() - 1, n = b.size() - 1;
+  if (m > n) {  // Res(a, b) = (−1)^(mn) Res(b, a)
+    const auto swapped = resultant_at(b, a);
+    if (!swapped) return std::nullopt;
+    return (m * n) % 2 == 0 ? *swapped : -*swapped;
+  }
+  const cln::cl_I alpha = a.back();
+  if (cln::zerop(alpha)) return std::nullopt;
+  if (m == 0) return cln::expt(cln::cl_RA(alpha), static_cast<int>(n));
+  const std::vector<cln::cl_RA> ra(a.begin(), a.end()), rb(b.begin(), b.end());
+  const rational_polynomial r = remainder(rational_polynomial(rb), rational_polynomial(ra));
+  if (r.is_zero()) return cln::cl_RA(0);
+  cln::cl_I denominators = 1;
+  for (const auto& c : r.coefficients()) denominators = cln::lcm(denominators, cln::denominator(c));
+  std::vector<cln::cl_I> integer_r;
+  for (const auto& c : r.coefficients()) integer_r.push_back(cln::the<cln::cl_I>(c * denominators));
+  // Res(a, D r) = D^m Res(a, r)
+  const cln::cl_RA small = bareiss_determinant(sylvester(a, integer_r)) / cln::expt(cln::cl_RA(denominators), static_cast<int>(m));
+  return cln::expt(cln::cl_RA(alpha), static_cast<int>(n) - r.degree()) * small;
+}
+
 }  // namespace
 
 cln::cl_I bareiss_determinant(std::vector<std::vector<cln::cl_I>> m) {
@@ -91,9 +119,11 @@ rational_polynomial resultant_in(const lie::coefficient_polynomial& p, const lie
   // Each of the n rows of a has entries of degree ≤ deg_u a, each of the m rows of b ≤ deg_u b.
   const int bound = static_cast<int>(n) * degree_in_u(a) + static_cast<int>(m) * degree_in_u(b);
   std::vector<cln::cl_RA> xs, divided;  // Newton's divided differences, built incrementally
-  for (int k = 0; k <= bound; ++k) {
+  for (int k = 0; static_cast<int>(xs.size()) <= bound; ++k) {
     const cln::cl_I x = (k % 2 == 0) ? cln::cl_I(k / 2) : cln::cl_I(-(k + 1) / 2);  // 0, −1, 1, −2, 2, …
-    cln::cl_RA y = bareiss_determinant(sylvester(at_u(a, x), at_u(b, x)));
+    const auto value = resultant_at(at_u(a, x), at_u(b, x));
+    if (!value) continue;  // the lower-degree leading coefficient vanishes here: another point serves
+    cln::cl_RA y = *value;
     for (std::size_t i = 0; i < xs.size(); ++i) y = (y - divided[i]) / (x - xs[i]);
     xs.push_back(x);
     divided.push_back(y);

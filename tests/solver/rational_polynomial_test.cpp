@@ -87,6 +87,33 @@ BOOST_AUTO_TEST_CASE(polisher_agrees_with_exact_bisection) {
   BOOST_TEST(roots_checked > 20);
 }
 
+// The modular gcd against Euclid over Q (a second method), on products with a known common factor
+// with large coefficients and on coprime pairs.
+BOOST_AUTO_TEST_CASE(modular_gcd_agrees_with_euclid) {
+  std::mt19937_64 rng(rotlie::test::test_seed("modular_gcd_agrees_with_euclid"));
+  std::uniform_int_distribution<long> coefficient(-1000000000, 1000000000);
+  const auto random_polynomial = [&](int degree) {
+    std::vector<cl_RA> c;
+    for (int i = 0; i <= degree; ++i) c.push_back(cl_RA(coefficient(rng)) / (1 + (coefficient(rng) & 1023)));
+    if (cln::zerop(c.back())) c.back() = 1;
+    return rational_polynomial(c);
+  };
+  const auto times = [](const rational_polynomial& a, const rational_polynomial& b) {
+    std::vector<cl_RA> c(a.coefficients().size() + b.coefficients().size() - 1, 0);
+    for (std::size_t i = 0; i < a.coefficients().size(); ++i)
+      for (std::size_t j = 0; j < b.coefficients().size(); ++j) c[i + j] = c[i + j] + a.coefficients()[i] * b.coefficients()[j];
+    return rational_polynomial(c);
+  };
+  for (int trial = 0; trial < 12; ++trial) {
+    const auto common = random_polynomial(1 + trial % 5), f = random_polynomial(3 + trial), g = random_polynomial(2 + trial / 2);
+    const auto a = times(times(common, common), f), b = times(common, g);
+    const auto fast = modular_gcd(a, b), slow = gcd(a, b);
+    BOOST_TEST(fast.degree() == slow.degree());
+    BOOST_TEST((fast.coefficients() == slow.coefficients()));
+    BOOST_TEST(modular_gcd(f, g).degree() == gcd(f, g).degree());
+  }
+}
+
 BOOST_AUTO_TEST_CASE(no_real_roots_and_refusals) {
   BOOST_TEST(isolate_real_roots(rational_polynomial({1, 0, 1})).empty());  // x² + 1
   BOOST_TEST(isolate_real_roots(rational_polynomial({5})).empty());

@@ -35,6 +35,11 @@ class rational_polynomial {
   std::vector<cln::cl_RA> c_;
 };
 
+/// gcd(a, b) over Q, monic (modular_gcd.cpp): images modulo word-size primes, Chinese remaindering,
+/// rational reconstruction, proved by exact division. The same result as gcd, without the growth of
+/// Euclid's remainders over Q at high degree.
+rational_polynomial modular_gcd(const rational_polynomial& a, const rational_polynomial& b);
+
 /// True when gcd(p, p') = 1 modulo 2^61 − 1 with the degree kept: then p is square-free over Q.
 /// False means "no certificate" (p may still be square-free).
 bool square_free_certified_mod_prime(const rational_polynomial& p);
