@@ -11,6 +11,7 @@
 #include <chrono>
 #include <optional>
 #include <stdexcept>
+#include <type_traits>
 
 #include "rotlie/solver/rational_polynomial.hpp"
 #include "rotlie/solver/resultant.hpp"
@@ -23,33 +24,34 @@ using clock_type = std::chrono::steady_clock;
 double since(clock_type::time_point t) { return std::chrono::duration<double>(clock_type::now() - t).count(); }
 cln::cl_RA ten_to_minus(int n) { return cln::recip(cln::expt(cln::cl_RA(10), n)); }
 
-// A bivariate polynomial as rows c[i][j] of u^i v^j, evaluated exactly: first in u (once per root u),
-// then in v by Horner.
-class bivariate {
+// A bivariate polynomial as rows c[i][j] of u^i v^j, evaluated first in u (once per root u), then in v
+// by Horner: exactly (T = cl_RA) or in floating point of a fixed precision (T = cl_F).
+template <class T>
+class bivariate_in {
  public:
-  bivariate(const coefficient_polynomial& p, int u, int v) {
+  bivariate_in(const coefficient_polynomial& p, int u, int v, const cln::float_format_t& format = cln::float_format_t(0))
+      : zero_(convert(0, format)), one_(convert(1, format)) {
     for (const auto& t : p.terms()) {
       const auto e = coefficient_polynomial::unpack(t.key);
       const auto i = static_cast<std::size_t>(e[static_cast<std::size_t>(u)]);
       const auto j = static_cast<std::size_t>(e[static_cast<std::size_t>(v)]);
       if (c_.size() <= i) c_.resize(i + 1);
-      if (c_[i].size() <= j) c_[i].resize(j + 1, 0);
-      c_[i][j] = t.c;
+      if (c_[i].size() <= j) c_[i].resize(j + 1, zero_);
+      c_[i][j] = convert(t.c, format);
       degree_v_ = std::max(degree_v_, static_cast<int>(j));
     }
   }
   int degree_v() const { return degree_v_; }
   /// (value, magnitude) at u fixed, as polynomials in v: value Σ c_ij u^i v^j and Σ |c_ij| max(1,|u|)^i.
   struct in_v {
-    std::vector<cln::cl_RA> value, magnitude;
+    std::vector<T> value, magnitude;
   };
-  in_v at_u(const cln::cl_RA& x) const {
-    in_v r{std::vector<cln::cl_RA>(static_cast<std::size_t>(degree_v_) + 1, 0),
-           std::vector<cln::cl_RA>(static_cast<std::size_t>(degree_v_) + 1, 0)};
-    const cln::cl_RA ax = cln::max(cln::cl_RA(1), cln::abs(x));
+  in_v at_u(const T& x) const {
+    in_v r{std::vector<T>(static_cast<std::size_t>(degree_v_) + 1, zero_), std::vector<T>(static_cast<std::size_t>(degree_v_) + 1, zero_)};
+    const T ax = cln::max(one_, cln::abs(x));
     for (std::size_t i = c_.size(); i-- > 0;)
       for (std::size_t j = 0; j < r.value.size(); ++j) {
-        const cln::cl_RA c = j < c_[i].size() ? c_[i][j] : cln::cl_RA(0);
+        const T& c = j < c_[i].size() ? c_[i][j] : zero_;
         r.value[j] = r.value[j] * x + c;
         r.magnitude[j] = r.magnitude[j] * ax + cln::abs(c);
       }
@@ -57,67 +59,46 @@ class bivariate {
   }
   /// The degree in v at the root u* known to lie in (x − h, x + h): leading coefficients c_j(u) that
   /// change sign (or vanish) across that interval vanish at u* and are dropped.
-  int degree_v_at_root(const cln::cl_RA& x, const cln::cl_RA& h) const {
-    const auto coefficient_at = [&](int j, const cln::cl_RA& at) {
-      cln::cl_RA s = 0;
-      for (std::size_t i = c_.size(); i-- > 0;) s = s * at + (static_cast<std::size_t>(j) < c_[i].size() ? c_[i][static_cast<std::size_t>(j)] : cln::cl_RA(0));
+  int degree_v_at_root(const T& x, const T& h) const {
+    const auto coefficient_at = [&](int j, const T& at) {
+      T s = zero_;
+      for (std::size_t i = c_.size(); i-- > 0;) s = s * at + (static_cast<std::size_t>(j) < c_[i].size() ? c_[i][static_cast<std::size_t>(j)] : zero_);
       return s;
     };
     int d = degree_v_;
-    while (d > 0 && cln::signum(coefficient_at(d, x - h)) * cln::signum(coefficient_at(d, x + h)) <= 0) --d;
+    const auto sign = [](const T& y) { return cln::zerop(y) ? 0 : (cln::minusp(y) ? -1 : 1); };
+    while (d > 0 && sign(coefficient_at(d, x - h)) * sign(coefficient_at(d, x + h)) <= 0) --d;
     return d;
   }
-  static cln::cl_RA horner(const std::vector<cln::cl_RA>& c, const cln::cl_RA& y) {
-    cln::cl_RA s = 0;
+  T horner(const std::vector<T>& c, const T& y) const {
+    T s = zero_;
     for (auto it = c.rbegin(); it != c.rend(); ++it) s = s * y + *it;
     return s;
   }
   /// |e(x, y)| when it is below tolerance × (1 + size of the terms), i.e. (x, y) is a root to that width.
-  std::optional<cln::cl_RA> vanishes(const in_v& at_x, const cln::cl_RA& y, const cln::cl_RA& tolerance) const {
-    const cln::cl_RA ay = cln::max(cln::cl_RA(1), cln::abs(y));
-    const cln::cl_RA r = cln::abs(horner(at_x.value, y));
-    if (r <= tolerance * (1 + horner(at_x.magnitude, ay))) return r;
+  std::optional<T> vanishes(const in_v& at_x, const T& y, const T& tolerance) const {
+    const T ay = cln::max(one_, cln::abs(y));
+    const T r = cln::abs(horner(at_x.value, y));
+    if (r <= tolerance * (one_ + horner(at_x.magnitude, ay))) return r;
     return std::nullopt;
   }
+  T convert(const cln::cl_RA& x) const { return convert(x, format_of(one_)); }
 
  private:
-  std::vector<std::vector<cln::cl_RA>> c_;
+  static cln::float_format_t format_of(const cln::cl_RA&) { return cln::float_format_t(0); }
+  static cln::float_format_t format_of(const cln::cl_F& x) { return cln::float_format(x); }
+  static T convert(const cln::cl_RA& x, const cln::float_format_t& format) {
+    if constexpr (std::is_same_v<T, cln::cl_F>)
+      return cln::cl_float(x, format);
+    else
+      return x;
+  }
+  T zero_, one_;
+  std::vector<std::vector<T>> c_;
   int degree_v_ = 0;
 };
-
-// The same polynomial with floating-point coefficients of a fixed precision, for Newton's method.
-class float_bivariate {
- public:
-  float_bivariate(const coefficient_polynomial& p, int u, int v, const cln::float_format_t& format) {
-    for (const auto& t : p.terms()) {
-      const auto e = coefficient_polynomial::unpack(t.key);
-      terms_.push_back({cln::cl_float(t.c, format), e[static_cast<std::size_t>(u)], e[static_cast<std::size_t>(v)]});
-      degree_ = std::max({degree_, terms_.back().i, terms_.back().j});
-    }
-    zero_ = cln::cl_float(0, format);
-  }
-  cln::cl_F operator()(const std::vector<cln::cl_F>& pu, const std::vector<cln::cl_F>& pv) const {
-    cln::cl_F s = zero_;
-    for (const auto& t : terms_) s = s + t.c * pu[static_cast<std::size_t>(t.i)] * pv[static_cast<std::size_t>(t.j)];
-    return s;
-  }
-  int degree() const { return degree_; }
-
- private:
-  struct term {
-    cln::cl_F c;
-    int i, j;
-  };
-  std::vector<term> terms_;
-  int degree_ = 0;
-  cln::cl_F zero_;
-};
-
-std::vector<cln::cl_F> powers_of(const cln::cl_F& x, int degree) {
-  std::vector<cln::cl_F> p{cln::cl_float(1, x)};
-  for (int d = 1; d <= degree; ++d) p.push_back(p.back() * x);
-  return p;
-}
+using bivariate = bivariate_in<cln::cl_RA>;
+using float_bivariate_rows = bivariate_in<cln::cl_F>;
 
 // Real roots of the eliminant, isolated exactly. When the cheap modular certificate of
 // square-freeness fails, gcd(R, R') splits R into its square-free part and its repeated part (whose
@@ -174,7 +155,8 @@ std::vector<cln::cl_RA> polished_roots(const eliminant_roots& in_u, int digits) 
 
 // All complex roots of a univariate polynomial (exact coefficients, index = power), in double, as the
 // eigenvalues of its companion matrix: starting points only, every one is polished and checked.
-std::vector<std::complex<double>> complex_roots(const std::vector<cln::cl_RA>& exact) {
+template <class T>
+std::vector<std::complex<double>> complex_roots(const std::vector<T>& exact) {
   std::vector<double> c;
   for (const auto& x : exact) c.push_back(cln::double_approx(x));
   while (!c.empty() && c.back() == 0) c.pop_back();
@@ -187,82 +169,108 @@ std::vector<std::complex<double>> complex_roots(const std::vector<cln::cl_RA>& e
   return {eigenvalues.begin(), eigenvalues.end()};
 }
 
-// Above a multiple root u0 of R (certified, exact) back-substitution's uniqueness fails: there may be
-// several common roots, or a tangency. Every real root v of e1(u0, ·) and of e2(u0, ·) is polished by
-// Newton's method in v on an equation where it is simple, and kept when both equations vanish.
-std::vector<real_point> solve_above(const bivariate& b1, const bivariate& b2, const cln::cl_RA& u0, int digits) {
+// e1, e2 and their derivatives in u, as rows in floating point, for back-substitution.
+struct float_system {
+  float_system(const coefficient_polynomial& p1, const coefficient_polynomial& p2, int u, int v,
+               const cln::float_format_t& format)
+      : e1(p1, u, v, format), e2(p2, u, v, format), e1_u(p1.derivative(u), u, v, format), e2_u(p2.derivative(u), u, v, format) {}
+  float_bivariate_rows e1, e2, e1_u, e2_u;
+};
+
+// The common root above a simple root u0 of the eliminant (certified to width/2), which is unique
+// and real. Starting points: every root of either equation at u0 (companion matrices, double
+// precision), best first by how well the other equation vanishes there. Each is polished by Newton's
+// method in v on the equation with the larger slope, then by Newton's method on (e1, e2) in (u, v),
+// whose Jacobian is regular at a simple intersection: v at u0 alone would carry u0's error times
+// dv/du. Kept when u stays within width/2 of u0 and both equations vanish to 10^-(digits+3) of
+// the size of their terms, all in floating point of digits + 30 digits.
+std::optional<real_point> common_root_above(const float_system& f, const cln::cl_RA& u0, int digits) {
   const cln::float_format_t format = cln::float_format(digits + 30);
-  const cln::cl_RA tolerance = ten_to_minus(digits + 3);
+  const cln::cl_F tolerance = cln::cl_float(ten_to_minus(digits + 3), format);
   const cln::cl_F converged = cln::cl_float(ten_to_minus(digits + 12), format);
-  std::array<bivariate::in_v, 2> at{b1.at_u(u0), b2.at_u(u0)};
+  const cln::cl_F zero = cln::cl_float(0, format), one = cln::cl_float(1, format);
+  const cln::cl_F x0 = cln::cl_float(u0, format);
+  const cln::cl_F half_width = cln::cl_float(ten_to_minus(digits + 10) / 2, format);
+  std::array<float_bivariate_rows::in_v, 2> at{f.e1.at_u(x0), f.e2.at_u(x0)};
   // Coefficients that vanish at the exact root are zero, not tiny: else they add roots near infinity.
-  const cln::cl_RA half_width = ten_to_minus(digits + 10) / 2;
-  at[0].value.resize(static_cast<std::size_t>(b1.degree_v_at_root(u0, half_width)) + 1);
-  at[1].value.resize(static_cast<std::size_t>(b2.degree_v_at_root(u0, half_width)) + 1);
-  std::array<std::vector<cln::cl_F>, 2> value, slope;
-  for (std::size_t e = 0; e < 2; ++e) {
-    for (const auto& c : at[e].value) value[e].push_back(cln::cl_float(c, format));
-    for (std::size_t j = 1; j < value[e].size(); ++j) slope[e].push_back(value[e][j] * cln::cl_float(cln::cl_I(static_cast<long>(j)), format));
-  }
+  at[0].value.resize(static_cast<std::size_t>(f.e1.degree_v_at_root(x0, half_width)) + 1);
+  at[1].value.resize(static_cast<std::size_t>(f.e2.degree_v_at_root(x0, half_width)) + 1);
+  const auto derivative = [&](const std::vector<cln::cl_F>& c) {
+    std::vector<cln::cl_F> d;
+    for (std::size_t j = 1; j < c.size(); ++j) d.push_back(c[j] * cln::cl_float(cln::cl_I(static_cast<long>(j)), format));
+    return d;
+  };
   const auto horner = [&](const std::vector<cln::cl_F>& c, const cln::cl_F& y) {
-    cln::cl_F r = cln::cl_float(0, format);
+    cln::cl_F r = zero;
     for (auto it = c.rbegin(); it != c.rend(); ++it) r = r * y + *it;
     return r;
   };
-  std::vector<real_point> points;
-  for (std::size_t source = 0; source < 2; ++source)
+  const std::array<std::vector<cln::cl_F>, 2> slope{derivative(at[0].value), derivative(at[1].value)};
+  std::vector<std::pair<double, double>> starts;  // (relative |other| + |imaginary part|, v)
+  for (std::size_t source = 0; source < 2; ++source) {
+    const auto& other = at[1 - source];
     for (const auto& z : complex_roots(at[source].value)) {
-      if (std::abs(z.imag()) > 1e-4 * (1 + std::abs(z.real()))) continue;
-      const cln::cl_F y0 = cln::cl_float(cln::rational(cln::cl_DF(z.real())), format);
-      cln::cl_F y = y0;
-      bool newton_converged = false;
-      for (int iteration = 0; iteration < 60 && !newton_converged; ++iteration) {
-        // Newton on the equation with the larger slope here: a tangency is a double root of one only.
-        const cln::cl_F s0 = slope[0].empty() ? cln::cl_float(0, format) : horner(slope[0], y);
-        const cln::cl_F s1 = slope[1].empty() ? cln::cl_float(0, format) : horner(slope[1], y);
-        const std::size_t e = cln::abs(s0) >= cln::abs(s1) ? 0 : 1;
-        const cln::cl_F s = e == 0 ? s0 : s1;
-        if (cln::zerop(s)) break;
-        const cln::cl_F step = horner(value[e], y) / s;
-        y = y - step;
-        newton_converged = cln::abs(step) <= converged * (1 + cln::abs(y));
+      const double y = z.real();
+      double value = 0, size = 0;
+      for (std::size_t j = other.value.size(); j-- > 0;) {
+        value = value * y + cln::double_approx(other.value[j]);
+        size = size * std::max(1.0, std::abs(y)) + cln::double_approx(other.magnitude[j]);
       }
-      // Polishing only: a start that runs away is not a root here (e.g. a point at infinity).
-      if (!newton_converged || cln::abs(y - y0) > cln::cl_float(cln::cl_RA(1) / 10000, format) * (1 + cln::abs(y0))) continue;
-      const cln::cl_RA yr = cln::rational(y);
-      const auto r1 = b1.vanishes(at[0], yr, tolerance);
-      if (!r1) continue;
-      const auto r2 = b2.vanishes(at[1], yr, tolerance);
-      if (!r2) continue;
-      const bool seen = std::any_of(points.begin(), points.end(), [&](const real_point& p) {
-        return cln::abs(p.v - yr) <= ten_to_minus(digits) * (1 + cln::abs(yr));
-      });
-      if (!seen) points.push_back({u0, yr, cln::max(*r1, *r2)});
+      starts.push_back({std::abs(value) / (1 + size) + std::abs(z.imag()) / (1 + std::abs(y)), y});
     }
-  return points;
+  }
+  std::sort(starts.begin(), starts.end());
+  for (const auto& [score, start] : starts) {
+    if (score > 1e-3) break;  // far from a common root: the remaining starts are worse
+    const cln::cl_F y0 = cln::cl_float(cln::rational(cln::cl_DF(start)), format);
+    cln::cl_F y = y0;
+    bool newton_converged = false;
+    for (int iteration = 0; iteration < 60 && !newton_converged; ++iteration) {
+      const cln::cl_F s0 = slope[0].empty() ? zero : horner(slope[0], y);
+      const cln::cl_F s1 = slope[1].empty() ? zero : horner(slope[1], y);
+      const std::size_t e = cln::abs(s0) >= cln::abs(s1) ? 0 : 1;
+      const cln::cl_F& s = e == 0 ? s0 : s1;
+      if (cln::zerop(s)) break;
+      const cln::cl_F step = horner(at[e].value, y) / s;
+      y = y - step;
+      newton_converged = cln::abs(step) <= converged * (one + cln::abs(y));
+    }
+    // Polishing only: a start that runs away is not a root here (e.g. a point at infinity).
+    if (!newton_converged || cln::abs(y - y0) > cln::cl_float(cln::cl_RA(1) / 10000, format) * (one + cln::abs(y0))) continue;
+    cln::cl_F x = x0;
+    for (int iteration = 0; iteration < 8; ++iteration) {
+      const auto v1 = f.e1.at_u(x), v2 = f.e2.at_u(x), u1 = f.e1_u.at_u(x), u2 = f.e2_u.at_u(x);
+      const cln::cl_F a = horner(u1.value, y), b = horner(derivative(v1.value), y);
+      const cln::cl_F c = horner(u2.value, y), d = horner(derivative(v2.value), y);
+      const cln::cl_F det = a * d - b * c;
+      if (cln::zerop(det)) break;
+      const cln::cl_F r1 = horner(v1.value, y), r2 = horner(v2.value, y);
+      const cln::cl_F dx = (d * r1 - b * r2) / det, dy = (a * r2 - c * r1) / det;
+      x = x - dx;
+      y = y - dy;
+      if (cln::abs(dx) <= converged * (one + cln::abs(x)) && cln::abs(dy) <= converged * (one + cln::abs(y))) break;
+    }
+    if (cln::abs(x - x0) > half_width * 2) continue;  // another intersection: not this root of R
+    const auto v1 = f.e1.at_u(x), v2 = f.e2.at_u(x);
+    const auto r1 = f.e1.vanishes(v1, y, tolerance);
+    if (!r1) continue;
+    const auto r2 = f.e2.vanishes(v2, y, tolerance);
+    if (!r2) continue;
+    return real_point{cln::rational(x), cln::rational(y), cln::rational(cln::max(*r1, *r2))};
+  }
+  return std::nullopt;
 }
 
-// Back-substitution at every simple real root of the eliminant; nullopt when any root fails, so
-// that the caller falls back to pairing.
-// The multiple roots of R are set aside in `multiple_roots` for pairing.
+// Back-substitution at every simple real root of the eliminant (exactly one common root above it,
+// real); the multiple roots are set aside in `multiple_roots` and searched without that promise.
+// nullopt when a simple root yields nothing and is not a point at infinity: the caller then pairs.
 std::optional<std::vector<real_point>> back_substitute(const coefficient_polynomial& e1, const coefficient_polynomial& e2,
                                                        int u, int v, const eliminant_roots& in_u, int digits,
                                                        std::vector<cln::cl_RA>& multiple_roots) {
-  const cln::float_format_t format = cln::float_format(digits + 30);
-  const float_bivariate f1(e1, u, v, format), f2(e2, u, v, format);
-  const float_bivariate d1u(e1.derivative(u), u, v, format), d1v(e1.derivative(v), u, v, format);
-  const float_bivariate d2u(e2.derivative(u), u, v, format), d2v(e2.derivative(v), u, v, format);
-  const bivariate b1(e1, u, v), b2(e2, u, v);
-  const int degree = std::max(f1.degree(), f2.degree());
-  // The equation of lower positive degree in v gives the candidates; the other one selects.
-  const bool first_is_lower = b2.degree_v() == 0 || (b1.degree_v() > 0 && b1.degree_v() <= b2.degree_v());
-  const bivariate& low = first_is_lower ? b1 : b2;
-  const bivariate& other = first_is_lower ? b2 : b1;
-  const cln::cl_RA tolerance = ten_to_minus(digits + 3), width = ten_to_minus(digits + 10);
-  const cln::cl_F converged = cln::cl_float(cln::cl_RA(width) / 100, format);
-  std::vector<real_point> points;
+  const float_system system(e1, e2, u, v, cln::float_format(digits + 30));
+  const cln::cl_RA width = ten_to_minus(digits + 10);
   // Where both leading coefficients in v vanish, R vanishes for a point at infinity; R square-free
-  // then leaves no finite solution above that root. Those roots are the roots of gcd(lc1, lc2).
+  // there leaves no finite solution above that root. Those roots are the roots of gcd(lc1, lc2).
   const auto leading = [&](const coefficient_polynomial& e) {
     const coefficient_polynomial lc = e.coefficient(v, e.degree(v));
     std::vector<cln::cl_RA> c(static_cast<std::size_t>(std::max(lc.degree(u), 0)) + 1, 0);
@@ -270,64 +278,21 @@ std::optional<std::vector<real_point>> back_substitute(const coefficient_polynom
     return rational_polynomial(std::move(c));
   };
   const rational_polynomial at_infinity = gcd(leading(e1), leading(e2));
+  const auto root_of = [&](const rational_polynomial& q, const cln::cl_RA& x) {
+    return q.degree() >= 1 && cln::signum(q(x - width / 2)) * cln::signum(q(x + width / 2)) <= 0;
+  };
   const root_polisher polisher(in_u.square_free, digits);
+  std::vector<real_point> points;
   for (const auto& interval : in_u.intervals) {
     const cln::cl_RA u0 = polisher.polish(interval);  // certified to width/2
-    if (in_u.multiple.degree() >= 1 &&
-        cln::signum(in_u.multiple(u0 - width / 2)) * cln::signum(in_u.multiple(u0 + width / 2)) <= 0) {
+    if (root_of(in_u.multiple, u0)) {
       multiple_roots.push_back(u0);
       continue;
     }
-    if (at_infinity.degree() >= 1 && cln::signum(at_infinity(u0 - width / 2)) * cln::signum(at_infinity(u0 + width / 2)) <= 0)
-      continue;
-    const auto low_at = low.at_u(u0), other_at = other.at_u(u0);
-    // Candidates: every root of low(u0, ·), ordered by how well the other equation vanishes.
-    std::vector<std::pair<double, double>> candidates;  // (relative |other| + |imaginary part|, v)
-    for (const auto& z : complex_roots(low_at.value)) {
-      const double y = z.real();
-      double value = 0, size = 0;
-      for (std::size_t j = other_at.value.size(); j-- > 0;) {
-        value = value * y + cln::double_approx(other_at.value[j]);
-        size = size * std::max(1.0, std::abs(y)) + cln::double_approx(other_at.magnitude[j]);
-      }
-      candidates.push_back({std::abs(value) / (1 + size) + std::abs(z.imag()) / (1 + std::abs(y)), y});
-    }
-    std::sort(candidates.begin(), candidates.end());
-    bool found = false;
-    const cln::cl_F x0 = cln::cl_float(u0, format);
-    for (std::size_t k = 0; k < std::min<std::size_t>(candidates.size(), 3) && !found; ++k) {
-      // Newton on (e1, e2) in (u, v) from (u0, candidate): quadratic from about 16 digits. The
-      // intersection is simple (R is square-free), so the Jacobian is regular there.
-      const cln::cl_F y0 = cln::cl_float(cln::rational(cln::cl_DF(candidates[k].second)), format);
-      cln::cl_F x = x0, y = y0;
-      bool newton_converged = false;
-      for (int iteration = 0; iteration < 40 && !newton_converged; ++iteration) {
-        const auto pu = powers_of(x, degree), pv = powers_of(y, degree);
-        const cln::cl_F a = d1u(pu, pv), b = d1v(pu, pv), c = d2u(pu, pv), d = d2v(pu, pv);
-        const cln::cl_F det = a * d - b * c;
-        if (cln::zerop(det)) break;
-        const cln::cl_F r1 = f1(pu, pv), r2 = f2(pu, pv);
-        const cln::cl_F dx = (d * r1 - b * r2) / det, dy = (a * r2 - c * r1) / det;
-        x = x - dx;
-        y = y - dy;
-        newton_converged = cln::abs(dx) <= converged * (1 + cln::abs(x)) && cln::abs(dy) <= converged * (1 + cln::abs(y));
-      }
-      // Newton only polishes: it converged near its start (a root at infinity sends it away), on the
-      // same root of R, and both equations vanish, exactly evaluated.
-      if (!newton_converged || cln::abs(y - y0) > cln::cl_float(cln::cl_RA(1) / 1000000, format) * (1 + cln::abs(y0)) ||
-          cln::abs(x - x0) > cln::cl_float(width, format))
-        continue;
-      const cln::cl_RA yr = cln::rational(y);
-      const auto r1 = b1.vanishes(b1.at_u(u0), yr, tolerance);
-      if (!r1) continue;
-      const auto r2 = b2.vanishes(b2.at_u(u0), yr, tolerance);
-      if (!r2) continue;
-      points.push_back({u0, yr, cln::max(*r1, *r2)});
-      found = true;
-    }
-    // No finite common root passed: a root at infinity (both leading coefficients in v vanish) or a
-    // candidate Newton could not reach. Pairing decides those exactly.
-    if (!found) return std::nullopt;
+    if (const auto found = common_root_above(system, u0, digits))
+      points.push_back(*found);
+    else if (!root_of(at_infinity, u0))
+      return std::nullopt;
   }
   return points;
 }
@@ -395,9 +360,9 @@ system_result solve_two_equations(const coefficient_polynomial& e1, const coeffi
     points = pair_roots(e1, e2, u, v, polished_roots(in_u, digits), digits);
   } else if (!multiple_roots.empty()) {
     result.multiple_roots = static_cast<int>(multiple_roots.size());
-    const bivariate b1(e1, u, v), b2(e2, u, v);
-    for (const auto& u0 : multiple_roots)
-      for (auto& p : solve_above(b1, b2, u0, digits)) points->push_back(std::move(p));
+    // Above a multiple root there may be several solutions, or a singular one (a tangency), where
+    // Newton in v from u0 alone loses half the digits: the v-resultant's certified roots decide.
+    for (auto& p : pair_roots(e1, e2, u, v, multiple_roots, digits)) points->push_back(std::move(p));
   }
   result.points = std::move(*points);
   std::sort(result.points.begin(), result.points.end(),

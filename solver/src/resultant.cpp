@@ -76,16 +76,22 @@ std::optional<cln::cl_RA> resultant_at(const std::vector<cln::cl_I>& a, const st
   const cln::cl_I alpha = a.back();
   if (cln::zerop(alpha)) return std::nullopt;
   if (m == 0) return cln::expt(cln::cl_RA(alpha), static_cast<int>(n));
-  const std::vector<cln::cl_RA> ra(a.begin(), a.end()), rb(b.begin(), b.end());
-  const rational_polynomial r = remainder(rational_polynomial(rb), rational_polynomial(ra));
-  if (r.is_zero()) return cln::cl_RA(0);
-  cln::cl_I denominators = 1;
-  for (const auto& c : r.coefficients()) denominators = cln::lcm(denominators, cln::denominator(c));
-  std::vector<cln::cl_I> integer_r;
-  for (const auto& c : r.coefficients()) integer_r.push_back(cln::the<cln::cl_I>(c * denominators));
-  // Res(a, D r) = D^m Res(a, r)
-  const cln::cl_RA small = bareiss_determinant(sylvester(a, integer_r)) / cln::expt(cln::cl_RA(denominators), static_cast<int>(m));
-  return cln::expt(cln::cl_RA(alpha), static_cast<int>(n) - r.degree()) * small;
+  // Pseudo-remainder over the integers: r = α^(n−m+1) b mod a, no rational normalisation.
+  std::vector<cln::cl_I> r = b;
+  for (std::size_t top = n + 1; top-- > m;) {
+    const cln::cl_I lead = r[top];
+    for (std::size_t j = 0; j < top; ++j) r[j] = r[j] * alpha;
+    if (!cln::zerop(lead))
+      for (std::size_t j = 0; j < m; ++j) r[top - m + j] = r[top - m + j] - lead * a[j];
+    r.pop_back();
+  }
+  while (!r.empty() && cln::zerop(r.back())) r.pop_back();
+  if (r.empty()) return cln::cl_RA(0);
+  const int rho = static_cast<int>(r.size()) - 1;
+  // Res(a, α^k r) = α^(k m) Res(a, r) with k = n − m + 1
+  const cln::cl_I scale = cln::expt_pos(alpha, static_cast<uintL>((n - m + 1) * m));
+  const cln::cl_RA small = cln::cl_RA(bareiss_determinant(sylvester(a, r))) / scale;
+  return cln::expt(cln::cl_RA(alpha), static_cast<int>(n) - rho) * small;
 }
 
 }  // namespace
