@@ -261,6 +261,39 @@ std::optional<real_point> common_root_above(const float_system& f, const cln::cl
   return std::nullopt;
 }
 
+// The simplest rational in [lo, hi] (smallest denominator), by continued fractions.
+cln::cl_RA simplest_rational_between(const cln::cl_RA& lo, const cln::cl_RA& hi) {
+  if (cln::minusp(hi)) return -simplest_rational_between(-hi, -lo);
+  if (!cln::plusp(lo)) return 0;
+  const cln::cl_I floor = cln::floor1(lo);
+  if (floor + 1 <= hi || floor == lo) return floor == lo ? cln::cl_RA(floor) : cln::cl_RA(floor + 1);
+  // lo, hi in (floor, floor + 1): recurse on the reciprocals of the fractional parts
+  return floor + cln::recip(simplest_rational_between(cln::recip(hi - floor), cln::recip(lo - floor)));
+}
+
+// Every real common root above a rational u = r, exactly: the real roots of g = gcd(e1(r, ·),
+// e2(r, ·)) over Q, certified and polished.
+std::vector<real_point> common_roots_above_rational(const coefficient_polynomial& e1, const coefficient_polynomial& e2,
+                                                    int u, int v, const cln::cl_RA& r, int digits) {
+  const auto at = [&](const coefficient_polynomial& e) {
+    const coefficient_polynomial p = e.substitute(u, r);
+    std::vector<cln::cl_RA> c(static_cast<std::size_t>(std::max(p.degree(v), 0)) + 1, 0);
+    for (const auto& t : p.terms()) c[static_cast<std::size_t>(coefficient_polynomial::unpack(t.key)[static_cast<std::size_t>(v)])] = t.c;
+    return rational_polynomial(std::move(c));
+  };
+  const rational_polynomial p1 = at(e1), p2 = at(e2);
+  std::vector<real_point> points;
+  // One equation may hold the whole line u = r (a factor u − r): then the other alone decides.
+  if (p1.is_zero() && p2.is_zero()) throw std::logic_error("both equations hold the line u = r: the shared-factor test missed it");
+  const rational_polynomial g = p1.is_zero() ? p2 : p2.is_zero() ? p1 : modular_gcd(p1, p2);
+  if (g.degree() < 1) return points;
+  const rational_polynomial square_free = quotient(g, modular_gcd(g, g.derivative()));
+  const root_polisher polisher(square_free, digits);
+  for (const auto& interval : isolate_real_roots_of_square_free(square_free))
+    points.push_back({r, polisher.polish(interval), 0});
+  return points;
+}
+
 // Back-substitution at every simple real root of the eliminant (exactly one common root above it,
 // real); the multiple roots are set aside in `multiple_roots` and searched without that promise.
 // nullopt when a simple root yields nothing and is not a point at infinity: the caller then pairs.
@@ -286,6 +319,12 @@ std::optional<std::vector<real_point>> back_substitute(const coefficient_polynom
   for (const auto& interval : in_u.intervals) {
     const cln::cl_RA u0 = polisher.polish(interval);  // certified to width/2
     if (root_of(in_u.multiple, u0)) {
+      // A rational multiple root (often a point at infinity, u = 0 or 1/2 here) is solved exactly:
+      // the common roots above it are those of gcd(e1(r, ·), e2(r, ·)) over Q. Others are paired.
+      if (const auto r = simplest_rational_between(u0 - width / 2, u0 + width / 2); cln::zerop(in_u.multiple(r))) {
+        for (auto& p : common_roots_above_rational(e1, e2, u, v, r, digits)) points.push_back(std::move(p));
+        continue;
+      }
       multiple_roots.push_back(u0);
       continue;
     }

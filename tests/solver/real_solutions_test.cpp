@@ -6,6 +6,8 @@
 
 #include <cln/rational_io.h>
 
+#include <cmath>
+
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/lie/rigid_body.hpp"
 #include "rotlie/solver/real_solutions.hpp"
@@ -62,13 +64,22 @@ BOOST_AUTO_TEST_CASE(root_at_infinity_is_not_a_solution) {
 }
 
 BOOST_AUTO_TEST_CASE(two_solutions_over_one_u_are_both_found) {
-  // y² = x and x = 4: (4, ±2) share u = 4, a double root of the eliminant in x.
+  // y² = x and x = 4: (4, ±2) share u = 4, a double root of the eliminant in x, rational: solved
+  // exactly through gcd(e1(4, ·), e2(4, ·)).
   const auto r = solver::solve_two_equations(y * y - x, x - 4, 0, 1, 20);
   BOOST_TEST(!r.paired);
-  BOOST_TEST(r.multiple_roots == 1);
+  BOOST_TEST(r.multiple_roots == 0);
   BOOST_REQUIRE(r.points.size() == 2u);
   BOOST_TEST(cln::double_approx(r.points[0].v) == -2.0, boost::test_tools::tolerance(1e-20));
   BOOST_TEST(cln::double_approx(r.points[1].v) == 2.0, boost::test_tools::tolerance(1e-20));
+  // y² = x and x² = 2: the eliminant (x² − 2)² has irrational double roots ±√2, paired against the
+  // y-resultant: (√2, ±2^(1/4)); nothing real above −√2.
+  const auto q = solver::solve_two_equations(y * y - x, x * x - 2, 0, 1, 30);
+  BOOST_TEST(q.multiple_roots == 2);
+  BOOST_REQUIRE(q.points.size() == 2u);
+  BOOST_TEST(cln::double_approx(q.points[0].u) == std::sqrt(2.0), boost::test_tools::tolerance(1e-15));
+  BOOST_TEST(cln::double_approx(q.points[1].v) == std::pow(2.0, 0.25), boost::test_tools::tolerance(1e-15));
+  BOOST_TEST(cln::double_approx(q.points[0].v) == -std::pow(2.0, 0.25), boost::test_tools::tolerance(1e-15));
 }
 
 BOOST_AUTO_TEST_CASE(shared_factors_are_degenerate) {

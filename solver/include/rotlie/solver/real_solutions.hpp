@@ -2,21 +2,23 @@
 // All real solutions of two polynomial equations in two unknowns with rational coefficients.
 //
 // Elimination: the resultant R(u) = Res_v(e1, e2) is univariate over Q; its real roots are isolated
-// exactly (Descartes) and each is certified to 10^-(digits+10) by an exact sign change of R.
+// exactly (Descartes, on the square-free part) and each is certified to 10^-(digits+10) by an exact
+// sign change (root_polisher).
 //
-// Back-substitution: when R is square-free, a real root u* carries exactly one common root v of
-// e1(u*, ·) and e2(u*, ·), and it is real (a second one, or a complex pair, would make u* a multiple
-// root of R). It is found from the double-precision roots of e(u*, ·), polished by Newton's method
-// on (e1, e2) in (digits + 30)-digit floating point, and accepted when both equations vanish to
-// 10^-(digits+3) of the size of their terms, evaluated exactly.
+// Back-substitution at a simple root u* of R: exactly one common root v of e1(u*, ·) and e2(u*, ·)
+// lies above it, and it is real (a second one, or a complex pair, would make u* a multiple root).
+// It is found from the double-precision roots of e(u*, ·), polished by Newton's method in v and
+// then on (e1, e2) in (u, v) (regular at a simple intersection), in (digits + 30)-digit floating
+// point, and accepted when both equations vanish to 10^-(digits+3) of the size of their terms. A
+// simple root where both leading coefficients in v vanish is a point at infinity, not a solution.
 //
-// Above a real multiple root u* of R (several common roots, or a tangency), every real root of
-// e1(u*, ·) and of e2(u*, ·) is polished by Newton's method in v and kept when both vanish.
+// At a multiple root u* (several solutions above it, a tangency, a singular point or a point at
+// infinity): when u* is rational, the real roots of gcd(e1(u*, ·), e2(u*, ·)) over Q, exactly;
+// otherwise pairing.
 //
-// Pairing (the fallback, and the second method of the tests): the resultants in each unknown, their
-// real roots certified, and every pair tested exactly. Used for every root when any
-// back-substitution fails its check. A simple root of R where both leading coefficients in v
-// vanish is a point at infinity, not a solution.
+// Pairing (at irrational multiple roots, as the fallback when any back-substitution fails, and as
+// the second method of the tests): the real roots of Res_u(e1, e2), certified, and every pair tested
+// exactly against the u's concerned.
 #include <cln/rational.h>
 
 #include <string>
@@ -40,7 +42,7 @@ struct system_result {
   std::vector<real_point> points;  ///< sorted by u, then v
   int resultant_degree_u = 0;      ///< degree of Res_v(e1, e2)
   bool paired = false;             ///< every root paired (requested, or the fallback)
-  int multiple_roots = 0;          ///< real multiple roots of R, each solved above by solve_above (below)
+  int multiple_roots = 0;          ///< irrational real multiple roots of R, paired against Res_u
   double seconds_elimination = 0;  ///< common-factor check and resultant(s)
   double seconds_roots = 0;        ///< isolation, refinement, back-substitution or pairing, checks
 };
