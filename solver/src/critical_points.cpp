@@ -83,18 +83,28 @@ bool nonconstant_gcd(const coefficient_polynomial& a, const coefficient_polynomi
 }
 
 // Removes from p every factor it shares with A: those vanish where z = −B/A is undefined.
-coefficient_polynomial strip_common_factors(coefficient_polynomial p, const coefficient_polynomial& A) {
+coefficient_polynomial strip_common_factors(const coefficient_polynomial& p, const coefficient_polynomial& A) {
   if (A.is_constant()) return p;
+  // A is small (degree 2 here): its irreducible factors, then exact division by each while it
+  // divides. No multivariate gcd of the large p is needed.
   const auto& s = gcd_symbols();
   GiNaC::ex pe = to_ex(p, s);
-  const GiNaC::ex ae = to_ex(A, s);
-  for (;;) {
-    const GiNaC::ex g = GiNaC::gcd(pe, ae);
-    if (GiNaC::is_a<GiNaC::numeric>(g)) return from_ex(pe, s);
-    GiNaC::ex quotient;
-    if (!GiNaC::divide(pe, g, quotient)) throw std::logic_error("a gcd does not divide its argument");
-    pe = quotient.expand();
+  const GiNaC::ex factored = GiNaC::factor(to_ex(A, s));
+  GiNaC::exvector factors;
+  if (GiNaC::is_a<GiNaC::mul>(factored))
+    for (std::size_t i = 0; i < factored.nops(); ++i) factors.push_back(factored.op(i));
+  else
+    factors.push_back(factored);
+  bool divided = false;
+  for (GiNaC::ex f : factors) {
+    if (GiNaC::is_a<GiNaC::power>(f)) f = f.op(0);
+    if (GiNaC::is_a<GiNaC::numeric>(f)) continue;
+    for (GiNaC::ex quotient; GiNaC::divide(pe, f, quotient);) {
+      pe = quotient.expand();
+      divided = true;
+    }
   }
+  return divided ? from_ex(pe, s) : p;
 }
 
 // |p(x)| / (1 + Σ |terms|) in floating point of digits + 30 digits: vanishes to the refinement
