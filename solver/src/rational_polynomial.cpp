@@ -2,6 +2,7 @@
 
 #include <cln/integer.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace rotlie::solver {
@@ -56,6 +57,28 @@ void divide(const rational_polynomial& a, const rational_polynomial& b, rational
   r = rational_polynomial(std::move(rem));
 }
 }  // namespace
+
+rational_polynomial operator+(const rational_polynomial& a, const rational_polynomial& b) {
+  std::vector<cln::cl_RA> c(std::max(a.c_.size(), b.c_.size()), 0);
+  for (std::size_t i = 0; i < a.c_.size(); ++i) c[i] = a.c_[i];
+  for (std::size_t i = 0; i < b.c_.size(); ++i) c[i] = c[i] + b.c_[i];
+  return rational_polynomial(std::move(c));
+}
+
+rational_polynomial operator-(const rational_polynomial& a, const rational_polynomial& b) {
+  std::vector<cln::cl_RA> c(std::max(a.c_.size(), b.c_.size()), 0);
+  for (std::size_t i = 0; i < a.c_.size(); ++i) c[i] = a.c_[i];
+  for (std::size_t i = 0; i < b.c_.size(); ++i) c[i] = c[i] - b.c_[i];
+  return rational_polynomial(std::move(c));
+}
+
+rational_polynomial operator*(const rational_polynomial& a, const rational_polynomial& b) {
+  if (a.is_zero() || b.is_zero()) return {};
+  std::vector<cln::cl_RA> c(a.c_.size() + b.c_.size() - 1, 0);
+  for (std::size_t i = 0; i < a.c_.size(); ++i)
+    for (std::size_t j = 0; j < b.c_.size(); ++j) c[i + j] = c[i + j] + a.c_[i] * b.c_[j];
+  return rational_polynomial(std::move(c));
+}
 
 rational_polynomial remainder(const rational_polynomial& a, const rational_polynomial& b) {
   rational_polynomial q, r;

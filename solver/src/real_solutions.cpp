@@ -14,6 +14,7 @@
 #include <type_traits>
 
 #include "rotlie/solver/rational_polynomial.hpp"
+#include "rotlie/solver/residue_field.hpp"
 #include "rotlie/solver/resultant.hpp"
 
 namespace rotlie::solver {
@@ -294,6 +295,73 @@ std::vector<real_point> common_roots_above_rational(const coefficient_polynomial
   return points;
 }
 
+// Every real common root above an irrational multiple root α of R: g = gcd(e1(α, ·), e2(α, ·)),
+// computed exactly in Q(α) (residue_field), made square-free there, and its real roots found at
+// α's real value (known to 10^-(digits+30)) by Newton's method in floating point. nullopt when a
+// step does not conclude (the caller pairs instead).
+std::optional<std::vector<real_point>> common_roots_above_algebraic(const coefficient_polynomial& e1,
+                                                                    const coefficient_polynomial& e2, int u, int v,
+                                                                    const eliminant_roots& in_u,
+                                                                    const root_interval& interval, int digits) {
+  const root_polisher fine(in_u.square_free, digits + 20);
+  const cln::cl_RA alpha = fine.polish(interval);  // within 10^-(digits+30)/2
+  const cln::cl_RA half_width = ten_to_minus(digits + 30) / 2;
+  residue_field field(in_u.multiple, alpha - half_width, alpha + half_width);
+  const auto coefficients_in_v = [&](const coefficient_polynomial& e) {
+    std::vector<rational_polynomial> out;
+    for (int j = 0; j <= e.degree(v); ++j) {
+      const coefficient_polynomial cj = e.coefficient(v, j);
+      std::vector<cln::cl_RA> c(static_cast<std::size_t>(std::max(cj.degree(u), 0)) + 1, 0);
+      for (const auto& t : cj.terms()) c[static_cast<std::size_t>(coefficient_polynomial::unpack(t.key)[static_cast<std::size_t>(u)])] = t.c;
+      out.push_back(field.reduce(rational_polynomial(std::move(c))));
+    }
+    return out;
+  };
+  std::vector<real_point> points;
+  auto g = field.gcd_in_v(coefficients_in_v(e1), coefficients_in_v(e2));
+  if (g.size() <= 1) return points;  // coprime above α: no common root
+  std::vector<rational_polynomial> slope;
+  for (std::size_t j = 1; j < g.size(); ++j) slope.push_back(g[j] * rational_polynomial({cln::cl_RA(static_cast<long>(j))}));
+  const auto repeated = field.gcd_in_v(g, slope);
+  if (repeated.size() > 1) g = field.quotient_in_v(g, repeated);
+  // g's coefficients at α, in floating point; its real roots are simple now.
+  const cln::float_format_t format = cln::float_format(digits + 30);
+  const cln::cl_F a = cln::cl_float(alpha, format), zero = cln::cl_float(0, format), one = cln::cl_float(1, format);
+  std::vector<cln::cl_F> value, derivative;
+  for (const auto& c : g) {
+    cln::cl_F x = zero;
+    for (auto it = c.coefficients().rbegin(); it != c.coefficients().rend(); ++it) x = x * a + cln::cl_float(*it, format);
+    value.push_back(x);
+  }
+  for (std::size_t j = 1; j < value.size(); ++j) derivative.push_back(value[j] * cln::cl_float(cln::cl_I(static_cast<long>(j)), format));
+  const auto horner = [&](const std::vector<cln::cl_F>& c, const cln::cl_F& y) {
+    cln::cl_F r = zero;
+    for (auto it = c.rbegin(); it != c.rend(); ++it) r = r * y + *it;
+    return r;
+  };
+  const cln::cl_F converged = cln::cl_float(ten_to_minus(digits + 15), format);
+  const cln::cl_F tolerance = cln::cl_float(ten_to_minus(digits + 3), format);
+  const float_bivariate_rows b1(e1, u, v, format), b2(e2, u, v, format);
+  const auto at1 = b1.at_u(a), at2 = b2.at_u(a);
+  for (const auto& z : complex_roots(value)) {
+    if (std::abs(z.imag()) > 1e-6 * (1 + std::abs(z.real()))) continue;  // a conjugate pair
+    cln::cl_F y = cln::cl_float(cln::rational(cln::cl_DF(z.real())), format);
+    bool newton_converged = false;
+    for (int iteration = 0; iteration < 60 && !newton_converged; ++iteration) {
+      const cln::cl_F s = horner(derivative, y);
+      if (cln::zerop(s)) break;
+      const cln::cl_F step = horner(value, y) / s;
+      y = y - step;
+      newton_converged = cln::abs(step) <= converged * (one + cln::abs(y));
+    }
+    if (!newton_converged) return std::nullopt;
+    const auto r1 = b1.vanishes(at1, y, tolerance), r2 = b2.vanishes(at2, y, tolerance);
+    if (!r1 || !r2) return std::nullopt;  // g's root must be a common root: else something is off
+    points.push_back({alpha, cln::rational(y), cln::rational(cln::max(*r1, *r2))});
+  }
+  return points;
+}
+
 // Back-substitution at every simple real root of the eliminant (exactly one common root above it,
 // real); the multiple roots are set aside in `multiple_roots` and searched without that promise.
 // nullopt when a simple root yields nothing and is not a point at infinity: the caller then pairs.
@@ -323,6 +391,10 @@ std::optional<std::vector<real_point>> back_substitute(const coefficient_polynom
       // the common roots above it are those of gcd(e1(r, ·), e2(r, ·)) over Q. Others are paired.
       if (const auto r = simplest_rational_between(u0 - width / 2, u0 + width / 2); cln::zerop(in_u.multiple(r))) {
         for (auto& p : common_roots_above_rational(e1, e2, u, v, r, digits)) points.push_back(std::move(p));
+        continue;
+      }
+      if (auto found = common_roots_above_algebraic(e1, e2, u, v, in_u, interval, digits)) {
+        for (auto& p : *found) points.push_back(std::move(p));
         continue;
       }
       multiple_roots.push_back(u0);

@@ -11,6 +11,7 @@
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/lie/rigid_body.hpp"
 #include "rotlie/solver/real_solutions.hpp"
+#include "rotlie/solver/residue_field.hpp"
 
 using namespace rotlie;
 using lie::coefficient_polynomial;
@@ -72,14 +73,29 @@ BOOST_AUTO_TEST_CASE(two_solutions_over_one_u_are_both_found) {
   BOOST_REQUIRE(r.points.size() == 2u);
   BOOST_TEST(cln::double_approx(r.points[0].v) == -2.0, boost::test_tools::tolerance(1e-20));
   BOOST_TEST(cln::double_approx(r.points[1].v) == 2.0, boost::test_tools::tolerance(1e-20));
-  // y² = x and x² = 2: the eliminant (x² − 2)² has irrational double roots ±√2, paired against the
-  // y-resultant: (√2, ±2^(1/4)); nothing real above −√2.
+  // y² = x and x² = 2: the eliminant (x² − 2)² has irrational double roots ±√2, solved by a gcd in
+  // Q(√2): (√2, ±2^(1/4)); nothing real above −√2. Pairing (the second method) agrees.
   const auto q = solver::solve_two_equations(y * y - x, x * x - 2, 0, 1, 30);
-  BOOST_TEST(q.multiple_roots == 2);
+  BOOST_TEST(q.multiple_roots == 0);
+  same_points(q, solver::solve_two_equations(y * y - x, x * x - 2, 0, 1, 30, solver::solve_method::pairing),
+              cln::recip(cln::expt(cln::cl_RA(10), 35)));
   BOOST_REQUIRE(q.points.size() == 2u);
   BOOST_TEST(cln::double_approx(q.points[0].u) == std::sqrt(2.0), boost::test_tools::tolerance(1e-15));
   BOOST_TEST(cln::double_approx(q.points[1].v) == std::pow(2.0, 0.25), boost::test_tools::tolerance(1e-15));
   BOOST_TEST(cln::double_approx(q.points[0].v) == -std::pow(2.0, 0.25), boost::test_tools::tolerance(1e-15));
+}
+
+// Q(α) arithmetic where the modulus is reducible: (u² − 2)(u² − 3) with α = √3; the element u² − 3
+// is zero there, so the modulus shrinks to u² − 3, and u² − 2 is inverted modulo it (inverse 1).
+BOOST_AUTO_TEST_CASE(residue_field_splits_a_reducible_modulus) {
+  using solver::rational_polynomial;
+  solver::residue_field field(rational_polynomial({6, 0, -5, 0, 1}), cln::cl_RA(17) / 10, cln::cl_RA(18) / 10);
+  BOOST_TEST(field.is_zero(rational_polynomial({-3, 0, 1})));
+  BOOST_TEST(field.modulus().degree() == 2);
+  BOOST_TEST(!field.is_zero(rational_polynomial({-2, 0, 1})));
+  const auto inverse = field.inverse(rational_polynomial({-2, 0, 1}));
+  BOOST_TEST(inverse.degree() == 0);
+  BOOST_TEST(inverse.coefficients()[0] == 1);
 }
 
 BOOST_AUTO_TEST_CASE(shared_factors_are_degenerate) {

@@ -24,6 +24,9 @@ class rational_polynomial {
   cln::cl_RA operator()(const cln::cl_RA& x) const;
   rational_polynomial derivative() const;
 
+  friend rational_polynomial operator+(const rational_polynomial& a, const rational_polynomial& b);
+  friend rational_polynomial operator-(const rational_polynomial& a, const rational_polynomial& b);
+  friend rational_polynomial operator*(const rational_polynomial& a, const rational_polynomial& b);
   friend rational_polynomial remainder(const rational_polynomial& a, const rational_polynomial& b);
   friend rational_polynomial quotient(const rational_polynomial& a, const rational_polynomial& b);
   friend rational_polynomial gcd(rational_polynomial a, rational_polynomial b);  ///< monic
