@@ -229,7 +229,10 @@ std::optional<real_point> common_root_above(const float_system& f, const cln::cl
     for (int iteration = 0; iteration < 60 && !newton_converged; ++iteration) {
       const cln::cl_F s0 = slope[0].empty() ? zero : horner(slope[0], y);
       const cln::cl_F s1 = slope[1].empty() ? zero : horner(slope[1], y);
-      const std::size_t e = cln::abs(s0) >= cln::abs(s1) ? 0 : 1;
+      // Slopes relative to each equation's own size: one may be a large multiple of a small factor.
+      const cln::cl_F ay = cln::max(one, cln::abs(y));
+      const cln::cl_F size0 = one + horner(at[0].magnitude, ay), size1 = one + horner(at[1].magnitude, ay);
+      const std::size_t e = cln::abs(s0) / size0 >= cln::abs(s1) / size1 ? 0 : 1;
       const cln::cl_F& s = e == 0 ? s0 : s1;
       if (cln::zerop(s)) break;
       const cln::cl_F step = horner(at[e].value, y) / s;
