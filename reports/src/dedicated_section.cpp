@@ -27,7 +27,7 @@ std::string free_parameter_families(const report_options& options, const lie::mo
   std::ostringstream md;
   md << "### Free-parameter families R and P for water (section 3.4)\n\n";
   if (options.quick) {
-    md << "Skipped with `--quick` (the P family takes about a minute and a half).\n";
+    md << "Skipped with `--quick` (the P family takes about ten seconds).\n";
     return md.str();
   }
   const int digits = 40;
