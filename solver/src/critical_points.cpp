@@ -145,7 +145,7 @@ class relative_value {
 }  // namespace
 
 critical_result constrained_critical_points(const coefficient_polynomial& f, const coefficient_polynomial& g1,
-                                            const coefficient_polynomial& g2, int digits) {
+                                            const coefficient_polynomial& g2, int digits, solve_method method) {
   const coefficient_polynomial e1 = g1.primitive_integer(), e2 = g2.primitive_integer();
   critical_result result;
   using clock = std::chrono::steady_clock;
@@ -191,7 +191,7 @@ critical_result constrained_critical_points(const coefficient_polynomial& f, con
   const rational_polynomial spurious =
       A.is_constant() ? rational_polynomial() : resultant_in(A, B, rest[1], rest[0]);
   const system_result planar = solve_two_equations(reduced_other, reduced_det, rest[0], rest[1], digits,
-                                                   solve_method::automatic, spurious);
+                                                   method, spurious);
   result.eliminant_degree = planar.resultant_degree_u;
   const auto check_start = clock::now();
   result.seconds_elimination = std::chrono::duration<double>(check_start - start).count() - planar.seconds_roots;

@@ -10,6 +10,7 @@
 
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/lie/rigid_body.hpp"
+#include "rotlie/solver/critical_points.hpp"
 #include "rotlie/solver/real_solutions.hpp"
 #include "rotlie/solver/residue_field.hpp"
 
@@ -51,6 +52,30 @@ BOOST_AUTO_TEST_CASE(back_substitution_equals_pairing_on_every_n_system) {
   }
   BOOST_TEST(systems == 84);
   BOOST_TEST(back_substituted == systems);  // no system needs the full fallback
+}
+
+// The Lagrange systems of section 3.4 (R and P for water) whose eliminants have multiple roots:
+// rational (points at infinity), irrational (P4 ACB: two critical points above u = 0.2337) and the
+// spurious A = B = 0 roots; the fast path against pairing, point by point.
+BOOST_AUTO_TEST_CASE(critical_points_equal_pairing_where_the_eliminant_has_multiple_roots) {
+  const auto body = lie::parse_moments("water");
+  const std::array<cln::cl_RA, 3> w{cln::recip(body.I[0]), cln::recip(body.I[1]), cln::recip(body.I[2])};
+  const int digits = 40;
+  for (const auto& [scheme, perm] : std::vector<std::pair<std::string, std::string>>{{"P4", "ACB"}, {"P9", "ABC"}, {"R", "CAB"}}) {
+    const auto s = *bch::find_named_scheme(scheme);
+    const auto k = bch::compute_exact_modified_hamiltonian(bch::layout_scheme(s.word, s.split, perm), w, 5);
+    const auto g1 = k.remainder[3].coefficient(lie::monomial(2, 2, 0)), g2 = k.remainder[3].coefficient(lie::monomial(2, 0, 2));
+    coefficient_polynomial f;
+    for (const auto& [m, q] : k.remainder[5].terms()) f += q * q;
+    const auto fast = solver::constrained_critical_points(f, g1, g2, digits);
+    const auto paired = solver::constrained_critical_points(f, g1, g2, digits, solver::solve_method::pairing);
+    BOOST_TEST_CONTEXT(scheme << " " << perm) {
+      BOOST_REQUIRE(fast.points.size() == paired.points.size());
+      for (std::size_t i = 0; i < fast.points.size(); ++i)
+        for (std::size_t c = 0; c < 3; ++c)
+          BOOST_TEST(cln::double_approx(cln::abs(fast.points[i].values[c] - paired.points[i].values[c])) < 1e-45);
+    }
+  }
 }
 
 BOOST_AUTO_TEST_CASE(root_at_infinity_is_not_a_solution) {

@@ -7,6 +7,7 @@
 #include <cln/rational.h>
 
 #include "rotlie/lie/coefficient_polynomial.hpp"
+#include "rotlie/solver/real_solutions.hpp"
 
 #include <array>
 #include <string>
@@ -32,7 +33,9 @@ struct critical_result {
 
 /// All real critical points of f restricted to g1 = g2 = 0, polynomials in the unknowns x_0, x_1, x_2
 /// with rational coefficients, to `digits` digits.
+/// method: how the reduced planar system is solved (automatic, or pairing as the second method).
 critical_result constrained_critical_points(const lie::coefficient_polynomial& f, const lie::coefficient_polynomial& g1,
-                                            const lie::coefficient_polynomial& g2, int digits);
+                                            const lie::coefficient_polynomial& g2, int digits,
+                                            solve_method method = solve_method::automatic);
 
 }  // namespace rotlie::solver
