@@ -164,18 +164,9 @@ exact_modified_hamiltonian compute_exact_modified_hamiltonian(const scheme_layou
   std::map<std::string, lie::coefficient_polynomial> value;
   for (std::size_t k = 0; k < layout.free_coefficients.size(); ++k)
     value.emplace(layout.free_coefficients[k], lie::coefficient_polynomial::unknown(static_cast<int>(k)));
-  for (const auto& last : layout.eliminated) {
-    lie::coefficient_polynomial others;
-    int multiplicity = 0;
-    for (const auto& s : layout.stages) {
-      if (s.coefficient[0] != last[0]) continue;
-      if (s.coefficient == last)
-        ++multiplicity;
-      else
-        others += value.at(s.coefficient);
-    }
-    value.emplace(last, (lie::coefficient_polynomial(1) - others) * lie::coefficient_polynomial(cln::recip(cln::cl_RA(multiplicity))));
-  }
+  solve_first_order_conditions(layout, value, [](const lie::coefficient_polynomial& x, int n) {
+    return x * lie::coefficient_polynomial(cln::recip(cln::cl_RA(n)));
+  });
   std::vector<exact_polynomial> x;
   for (const auto& s : layout.stages) {
     exact_polynomial stage;

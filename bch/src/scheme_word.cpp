@@ -96,19 +96,7 @@ coefficient_symbols make_coefficients(const scheme_layout& layout) {
     out.free.emplace(name, GiNaC::symbol(name));
     out.value.emplace(name, out.free.at(name));
   }
-  for (const auto& last : layout.eliminated) {
-    // Σ over stages carrying this name's letter = 1, solved for `last`.
-    GiNaC::ex others = 0;
-    int multiplicity = 0;
-    for (const auto& s : layout.stages) {
-      if (s.coefficient[0] != last[0]) continue;
-      if (s.coefficient == last)
-        ++multiplicity;
-      else
-        others += out.value.at(s.coefficient);
-    }
-    out.value.emplace(last, ((1 - others) / multiplicity).expand());
-  }
+  solve_first_order_conditions(layout, out.value, [](const GiNaC::ex& x, int n) { return (x / n).expand(); });
   return out;
 }
 

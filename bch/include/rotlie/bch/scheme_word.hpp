@@ -57,4 +57,23 @@ struct coefficient_symbols {
 };
 coefficient_symbols make_coefficients(const scheme_layout& layout);
 
+/// The same first-order solve in any coefficient ring R: `value` holds the free coefficients on entry
+/// and every coefficient on exit; `divide(x, n)` is x / n in R.
+template <class R, class Divide>
+void solve_first_order_conditions(const scheme_layout& layout, std::map<std::string, R>& value, Divide divide) {
+  for (const auto& last : layout.eliminated) {
+    // Σ over stages carrying this name's letter = 1, solved for `last`.
+    R others = R(0);
+    int multiplicity = 0;
+    for (const auto& s : layout.stages) {
+      if (s.coefficient[0] != last[0]) continue;
+      if (s.coefficient == last)
+        ++multiplicity;
+      else
+        others = others + value.at(s.coefficient);
+    }
+    value.emplace(last, divide(R(1) - others, multiplicity));
+  }
+}
+
 }  // namespace rotlie::bch
