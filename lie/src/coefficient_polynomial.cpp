@@ -174,15 +174,13 @@ coefficient_polynomial operator*(const coefficient_polynomial& a, const coeffici
   if (a.is_zero() || b.is_zero()) return out;
   if (b.terms_.size() == 1 && b.terms_[0].key == 0) return coefficient_polynomial(a) *= b.terms_[0].c;
   if (a.terms_.size() == 1 && a.terms_[0].key == 0) return coefficient_polynomial(b) *= a.terms_[0].c;
+  // Keys add without carries while every exponent of the product stays below 256: checked once.
+  for (int k = 0; k < coefficient_polynomial::max_unknowns; ++k)
+    if (a.degree(k) + b.degree(k) > static_cast<int>(mask)) throw std::overflow_error("coefficient_polynomial: exponent out of range");
   std::vector<coefficient_polynomial::term> products;
   products.reserve(a.terms_.size() * b.terms_.size());
   for (const auto& x : a.terms_)
-    for (const auto& y : b.terms_) {
-      for (int k = 0; k < coefficient_polynomial::max_unknowns; ++k)
-        if (exponent_of(x.key, k) + exponent_of(y.key, k) > static_cast<int>(mask))
-          throw std::overflow_error("coefficient_polynomial: exponent out of range");
-      products.push_back({x.key + y.key, x.c * y.c});
-    }
+    for (const auto& y : b.terms_) products.push_back({x.key + y.key, x.c * y.c});
   out.combine_sorted(std::move(products));
   return out;
 }

@@ -1,6 +1,7 @@
 #pragma once
-// Internal to the solver: a bivariate polynomial as rows in u, evaluated exactly or in floating point,
-// and the double-precision complex roots of a univariate polynomial (starting points only).
+// Internal to the solver: a bivariate polynomial as rows in u, evaluated exactly or in floating point;
+// its coefficients in v as univariate polynomials in u; Horner and the derivative of a univariate
+// polynomial in floating point; the double-precision complex roots of a univariate polynomial.
 #include <cln/float.h>
 #include <cln/rational.h>
 #include <cln/real.h>
@@ -13,11 +14,39 @@
 #include <vector>
 
 #include "rotlie/lie/coefficient_polynomial.hpp"
+#include "rotlie/solver/rational_polynomial.hpp"
 
 namespace rotlie::solver::detail {
 
 using lie::coefficient_polynomial;
 inline cln::cl_RA ten_to_minus(int n) { return cln::recip(cln::expt(cln::cl_RA(10), n)); }
+
+/// The coefficients of e in v (index = power of v), each a polynomial in the unknown u; e holds no
+/// other unknown.
+inline std::vector<rational_polynomial> rows_in_u(const coefficient_polynomial& e, int u, int v) {
+  std::vector<rational_polynomial> rows;
+  for (int j = 0; j <= e.degree(v); ++j) {
+    const coefficient_polynomial cj = e.coefficient(v, j);
+    std::vector<cln::cl_RA> c(static_cast<std::size_t>(std::max(cj.degree(u), 0)) + 1, 0);
+    for (const auto& t : cj.terms()) c[static_cast<std::size_t>(coefficient_polynomial::unpack(t.key)[static_cast<std::size_t>(u)])] = t.c;
+    rows.emplace_back(std::move(c));
+  }
+  return rows;
+}
+
+/// Σ c_i x^i by Horner (c: index = power), in the precision of x.
+inline cln::cl_F horner(const std::vector<cln::cl_F>& c, const cln::cl_F& x) {
+  cln::cl_F r = cln::cl_float(0, x);
+  for (auto it = c.rbegin(); it != c.rend(); ++it) r = r * x + *it;
+  return r;
+}
+
+/// The derivative's coefficients.
+inline std::vector<cln::cl_F> derivative(const std::vector<cln::cl_F>& c) {
+  std::vector<cln::cl_F> d;
+  for (std::size_t j = 1; j < c.size(); ++j) d.push_back(c[j] * cln::cl_float(cln::cl_I(static_cast<long>(j)), c[j]));
+  return d;
+}
 
 // A bivariate polynomial as rows c[i][j] of u^i v^j, evaluated first in u (once per root u), then in v
 // by Horner: exactly (T = cl_RA) or in floating point of a fixed precision (T = cl_F).

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "bivariate_rows.hpp"
 #include "rotlie/solver/real_solutions.hpp"
 #include "rotlie/solver/resultant.hpp"
 
@@ -15,7 +16,7 @@ namespace rotlie::solver {
 namespace {
 
 using lie::coefficient_polynomial;
-cln::cl_RA ten_to_minus(int n) { return cln::recip(cln::expt(cln::cl_RA(10), n)); }
+using detail::ten_to_minus;
 
 coefficient_polynomial determinant3(const coefficient_polynomial& f, const coefficient_polynomial& g1,
                                     const coefficient_polynomial& g2) {

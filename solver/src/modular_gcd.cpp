@@ -1,6 +1,7 @@
-// gcd of two univariate polynomials over Q by images modulo word-size primes: the monic gcd modulo
-// each prime, Chinese remaindering of primes whose image has the smallest degree seen, rational
-// reconstruction, and exact trial division as the proof. A candidate G that divides a and b over Q
+// Modular algorithms for univariate polynomials over Q: a square-free certificate modulo one prime,
+// and the gcd by images modulo word-size primes: the monic gcd modulo each prime, Chinese
+// remaindering of primes whose image has the smallest degree seen, rational reconstruction, and
+// exact trial division as the proof. A candidate G that divides a and b over Q
 // and has the degree of a modular image (an upper bound on the true degree) is the gcd.
 #include <cln/integer.h>
 
@@ -93,6 +94,19 @@ std::vector<cln::cl_I> integer_coefficients(const rational_polynomial& p) {
 }
 
 }  // namespace
+
+// gcd(p, p') = 1 modulo 2^61 − 1 with the degree kept: the discriminant is then nonzero modulo the
+// prime, hence nonzero over Q.
+bool square_free_certified_mod_prime(const rational_polynomial& p) {
+  if (p.degree() < 2) return true;
+  constexpr word prime = (word{1} << 61) - 1;
+  const auto c = integer_coefficients(p);
+  if (residue(c.back(), prime) == 0) return false;  // the prime divides the leading coefficient: no verdict
+  modular_poly a, slope;
+  for (const auto& x : c) a.push_back(residue(x, prime));
+  for (std::size_t i = 1; i < a.size(); ++i) slope.push_back(mul(a[i], i % prime, prime));
+  return gcd_mod(a, slope, prime).size() == 1;  // a nonzero constant
+}
 
 rational_polynomial modular_gcd(const rational_polynomial& a, const rational_polynomial& b) {
   if (a.is_zero() || b.is_zero()) return gcd(a, b);

@@ -1,5 +1,7 @@
 #include "rotlie/solver/rational_polynomial.hpp"
 
+#include "bivariate_rows.hpp"
+
 #include <cln/integer.h>
 
 #include <algorithm>
@@ -11,19 +13,6 @@ rational_polynomial::rational_polynomial(std::vector<cln::cl_RA> coefficients) :
 
 void rational_polynomial::trim() {
   while (!c_.empty() && cln::zerop(c_.back())) c_.pop_back();
-}
-
-rational_polynomial rational_polynomial::from_ex(const GiNaC::ex& e, const GiNaC::symbol& x) {
-  const GiNaC::ex p = e.expand();
-  if (!p.is_polynomial(x)) throw std::invalid_argument("not a polynomial");
-  std::vector<cln::cl_RA> c;
-  for (int d = 0; d <= p.degree(x); ++d) {
-    const GiNaC::ex k = p.coeff(x, d);
-    if (!GiNaC::is_a<GiNaC::numeric>(k) || !GiNaC::ex_to<GiNaC::numeric>(k).is_rational())
-      throw std::invalid_argument("coefficients must be rational numbers");
-    c.push_back(cln::the<cln::cl_RA>(GiNaC::ex_to<GiNaC::numeric>(k).to_cl_N()));
-  }
-  return rational_polynomial(std::move(c));
 }
 
 cln::cl_RA rational_polynomial::operator()(const cln::cl_RA& x) const {
@@ -238,11 +227,7 @@ cln::cl_RA root_polisher::polish(const root_interval& r) const {
   const int sign_hi = sign_at(r.hi);
   if (sign_hi == 0) return r.hi;
   const cln::float_format_t format = cln::float_format(digits_ + 40);
-  const auto horner = [](const std::vector<cln::cl_F>& c, const cln::cl_F& x) {
-    cln::cl_F s = c.back();
-    for (std::size_t i = c.size() - 1; i-- > 0;) s = s * x + c[i];
-    return s;
-  };
+  using detail::horner;
   cln::cl_F lo = cln::cl_float(r.lo, format), hi = cln::cl_float(r.hi, format);
   cln::cl_F x = (lo + hi) / 2;
   const cln::cl_F step_goal = cln::cl_float(width_ / 1000, format);

@@ -44,13 +44,18 @@ eliminant_roots isolate(const rational_polynomial& eliminant) {
   return out;
 }
 
+// Every real root of the eliminant, certified to 10^-(digits+10)/2.
+std::vector<cln::cl_RA> polished_roots(const eliminant_roots& in_u, int digits) {
+  const root_polisher polisher(in_u.square_free, digits);
+  std::vector<cln::cl_RA> us;
+  for (const auto& r : in_u.intervals) us.push_back(polisher.polish(r));
+  return us;
+}
+
 // The pairing method: the real roots v of the other resultant, every pair with the given u tested.
 std::vector<real_point> pair_roots(const coefficient_polynomial& e1, const coefficient_polynomial& e2, int u, int v,
                                    const std::vector<cln::cl_RA>& us, int digits) {
-  std::vector<cln::cl_RA> vs;
-  const eliminant_roots in_v = isolate(resultant_in(e1, e2, u, v));
-  const root_polisher polish_v(in_v.square_free, digits);
-  for (const auto& r : in_v.intervals) vs.push_back(polish_v.polish(r));
+  const std::vector<cln::cl_RA> vs = polished_roots(isolate(resultant_in(e1, e2, u, v)), digits);
   const bivariate b1(e1, u, v), b2(e2, u, v);
   // A true solution leaves |e| ≲ deg·|terms|·width; any other pair leaves a fixed nonzero algebraic
   // number, far above 10^-(digits+3) of the size of the terms.
@@ -67,13 +72,6 @@ std::vector<real_point> pair_roots(const coefficient_polynomial& e1, const coeff
   return points;
 }
 
-std::vector<cln::cl_RA> polished_roots(const eliminant_roots& in_u, int digits) {
-  const root_polisher polisher(in_u.square_free, digits);
-  std::vector<cln::cl_RA> us;
-  for (const auto& r : in_u.intervals) us.push_back(polisher.polish(r));
-  return us;
-}
-
 // Back-substitution at every simple real root of the eliminant (exactly one common root above it,
 // real); the multiple roots are set aside in `multiple_roots` and searched without that promise.
 // nullopt when a simple root yields nothing and is not a point at infinity: the caller then pairs.
@@ -84,13 +82,7 @@ std::optional<std::vector<real_point>> back_substitute(const coefficient_polynom
   const cln::cl_RA width = ten_to_minus(digits + 10);
   // Where both leading coefficients in v vanish, R vanishes for a point at infinity; R square-free
   // there leaves no finite solution above that root. Those roots are the roots of gcd(lc1, lc2).
-  const auto leading = [&](const coefficient_polynomial& e) {
-    const coefficient_polynomial lc = e.coefficient(v, e.degree(v));
-    std::vector<cln::cl_RA> c(static_cast<std::size_t>(std::max(lc.degree(u), 0)) + 1, 0);
-    for (const auto& t : lc.terms()) c[static_cast<std::size_t>(coefficient_polynomial::unpack(t.key)[static_cast<std::size_t>(u)])] = t.c;
-    return rational_polynomial(std::move(c));
-  };
-  const rational_polynomial at_infinity = gcd(leading(e1), leading(e2));
+  const rational_polynomial at_infinity = gcd(rows_in_u(e1, u, v).back(), rows_in_u(e2, u, v).back());
   const auto root_of = [&](const rational_polynomial& q, const cln::cl_RA& x) {
     return q.degree() >= 1 && cln::signum(q(x - width / 2)) * cln::signum(q(x + width / 2)) <= 0;
   };
@@ -124,20 +116,17 @@ std::optional<std::vector<real_point>> back_substitute(const coefficient_polynom
 bool share_factor_in_u(const coefficient_polynomial& e1, const coefficient_polynomial& e2, int u, int v) {
   const auto content = [&](const coefficient_polynomial& e) {
     rational_polynomial g;
-    for (int j = 0; j <= e.degree(v); ++j) {
-      const coefficient_polynomial cj = e.coefficient(v, j);
-      if (cj.is_zero()) continue;
-      std::vector<cln::cl_RA> c(static_cast<std::size_t>(cj.degree(u)) + 1, 0);
-      for (const auto& t : cj.terms()) c[static_cast<std::size_t>(coefficient_polynomial::unpack(t.key)[static_cast<std::size_t>(u)])] = t.c;
-      g = g.is_zero() ? rational_polynomial(c) : gcd(g, rational_polynomial(c));
-      if (g.degree() == 0) return g;
+    for (const auto& row : rows_in_u(e, u, v)) {
+      if (row.is_zero()) continue;
+      g = g.is_zero() ? row : modular_gcd(g, row);
+      if (g.degree() == 0) break;
     }
     return g;
   };
   const rational_polynomial c1 = content(e1);
   if (c1.degree() <= 0) return false;
   const rational_polynomial c2 = content(e2);
-  return c2.degree() > 0 && gcd(c1, c2).degree() > 0;
+  return c2.degree() > 0 && modular_gcd(c1, c2).degree() > 0;
 }
 
 // R with every factor of q that it holds more than once reduced to one copy: known multiple roots

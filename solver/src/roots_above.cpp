@@ -21,23 +21,13 @@ std::optional<real_point> common_root_above(const float_system& f, const cln::cl
   const cln::float_format_t format = cln::float_format(digits + 30);
   const cln::cl_F tolerance = cln::cl_float(ten_to_minus(digits + 3), format);
   const cln::cl_F converged = cln::cl_float(ten_to_minus(digits + 12), format);
-  const cln::cl_F zero = cln::cl_float(0, format), one = cln::cl_float(1, format);
+  const cln::cl_F one = cln::cl_float(1, format);
   const cln::cl_F x0 = cln::cl_float(u0, format);
   const cln::cl_F half_width = cln::cl_float(ten_to_minus(digits + 10) / 2, format);
   std::array<float_bivariate_rows::in_v, 2> at{f.e1.at_u(x0), f.e2.at_u(x0)};
   // Coefficients that vanish at the exact root are zero, not tiny: else they add roots near infinity.
   at[0].value.resize(static_cast<std::size_t>(f.e1.degree_v_at_root(x0, half_width)) + 1);
   at[1].value.resize(static_cast<std::size_t>(f.e2.degree_v_at_root(x0, half_width)) + 1);
-  const auto derivative = [&](const std::vector<cln::cl_F>& c) {
-    std::vector<cln::cl_F> d;
-    for (std::size_t j = 1; j < c.size(); ++j) d.push_back(c[j] * cln::cl_float(cln::cl_I(static_cast<long>(j)), format));
-    return d;
-  };
-  const auto horner = [&](const std::vector<cln::cl_F>& c, const cln::cl_F& y) {
-    cln::cl_F r = zero;
-    for (auto it = c.rbegin(); it != c.rend(); ++it) r = r * y + *it;
-    return r;
-  };
   const std::array<std::vector<cln::cl_F>, 2> slope{derivative(at[0].value), derivative(at[1].value)};
   std::vector<std::pair<double, double>> starts;  // (relative |other| + |imaginary part|, v)
   for (std::size_t source = 0; source < 2; ++source) {
@@ -59,8 +49,7 @@ std::optional<real_point> common_root_above(const float_system& f, const cln::cl
     cln::cl_F y = y0;
     bool newton_converged = false;
     for (int iteration = 0; iteration < 60 && !newton_converged; ++iteration) {
-      const cln::cl_F s0 = slope[0].empty() ? zero : horner(slope[0], y);
-      const cln::cl_F s1 = slope[1].empty() ? zero : horner(slope[1], y);
+      const cln::cl_F s0 = horner(slope[0], y), s1 = horner(slope[1], y);
       // Slopes relative to each equation's own size: one may be a large multiple of a small factor.
       const cln::cl_F ay = cln::max(one, cln::abs(y));
       const cln::cl_F size0 = one + horner(at[0].magnitude, ay), size1 = one + horner(at[1].magnitude, ay);
@@ -111,10 +100,9 @@ cln::cl_RA simplest_rational_between(const cln::cl_RA& lo, const cln::cl_RA& hi)
 // e2(r, ·)) over Q, certified and polished.
 std::vector<real_point> common_roots_above_rational(const coefficient_polynomial& e1, const coefficient_polynomial& e2,
                                                     int u, int v, const cln::cl_RA& r, int digits) {
-  const auto at = [&](const coefficient_polynomial& e) {
-    const coefficient_polynomial p = e.substitute(u, r);
-    std::vector<cln::cl_RA> c(static_cast<std::size_t>(std::max(p.degree(v), 0)) + 1, 0);
-    for (const auto& t : p.terms()) c[static_cast<std::size_t>(coefficient_polynomial::unpack(t.key)[static_cast<std::size_t>(v)])] = t.c;
+  const auto at = [&](const coefficient_polynomial& e) {  // e(r, ·): the rows in v of e with u = r
+    std::vector<cln::cl_RA> c;
+    for (const auto& row : rows_in_u(e, u, v)) c.push_back(row(r));
     return rational_polynomial(std::move(c));
   };
   const rational_polynomial p1 = at(e1), p2 = at(e2);
@@ -144,37 +132,27 @@ std::optional<std::vector<real_point>> common_roots_above_algebraic(const coeffi
   const cln::cl_RA half_width = ten_to_minus(digits + 30) / 2;
   residue_field field(multiple, alpha - half_width, alpha + half_width);
   const auto coefficients_in_v = [&](const coefficient_polynomial& e) {
-    std::vector<rational_polynomial> out;
-    for (int j = 0; j <= e.degree(v); ++j) {
-      const coefficient_polynomial cj = e.coefficient(v, j);
-      std::vector<cln::cl_RA> c(static_cast<std::size_t>(std::max(cj.degree(u), 0)) + 1, 0);
-      for (const auto& t : cj.terms()) c[static_cast<std::size_t>(coefficient_polynomial::unpack(t.key)[static_cast<std::size_t>(u)])] = t.c;
-      out.push_back(field.reduce(rational_polynomial(std::move(c))));
-    }
-    return out;
+    std::vector<rational_polynomial> rows = rows_in_u(e, u, v);
+    for (auto& row : rows) row = field.reduce(row);
+    return rows;
   };
   std::vector<real_point> points;
   auto g = field.gcd_in_v(coefficients_in_v(e1), coefficients_in_v(e2));
   if (g.size() <= 1) return points;  // coprime above α: no common root
-  std::vector<rational_polynomial> slope;
-  for (std::size_t j = 1; j < g.size(); ++j) slope.push_back(g[j] * rational_polynomial({cln::cl_RA(static_cast<long>(j))}));
-  const auto repeated = field.gcd_in_v(g, slope);
+  std::vector<rational_polynomial> g_slope;  // ∂g/∂v in Q(α)[v]
+  for (std::size_t j = 1; j < g.size(); ++j) g_slope.push_back(g[j] * rational_polynomial({cln::cl_RA(static_cast<long>(j))}));
+  const auto repeated = field.gcd_in_v(g, g_slope);
   if (repeated.size() > 1) g = field.quotient_in_v(g, repeated);
   // g's coefficients at α, in floating point; its real roots are simple now.
   const cln::float_format_t format = cln::float_format(digits + 30);
-  const cln::cl_F a = cln::cl_float(alpha, format), zero = cln::cl_float(0, format), one = cln::cl_float(1, format);
-  std::vector<cln::cl_F> value, derivative;
+  const cln::cl_F a = cln::cl_float(alpha, format), one = cln::cl_float(1, format);
+  std::vector<cln::cl_F> value;
   for (const auto& c : g) {
-    cln::cl_F x = zero;
-    for (auto it = c.coefficients().rbegin(); it != c.coefficients().rend(); ++it) x = x * a + cln::cl_float(*it, format);
-    value.push_back(x);
+    std::vector<cln::cl_F> coefficients;
+    for (const auto& x : c.coefficients()) coefficients.push_back(cln::cl_float(x, format));
+    value.push_back(horner(coefficients, a));
   }
-  for (std::size_t j = 1; j < value.size(); ++j) derivative.push_back(value[j] * cln::cl_float(cln::cl_I(static_cast<long>(j)), format));
-  const auto horner = [&](const std::vector<cln::cl_F>& c, const cln::cl_F& y) {
-    cln::cl_F r = zero;
-    for (auto it = c.rbegin(); it != c.rend(); ++it) r = r * y + *it;
-    return r;
-  };
+  const std::vector<cln::cl_F> slope = derivative(value);
   const cln::cl_F converged = cln::cl_float(ten_to_minus(digits + 15), format);
   const cln::cl_F tolerance = cln::cl_float(ten_to_minus(digits + 3), format);
   const float_bivariate_rows b1(e1, u, v, format), b2(e2, u, v, format);
@@ -184,7 +162,7 @@ std::optional<std::vector<real_point>> common_roots_above_algebraic(const coeffi
     cln::cl_F y = cln::cl_float(cln::rational(cln::cl_DF(z.real())), format);
     bool newton_converged = false;
     for (int iteration = 0; iteration < 60 && !newton_converged; ++iteration) {
-      const cln::cl_F s = horner(derivative, y);
+      const cln::cl_F s = horner(slope, y);
       if (cln::zerop(s)) break;
       const cln::cl_F step = horner(value, y) / s;
       y = y - step;

@@ -5,7 +5,6 @@
 #include <cln/float.h>
 #include <cln/integer.h>
 #include <cln/rational.h>
-#include <ginac/ginac.h>
 
 #include <vector>
 
@@ -15,8 +14,6 @@ class rational_polynomial {
  public:
   rational_polynomial() = default;
   explicit rational_polynomial(std::vector<cln::cl_RA> coefficients);  ///< index = power
-  /// From a GiNaC polynomial in one symbol with rational coefficients; throws std::invalid_argument otherwise.
-  static rational_polynomial from_ex(const GiNaC::ex& e, const GiNaC::symbol& x);
 
   int degree() const { return static_cast<int>(c_.size()) - 1; }  ///< −1 for the zero polynomial
   bool is_zero() const { return c_.empty(); }

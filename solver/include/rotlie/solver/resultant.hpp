@@ -1,9 +1,9 @@
 #pragma once
 // The resultant of two bivariate polynomials with rational coefficients, by evaluation and
-// interpolation: the Sylvester determinant is taken over the integers (fraction-free Bareiss) at
-// deg + 1 integer values of the kept unknown, and the exact polynomial is rebuilt by Newton
-// interpolation. Same result as GiNaC::resultant up to a constant factor, orders of magnitude faster
-// when the entries of the Sylvester matrix are themselves polynomials of degree 10–20.
+// interpolation: at deg + 1 integer values of the kept unknown, Res(a, b) = α^(n − deg r) Res(a, r)
+// with r the pseudo-remainder of the higher-degree polynomial by the lower one, whose Sylvester
+// determinant is small and taken over the integers (fraction-free Bareiss); the exact polynomial is
+// rebuilt by Newton interpolation. Same result as GiNaC::resultant up to a constant factor.
 #include "rotlie/lie/coefficient_polynomial.hpp"
 
 #include "rotlie/solver/rational_polynomial.hpp"
