@@ -1,9 +1,33 @@
-# rotlie_add_library(NAME SOURCES … [DEPENDS …]): the library rotlie_NAME with alias rotlie::NAME,
-# public headers in NAME/include, warnings applied.
+# rotlie_add_library(NAME SOURCES … [DEPENDS …] [PRIVATE_DEPENDS …] EXPORT numeric|symbolic):
+# the static library rotlie_NAME, alias rotlie::NAME (also its name in the installed package),
+# public headers in NAME/include, C++20 required of every consumer, warnings for its own sources only.
 function(rotlie_add_library name)
-  cmake_parse_arguments(L "" "" "SOURCES;DEPENDS" ${ARGN})
+  cmake_parse_arguments(L "" "EXPORT" "SOURCES;DEPENDS;PRIVATE_DEPENDS" ${ARGN})
   add_library(rotlie_${name} ${L_SOURCES})
-  add_library(rotlie::${name} ALIAS rotlie_${name})
-  target_include_directories(rotlie_${name} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include)
-  target_link_libraries(rotlie_${name} PUBLIC ${L_DEPENDS} PRIVATE rotlie::warnings)
+  target_link_libraries(rotlie_${name} PUBLIC ${L_DEPENDS} PRIVATE ${L_PRIVATE_DEPENDS} $<BUILD_INTERFACE:rotlie::warnings>)
+  rotlie_install_library(${name} ${L_EXPORT})
+endfunction()
+
+# rotlie_install_library(NAME numeric|symbolic): include paths for the build and install trees,
+# cxx_std_20, the alias rotlie::NAME, and the install rules of the library and its headers into the
+# export set of its side (the package's numeric or symbolic component).
+function(rotlie_install_library name side)
+  set(target rotlie_${name})
+  add_library(rotlie::${name} ALIAS ${target})
+  get_target_property(type ${target} TYPE)
+  if(type STREQUAL "INTERFACE_LIBRARY")
+    set(scope INTERFACE)
+  else()
+    set(scope PUBLIC)
+  endif()
+  target_include_directories(${target} ${scope} $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+                                                $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  # gnu++20 inside the project (CMAKE_CXX_EXTENSIONS); consumers choose their own extensions.
+  target_compile_features(${target} ${scope} cxx_std_20)
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name})
+  install(TARGETS ${target} EXPORT rotlie_${side}_targets
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(DIRECTORY include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
 endfunction()
