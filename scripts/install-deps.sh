@@ -1,16 +1,27 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages rotlie needs (idempotent: already-installed packages are skipped).
+# Installs the Debian 12 packages rotlie's build uses (idempotent: installed packages are skipped).
+#   scripts/install-deps.sh                 everything (symbolic side, CLI, reports, tests, benchmarks)
+#   scripts/install-deps.sh --numeric-only  what the numeric-only preset needs: no GiNaC, no CLN
 set -euo pipefail
 
-packages=(
-  g++ cmake make pkg-config git
-  libginac-dev libcln-dev        # symbolic side: lie/, bch/, solver/
-  libeigen3-dev libgsl-dev       # numeric side
-  libboost-dev libboost-test-dev # Boost.Math headers, Boost.Test
-  libcli11-dev nlohmann-json3-dev
+numeric=(
+  g++ cmake make
+  libboost-dev libboost-test-dev # Boost.Math, Multiprecision float128 (libquadmath comes with g++), Boost.Test
+)
+symbolic=(
+  pkg-config libginac-dev libcln-dev # lie/, bch/, solver/
+  libeigen3-dev                  # solver/ (eigenvalues)
+  libgsl-dev                     # not used by the build today; kept while GSL is measured for the exact flow
+  libcli11-dev nlohmann-json3-dev # apps/rotlie, reports/
   libbenchmark-dev               # bench/
   gnuplot-nox                    # report figures
 )
+
+case "${1:-}" in
+  "") packages=("${numeric[@]}" "${symbolic[@]}") ;;
+  --numeric-only) packages=("${numeric[@]}") ;;
+  *) echo "install-deps: error: unknown option '$1' (only --numeric-only)" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do
