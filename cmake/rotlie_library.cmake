@@ -22,9 +22,13 @@ function(rotlie_install_library name side)
   endif()
   target_include_directories(${target} ${scope} $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
                                                 $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
-  # gnu++20 inside the project (CMAKE_CXX_EXTENSIONS); consumers choose their own extensions.
+  # Consumers get C++20 from the targets. The libraries themselves compile as gnu++20: with
+  # __STRICT_ANSI__ (-std=c++20) Boost 1.74's float128 functions do not compile.
   target_compile_features(${target} ${scope} cxx_std_20)
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${name})
+  if(NOT type STREQUAL "INTERFACE_LIBRARY")
+    set_target_properties(${target} PROPERTIES CXX_EXTENSIONS ON)
+  endif()
   install(TARGETS ${target} EXPORT rotlie_${side}_targets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}

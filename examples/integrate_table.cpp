@@ -3,8 +3,8 @@
 //
 //   integrate_table [TABLE_FILE]
 //
-// Without a file, the reference scheme ABC4-S5-McLachlan is written as a table file and read back,
-// so the text format is exercised either way. The body is the table's `inertia` line when it has
+// Without a file, the reference scheme ABC4-S5-McLachlan is written as a table file into the
+// current directory and read back, so the text format is exercised either way. The body is the table's `inertia` line when it has
 // one (a scheme solved for that body), water otherwise (LV section 4.3). The attitude and momentum
 // after T = 10 are compared with the exact solution at steps h and h/2; the run fails unless the
 // error is small and falls at least as fast as the declared order predicts.
@@ -54,10 +54,19 @@ std::string read_file(const std::string& path) {
 // "p/q" or a decimal, as the `inertia` line writes them.
 double rational_value(const std::string& text) {
   const auto slash = text.find('/');
-  std::size_t used = 0;
-  const double num = std::stod(text.substr(0, slash), &used);
-  if (slash == std::string::npos) return num;
-  return num / std::stod(text.substr(slash + 1));
+  auto number = [&](const std::string& part) {
+    std::size_t used = 0;
+    double x = 0;
+    try {
+      x = std::stod(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (part.empty() || used != part.size()) throw std::invalid_argument("bad moment of inertia '" + text + "'");
+    return x;
+  };
+  if (slash == std::string::npos) return number(text);
+  return number(text.substr(0, slash)) / number(text.substr(slash + 1));
 }
 
 vec3<double> body_of(const scheme_table& t) {
@@ -101,14 +110,24 @@ int main(int argc, char** argv) {
       path = argv[1];
     } else {
       path = "ABC4-S5-McLachlan.table";
-      std::ofstream(path) << table_text(*rotlie::schemes::reference_scheme("ABC4-S5-McLachlan"));
+      std::ofstream out(path);
+      out << table_text(*rotlie::schemes::reference_scheme("ABC4-S5-McLachlan"));
+      if (!out.flush()) {
+        std::cerr << "integrate_table: error: cannot write " << path << "\n";
+        return 1;
+      }
+      std::printf("wrote %s\n", path.c_str());
     }
     table = rotlie::schemes::parse_scheme_table(read_file(path));
     I = body_of(table);
     rotlie::models::validate_moments(I);
-  } catch (const std::exception& e) {
+    rotlie::schemes::check_scheme_table(table);  // what the stepper checks, reported here as bad input
+  } catch (const std::invalid_argument& e) {
     std::cerr << "integrate_table: error: " << e.what() << "\n";
     return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "integrate_table: error: " << e.what() << "\n";
+    return 1;
   }
 
   const rotlie::models::composition_stepper<double> stepper(table, I);
