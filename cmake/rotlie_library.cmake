@@ -3,6 +3,9 @@
 # public headers in NAME/include, C++20 required of every consumer, warnings for its own sources only.
 function(rotlie_add_library name)
   cmake_parse_arguments(L "" "EXPORT" "SOURCES;DEPENDS;PRIVATE_DEPENDS" ${ARGN})
+  if(NOT L_EXPORT MATCHES "^(numeric|symbolic)$")
+    message(FATAL_ERROR "rotlie_add_library(${name}): say which side of the package it belongs to: EXPORT numeric or EXPORT symbolic")
+  endif()
   add_library(rotlie_${name} ${L_SOURCES})
   target_link_libraries(rotlie_${name} PUBLIC ${L_DEPENDS} PRIVATE ${L_PRIVATE_DEPENDS} $<BUILD_INTERFACE:rotlie::warnings>)
   rotlie_install_library(${name} ${L_EXPORT})
