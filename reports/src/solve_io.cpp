@@ -42,6 +42,7 @@ nlohmann::json solve_json(const solver::family_result& r, const lie::moments_of_
       j["eliminated"] = s.eliminated;
       j["discarded"] = s.discarded;
     }
+    if (s.uncertified > 0) j["uncertified"] = s.uncertified;
     systems.push_back(std::move(j));
   }
   return {{"inertia", {text(body.I[0]), text(body.I[1]), text(body.I[2])}},
@@ -75,7 +76,10 @@ std::string solve_text(const solver::family_result& r, const lie::moments_of_ine
   }
   if (r.solutions.size() > rows) out << "… " << r.solutions.size() - rows << " more (all of them with --json or --out)\n";
   for (const auto& s : r.systems)
-    if (s.degenerate) out << "\n" << s.scheme << " " << s.permutation << ": degenerate — " << s.note;
+    if (s.degenerate)
+      out << "\n" << s.scheme << " " << s.permutation << ": degenerate — " << s.note;
+    else if (s.uncertified > 0)
+      out << "\n" << s.scheme << " " << s.permutation << ": " << s.note;
   out << "\n";
   return out.str();
 }
