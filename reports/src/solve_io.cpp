@@ -1,6 +1,7 @@
 #include "rotlie/reports/solve_io.hpp"
 
 #include <cln/rational_io.h>
+#include <cln/real.h>
 
 #include <cstdio>
 #include <sstream>
@@ -14,6 +15,14 @@ std::string text(const cln::cl_RA& x) {
   std::ostringstream s;
   s << x;
   return s.str();
+}
+
+// The relative residual as a number; below a double's normal range (--digits near 300) as its
+// decimal text, which a double would round to 0 or not hold at all.
+nlohmann::json residual_json(const cln::cl_RA& r) {
+  static const cln::cl_RA smallest = cln::recip(cln::expt(cln::cl_RA(10), 300));
+  if (!cln::zerop(r) && r < smallest) return lie::to_decimal(r, 3);
+  return cln::double_approx(r);
 }
 
 }  // namespace
@@ -30,7 +39,7 @@ nlohmann::json solve_json(const solver::family_result& r, const lie::moments_of_
                          {"word", s.layout.permuted},
                          {"coefficients", coefficients},
                          {"analytic_remainder", s.analytic_remainder},
-                         {"residual", cln::double_approx(s.residual)}});
+                         {"residual", residual_json(s.residual)}});
   }
   nlohmann::json systems = nlohmann::json::array();
   for (const auto& s : r.systems) {
