@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -88,4 +89,35 @@ BOOST_AUTO_TEST_CASE(solve_json_and_tables_for_a_scaled_body_equal_the_unit_body
   BOOST_TEST(!std::regex_search(ranked, not_a_number()));
   BOOST_TEST(ranked.find("N2 BAC (2)") != std::string::npos);
   fs::remove_all(scratch());
+}
+
+BOOST_AUTO_TEST_CASE(remainder_json_values_of_a_scaled_body_follow_homogeneity) {
+  // H_Rk is homogeneous of degree −k in the moments: at scale 10^s each coefficient is the unit
+  // body's times 10^(−k·s). Beyond a double's range the value is a decimal string, never null or 0.
+  const std::string coeffs =
+      " --coeffs a1=4.550462477459105042901927628113604130174e-2,a2=1.520832836133472662135329443017579676715e-1 --order 5 --json";
+  const auto unit = nlohmann::json::parse(rotlie("remainder --scheme N2 --perm BAC --inertia water" + coeffs));
+  for (int s : {-100, 100}) {
+    const std::string text = rotlie("remainder --scheme N2 --perm BAC --inertia " + water_times(s) + coeffs);
+    BOOST_TEST(!std::regex_search(text, not_a_number()));
+    const auto scaled = nlohmann::json::parse(text);
+    std::size_t checked = 0;
+    for (std::size_t i = 0; i < unit.at("orders").size(); ++i) {
+      const int k = unit["orders"][i]["order"].get<int>();
+      const auto& a = unit["orders"][i]["terms"];
+      const auto& b = scaled["orders"][i]["terms"];
+      BOOST_REQUIRE(a.size() == b.size());
+      for (std::size_t t = 0; t < a.size(); ++t) {
+        const double want_mantissa = a[t]["value"].get<double>();
+        const auto& got = b[t]["value"];
+        // got = want × 10^(−k·s): compare the mantissa, from the number or the decimal string
+        const double got_value = got.is_string() ? std::stod(std::regex_replace(got.get<std::string>(), std::regex("e-?[0-9]+$"), "")) *
+                                                       std::pow(10.0, std::stoi(std::regex_replace(got.get<std::string>(), std::regex("^[^e]*e"), "")) + k * s)
+                                                 : got.get<double>() * std::pow(10.0, k * s);
+        BOOST_TEST(got_value == want_mantissa, boost::test_tools::tolerance(1e-12));
+        ++checked;
+      }
+    }
+    BOOST_TEST(checked >= 10u);  // H_R3 and H_R5 of N2 BAC: 3 + 7 terms
+  }
 }
