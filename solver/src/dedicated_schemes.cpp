@@ -124,6 +124,7 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
       report.real_solutions = static_cast<int>(points.size());
       if (report.degenerate) report.note = degeneracy_reason(body, named->split, perm, report.note);
       t = clock_type::now();
+      const cln::cl_RA accuracy = cln::recip(cln::expt(cln::cl_RA(10), digits + 10));
       int label = 0;
       for (const auto& point : points) {
         dedicated_solution s;
@@ -137,7 +138,9 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
           if (numeric.count(st.coefficient) != 0) continue;
           const auto& expression = k.coefficient_values.at(st.coefficient);
           if (expression.is_constant()) s.exact.push_back(st.coefficient);
-          s.coefficients.emplace_back(st.coefficient, expression(point));
+          // Within the solution's accuracy of 0 is 0: a table never prints 1e-450 for a vanishing stage.
+          const cln::cl_RA value = expression(point);
+          s.coefficients.emplace_back(st.coefficient, cln::abs(value) < accuracy ? cln::cl_RA(0) : value);
           numeric[st.coefficient] = cln::double_approx(s.coefficients.back().second);
         }
         // No solution leaves the solver unless its table can say `order 4`: the conditions vanish

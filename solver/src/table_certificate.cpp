@@ -56,7 +56,11 @@ struct tally {
 
 cln::cl_RA certificate_tolerance(int digits) { return cln::recip(cln::expt(cln::cl_RA(10), digits - 5)); }
 
-cln::cl_RA written_value(const cln::cl_RA& x, int digits) { return *lie::parse_exact_number(lie::to_decimal(x, digits)); }
+cln::cl_RA written_value(const cln::cl_RA& x, int digits) {
+  const auto v = lie::parse_exact_number(lie::to_decimal(x, digits));
+  if (!v) throw std::invalid_argument("a coefficient of " + lie::to_decimal(x, 3) + " cannot be written as a table's decimal");
+  return *v;
+}
 
 order_certificate certify_order_four(const bch::scheme_layout& layout, const lie::moments_of_inertia& body,
                                      const std::map<std::string, cln::cl_RA>& values, int digits) {
