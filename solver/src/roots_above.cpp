@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
 
 #include "rotlie/solver/residue_field.hpp"
@@ -35,6 +36,7 @@ std::optional<real_point> common_root_above(const float_system& f, const cln::cl
     const auto& other = at[1 - source];
     for (const auto& z : complex_roots(at[source].value)) {
       const double y = z.real();
+      if (!std::isfinite(y) || !std::isfinite(z.imag())) continue;  // a root at infinity in double
       // In the precision of the rows: a double would overflow for equations far from unit size.
       const cln::cl_F yf = cln::cl_float(cln::rational(cln::cl_DF(y)), format);
       const cln::cl_F value = horner(other.value, yf), size = horner(other.magnitude, cln::max(one, cln::abs(yf)));
@@ -158,6 +160,7 @@ std::optional<std::vector<real_point>> common_roots_above_algebraic(const coeffi
   const float_bivariate_rows b1(e1, u, v, format), b2(e2, u, v, format);
   const auto at1 = b1.at_u(a), at2 = b2.at_u(a);
   for (const auto& z : complex_roots(value)) {
+    if (!std::isfinite(z.real()) || !std::isfinite(z.imag())) return std::nullopt;  // not concluded: pair instead
     if (std::abs(z.imag()) > 1e-6 * (1 + std::abs(z.real()))) continue;  // a conjugate pair
     cln::cl_F y = cln::cl_float(cln::rational(cln::cl_DF(z.real())), format);
     bool newton_converged = false;
