@@ -168,3 +168,17 @@ BOOST_AUTO_TEST_CASE(malformed_tables_are_refused_with_a_reason) {
   // CRLF line ends are the same table
   BOOST_TEST(solver::certify_scheme_table_text(std::regex_replace(good, std::regex("\n"), "\r\n")).order == 4);
 }
+
+BOOST_AUTO_TEST_CASE(rs_and_three_free_coefficient_tables_certify_too) {
+  // Yoshida's RSRSRSR (eq. 49) in the RS splitting, and P1 BAC, R ABC (three free coefficients).
+  for (const auto& [scheme, perm] : std::vector<std::pair<std::string, std::string>>{
+           {"RSRSRSR", "ABC"}, {"SRSRSRS", "CBA"}, {"P1", "BAC"}, {"R", "ABC"}}) {
+    const auto r = solver::solve_dedicated(water(), {scheme}, {perm}, digits);
+    BOOST_TEST(!r.solutions.empty(), scheme);
+    for (const auto& s : r.solutions) {
+      const std::string text = solver::scheme_table_text(s, water(), digits);
+      BOOST_TEST(solver::certify_scheme_table_text(text).order == 4, s.name());
+      BOOST_TEST(solver::certify_scheme_table_text(rounded_stages(text, 8)).order < 4, s.name());
+    }
+  }
+}
