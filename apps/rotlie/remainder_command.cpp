@@ -1,3 +1,5 @@
+#include <cln/real.h>
+
 #include <iostream>
 
 #include "arguments.hpp"
@@ -33,6 +35,27 @@ std::vector<std::pair<std::string, cln::cl_RA>> parse_coefficients(const std::st
   return out;
 }
 
+// A body in another unit moves H_Rk's coefficients by powers of its scale (H_R5 of a body in units
+// of 1e-100 is ~1e500): beyond a double's range JSON's numeric `value` would be null or 0. There
+// the exact coefficient is given as a decimal string instead (17 significant digits).
+void values_beyond_double_as_decimals(nlohmann::json& j, const bch::remainder_result& r) {
+  static const cln::cl_RA largest = cln::expt(cln::cl_RA(10), 300), smallest = cln::recip(largest);
+  for (auto& order : j.at("orders")) {
+    const auto& h = r.k.remainder.at(order.at("order").get<std::size_t>());
+    auto term = order.at("terms").begin();
+    for (const auto& [m, c] : h.terms()) {
+      if (GiNaC::is_a<GiNaC::numeric>(c) && term->contains("value")) {
+        const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(c);
+        if (n.is_rational()) {
+          const cln::cl_RA x = cln::the<cln::cl_RA>(n.to_cl_N());
+          if (!cln::zerop(x) && (cln::abs(x) > largest || cln::abs(x) < smallest)) (*term)["value"] = lie::to_decimal(x, 17);
+        }
+      }
+      ++term;
+    }
+  }
+}
+
 }  // namespace
 
 int run_remainder(const remainder_options& options) {
@@ -58,8 +81,11 @@ int run_remainder(const remainder_options& options) {
   } catch (const std::invalid_argument& e) {
     throw usage_error(e.what());
   }
-  if (options.json)
-    std::cout << reports::remainder_json(result).dump(2) << "\n";
+  if (options.json) {
+    auto j = reports::remainder_json(result);
+    values_beyond_double_as_decimals(j, result);
+    std::cout << j.dump(2) << "\n";
+  }
   else if (options.latex)
     std::cout << reports::remainder_latex(result);
   else

@@ -55,6 +55,8 @@ int run_solve(const solve_options& options) {
     if (r.degenerate && degenerate < static_cast<long>(result.systems.size()))
       std::cerr << "rotlie: warning: " << r.scheme << " " << r.permutation << " is undefined for this body: " << r.note
                 << "\n";
+  for (const auto& r : result.systems)  // roots whose written coefficients would not be order 4
+    if (r.uncertified > 0) std::cerr << "rotlie: warning: " << r.scheme << " " << r.permutation << ": " << r.note << "\n";
   if (degenerate == static_cast<long>(result.systems.size()) && !result.systems.empty()) {
     const auto& r = result.systems.front();
     throw usage_error(r.scheme + " " + r.permutation + (result.systems.size() > 1 ? " (and every other system asked for)" : "") +

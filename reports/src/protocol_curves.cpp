@@ -102,7 +102,7 @@ double ratio_at_equal_cpu_time(const scheme_curve& worse, const scheme_curve& be
 }
 
 schemes::scheme_table table_of(const solver::dedicated_solution& s, const lie::moments_of_inertia& body) {
-  return schemes::parse_scheme_table(solver::scheme_table_text(s, body, 40));
+  return solver::scheme_table_of(s, body);
 }
 
 const solver::dedicated_solution& find_solution(const solver::family_result& r, const std::string& scheme,

@@ -1,6 +1,7 @@
 #include "rotlie/reports/solve_io.hpp"
 
 #include <cln/rational_io.h>
+#include <cln/real.h>
 
 #include <cstdio>
 #include <sstream>
@@ -14,6 +15,14 @@ std::string text(const cln::cl_RA& x) {
   std::ostringstream s;
   s << x;
   return s.str();
+}
+
+// The relative residual as a number; below a double's normal range (--digits near 300) as its
+// decimal text, which a double would round to 0 or not hold at all.
+nlohmann::json residual_json(const cln::cl_RA& r) {
+  static const cln::cl_RA smallest = cln::recip(cln::expt(cln::cl_RA(10), 300));
+  if (!cln::zerop(r) && r < smallest) return lie::to_decimal(r, 3);
+  return cln::double_approx(r);
 }
 
 }  // namespace
@@ -30,7 +39,7 @@ nlohmann::json solve_json(const solver::family_result& r, const lie::moments_of_
                          {"word", s.layout.permuted},
                          {"coefficients", coefficients},
                          {"analytic_remainder", s.analytic_remainder},
-                         {"residual", cln::double_approx(s.residual)}});
+                         {"residual", residual_json(s.residual)}});
   }
   nlohmann::json systems = nlohmann::json::array();
   for (const auto& s : r.systems) {
@@ -42,6 +51,7 @@ nlohmann::json solve_json(const solver::family_result& r, const lie::moments_of_
       j["eliminated"] = s.eliminated;
       j["discarded"] = s.discarded;
     }
+    if (s.uncertified > 0) j["uncertified"] = s.uncertified;
     systems.push_back(std::move(j));
   }
   return {{"inertia", {text(body.I[0]), text(body.I[1]), text(body.I[2])}},
@@ -75,7 +85,10 @@ std::string solve_text(const solver::family_result& r, const lie::moments_of_ine
   }
   if (r.solutions.size() > rows) out << "… " << r.solutions.size() - rows << " more (all of them with --json or --out)\n";
   for (const auto& s : r.systems)
-    if (s.degenerate) out << "\n" << s.scheme << " " << s.permutation << ": degenerate — " << s.note;
+    if (s.degenerate)
+      out << "\n" << s.scheme << " " << s.permutation << ": degenerate — " << s.note;
+    else if (s.uncertified > 0)
+      out << "\n" << s.scheme << " " << s.permutation << ": " << s.note;
   out << "\n";
   return out.str();
 }

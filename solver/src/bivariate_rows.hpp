@@ -99,11 +99,15 @@ class bivariate_in {
     for (auto it = c.rbegin(); it != c.rend(); ++it) s = s * y + *it;
     return s;
   }
-  /// |e(x, y)| when it is below tolerance × (1 + size of the terms), i.e. (x, y) is a root to that width.
+  /// |e(x, y)| / (size of the terms) when it is below tolerance, i.e. (x, y) is a root to that width.
+  /// Relative to the equation's own size, never to 1: the same verdict for e and 10^k e at any k. The
+  /// size bounds Σ |c_ij| |x|^i |y|^j with |x|, |y| raised to 1, the width the unknowns are known to.
   std::optional<T> vanishes(const in_v& at_x, const T& y, const T& tolerance) const {
     const T ay = cln::max(one_, cln::abs(y));
     const T r = cln::abs(horner(at_x.value, y));
-    if (r <= tolerance * (one_ + horner(at_x.magnitude, ay))) return r;
+    const T size = horner(at_x.magnitude, ay);
+    if (cln::zerop(size)) return cln::zerop(r) ? std::optional<T>(r) : std::nullopt;
+    if (r <= tolerance * size) return r / size;
     return std::nullopt;
   }
   T convert(const cln::cl_RA& x) const { return convert(x, format_of(one_)); }
@@ -125,11 +129,21 @@ using bivariate = bivariate_in<cln::cl_RA>;
 using float_bivariate_rows = bivariate_in<cln::cl_F>;
 
 // All complex roots of a univariate polynomial (exact coefficients, index = power), in double, as the
-// eigenvalues of its companion matrix: starting points only, every one is polished and checked.
+// eigenvalues of its companion matrix: starting points only, every one is polished and checked. The
+// coefficients are divided by the largest first, so that no size of the polynomial overflows a double.
 template <class T>
 inline std::vector<std::complex<double>> complex_roots(const std::vector<T>& exact) {
+  if (exact.empty()) return {};
+  T largest = cln::abs(exact.front());
+  for (const auto& x : exact) largest = cln::max(largest, cln::abs(x));
+  if (cln::zerop(largest)) return {};
+  // Ratios below 10^-300 are 0 here: converting them would underflow a double.
+  static const cln::cl_RA negligible = cln::recip(cln::expt(cln::cl_RA(10), 300));
   std::vector<double> c;
-  for (const auto& x : exact) c.push_back(cln::double_approx(x));
+  for (const auto& x : exact) {
+    const T ratio = x / largest;
+    c.push_back(cln::cl_R(cln::abs(ratio)) < cln::cl_R(negligible) ? 0.0 : cln::double_approx(ratio));
+  }
   while (!c.empty() && c.back() == 0) c.pop_back();
   if (c.size() < 2) return {};
   const auto n = static_cast<Eigen::Index>(c.size() - 1);

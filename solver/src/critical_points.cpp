@@ -108,8 +108,9 @@ coefficient_polynomial strip_common_factors(const coefficient_polynomial& p, con
   return divided ? from_ex(pe, s) : p;
 }
 
-// |p(x)| / (1 + Σ |terms|) in floating point of digits + 30 digits: vanishes to the refinement
-// width at a true root, O(1) elsewhere; the rounding error is 10^-27 of the threshold.
+// |p(x)| / Σ |terms| in floating point of digits + 30 digits: vanishes to the refinement width at a
+// true root, O(1) elsewhere; the rounding error is 10^-27 of the threshold. Relative to the terms
+// alone (never to 1), so any multiple of p gives the same verdict.
 class relative_value {
  public:
   relative_value(const coefficient_polynomial& p, const cln::float_format_t& format) : format_(format) {
@@ -123,14 +124,14 @@ class relative_value {
       powers[v].push_back(cln::cl_float(1, format_));
       for (int d = 1; d <= degree_; ++d) powers[v].push_back(powers[v].back() * xv);
     }
-    cln::cl_F value = cln::cl_float(0, format_), size = cln::cl_float(1, format_);
+    cln::cl_F value = cln::cl_float(0, format_), size = cln::cl_float(0, format_);
     for (const auto& t : terms_) {
       const cln::cl_F product = t.c * powers[0][static_cast<std::size_t>(t.e[0])] * powers[1][static_cast<std::size_t>(t.e[1])] *
                                 powers[2][static_cast<std::size_t>(t.e[2])];
       value = value + product;
       size = size + cln::abs(product);
     }
-    return cln::abs(value) / size;
+    return cln::zerop(size) ? size : cln::abs(value) / size;
   }
 
  private:
@@ -204,14 +205,15 @@ critical_result constrained_critical_points(const coefficient_polynomial& f, con
   }
   const cln::cl_RA tolerance = ten_to_minus(digits + 2);
   const cln::float_format_t format = cln::float_format(digits + 30);
-  const relative_value check1(e1, format), check2(e2, format), check_det(det, format);
+  const relative_value check1(e1, format), check2(e2, format), check_det(det, format), check_a(A, format);
   const cln::cl_F float_tolerance = cln::cl_float(tolerance, format);
   for (const auto& p : planar.points) {
     std::vector<cln::cl_RA> at(3, 0);
     at[static_cast<std::size_t>(rest[0])] = p.u;
     at[static_cast<std::size_t>(rest[1])] = p.v;
     const cln::cl_RA a = A(at), b = B(at);
-    if (cln::abs(a) <= tolerance * (1 + cln::abs(b))) {
+    // A vanishes there relative to its terms: z = −B/A is undefined (a constant A never does).
+    if (cln::zerop(a) || check_a({at[0], at[1], at[2]}) <= float_tolerance) {
       ++result.discarded;
       continue;
     }

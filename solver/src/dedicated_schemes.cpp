@@ -10,6 +10,7 @@
 #include "rotlie/lie/theorems.hpp"
 #include "rotlie/solver/critical_points.hpp"
 #include "rotlie/solver/real_solutions.hpp"
+#include "rotlie/solver/scheme_table.hpp"
 
 namespace rotlie::solver {
 namespace {
@@ -50,26 +51,19 @@ using clock_type = std::chrono::steady_clock;
 double since(clock_type::time_point t) { return std::chrono::duration<double>(clock_type::now() - t).count(); }
 
 
-// x rounded to `digits` significant decimal digits, exactly.
-cln::cl_RA round_to_digits(const cln::cl_RA& x, int digits) {
-  if (cln::zerop(x)) return x;
-  int e = 0;
-  cln::cl_RA a = cln::abs(x);
-  while (a >= 1) a = a / 10, ++e;
-  while (a < cln::cl_RA(1) / 10) a = a * 10, --e;
-  const cln::cl_RA scale = cln::expt(cln::cl_RA(10), digits - e);
-  return cln::round1(x * scale) / scale;
-}
-
 }  // namespace
 
 // Eq. (64) in natural units (H = Σ G_i²/(2I_i), no 2I1 scaling) for the body scaled to I3 = 1, as in
-// section 5.1: H_R5 is homogeneous of degree −5 in the moments, so the norm is multiplied by I3^5.
-// This reproduces Table 4's absolute values (×10^-2) and Table 3's ratios.
-double analytic_remainder_norm(const std::vector<double>& q, const lie::moments_of_inertia& body) {
+// section 5.1 (H_R5 is homogeneous of degree −5 in the moments): this reproduces Table 4's absolute
+// values (×10^-2) and Table 3's ratios.
+double analytic_remainder_norm(const std::vector<double>& q) {
   double s = 0;
   for (double v : q) s += v * v;
-  return std::sqrt(s) * std::pow(cln::double_approx(body.I[2]), 5);
+  return std::sqrt(s);
+}
+
+lie::moments_of_inertia scaled_to_unit_I3(const lie::moments_of_inertia& body) {
+  return {{body.I[0] / body.I[2], body.I[1] / body.I[2], cln::cl_RA(1)}};
 }
 
 family_result solve_dedicated(const lie::moments_of_inertia& body, const std::vector<std::string>& schemes,
@@ -77,7 +71,10 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
   if (digits < 10) throw std::invalid_argument("--digits must be at least 10");
   lie::validate_moments(body);
   family_result result;
-  const std::array<cln::cl_RA, 3> w{cln::recip(body.I[0]), cln::recip(body.I[1]), cln::recip(body.I[2])};
+  // The order conditions are homogeneous in 1/I: the body in any unit (kg m², u Å², 1e-100) has the
+  // solutions of the body scaled to I3 = 1, exactly, and every number below is computed for that one.
+  const lie::moments_of_inertia unit = scaled_to_unit_I3(body);
+  const std::array<cln::cl_RA, 3> w{cln::recip(unit.I[0]), cln::recip(unit.I[1]), cln::cl_RA(1)};
   for (const auto& scheme : schemes) {
     const auto named = bch::find_named_scheme(scheme);
     if (!named) throw std::invalid_argument("unknown scheme '" + scheme + "'");
@@ -92,7 +89,6 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
       const auto k = bch::compute_exact_modified_hamiltonian(layout, w, unknowns == 3 ? 5 : 3);
       const auto& h3 = k.remainder[3];
       const auto p1 = h3.coefficient(lie::monomial(2, 2, 0)), p2 = h3.coefficient(lie::monomial(2, 0, 2));
-      const auto p3 = h3.coefficient(lie::monomial(0, 2, 2));
       result.seconds_conditions += since(t);
 
       // Two free coefficients: H_R3 = 0 has isolated solutions. Three (R, P; section 3.4): the critical
@@ -128,6 +124,7 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
       report.real_solutions = static_cast<int>(points.size());
       if (report.degenerate) report.note = degeneracy_reason(body, named->split, perm, report.note);
       t = clock_type::now();
+      const cln::cl_RA accuracy = cln::recip(cln::expt(cln::cl_RA(10), digits + 10));
       int label = 0;
       for (const auto& point : points) {
         dedicated_solution s;
@@ -136,18 +133,27 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
         s.label = ++label;
         s.layout = layout;
         s.free = layout.free_coefficients;
-        std::vector<cln::cl_RA> rounded;
-        for (const auto& x : point) rounded.push_back(round_to_digits(x, digits));
         std::map<std::string, double> numeric;
         for (const auto& st : layout.stages) {
           if (numeric.count(st.coefficient) != 0) continue;
           const auto& expression = k.coefficient_values.at(st.coefficient);
           if (expression.is_constant()) s.exact.push_back(st.coefficient);
-          s.coefficients.emplace_back(st.coefficient, expression(point));
+          // Within the solution's accuracy of 0 is 0: a table never prints 1e-450 for a vanishing stage.
+          const cln::cl_RA value = expression(point);
+          s.coefficients.emplace_back(st.coefficient, cln::abs(value) < accuracy ? cln::cl_RA(0) : value);
           numeric[st.coefficient] = cln::double_approx(s.coefficients.back().second);
         }
-        s.residual = 0;
-        for (const auto* p : {&p1, &p2, &p3}) s.residual = cln::max(s.residual, cln::abs((*p)(rounded)));
+        // No solution leaves the solver unless its table can say `order 4`: the conditions vanish
+        // relative to the size of their terms at the decimals a table of `digits` digits writes.
+        const auto certificate = certify_order_four(layout, unit, written_coefficients(s, digits), digits);
+        if (certificate.order < 4) {
+          --label;
+          ++report.uncertified;
+          report.note += std::string(report.note.empty() ? "" : "; ") + "a root dropped, not order 4 at " +
+                         std::to_string(digits) + " digits: " + certificate.failure;
+          continue;
+        }
+        s.residual = certificate.residual;
         std::vector<double> q;
         if (unknowns == 3) {
           std::vector<double> x;
@@ -157,9 +163,10 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
           const auto h = bch::compute_numeric_modified_hamiltonian(layout, w, numeric, 5);
           for (const auto& [m, coefficient] : h[5].terms()) q.push_back(coefficient);
         }
-        s.analytic_remainder = analytic_remainder_norm(q, body);
+        s.analytic_remainder = analytic_remainder_norm(q);
         result.solutions.push_back(std::move(s));
       }
+      report.real_solutions -= report.uncertified;
       result.seconds_remainder += since(t);
       result.systems.push_back(std::move(report));
     }

@@ -58,7 +58,7 @@ std::vector<real_point> pair_roots(const coefficient_polynomial& e1, const coeff
   const std::vector<cln::cl_RA> vs = polished_roots(isolate(resultant_in(e1, e2, u, v)), digits);
   const bivariate b1(e1, u, v), b2(e2, u, v);
   // A true solution leaves |e| ≲ deg·|terms|·width; any other pair leaves a fixed nonzero algebraic
-  // number, far above 10^-(digits+3) of the size of the terms.
+  // number, far above 10^-(digits+3) of the size of the terms (relative: any multiple of e agrees).
   const cln::cl_RA tolerance = ten_to_minus(digits + 3);
   std::vector<real_point> points;
   for (const auto& x : us) {
@@ -144,9 +144,12 @@ rational_polynomial reduce_known_multiple_factors(rational_polynomial r, const r
 
 }  // namespace
 
-system_result solve_two_equations(const coefficient_polynomial& e1, const coefficient_polynomial& e2, int u, int v,
+system_result solve_two_equations(const coefficient_polynomial& given1, const coefficient_polynomial& given2, int u, int v,
                                   int digits, solve_method method, const rational_polynomial& multiple_factor) {
   if (digits < 10) throw std::invalid_argument("at least 10 digits");
+  // Coprime integer coefficients (a positive multiple of each): the same zero set, the same
+  // polynomials for any positive multiple of the input (a body in any unit), and integer arithmetic.
+  const coefficient_polynomial e1 = given1.primitive_integer(), e2 = given2.primitive_integer();
   system_result result;
   const auto start = clock_type::now();
   if (e1.is_zero() || e2.is_zero()) {

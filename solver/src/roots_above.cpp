@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
 
 #include "rotlie/solver/residue_field.hpp"
@@ -16,7 +17,8 @@ namespace rotlie::solver::detail {
 // method in v on the equation with the larger slope, then by Newton's method on (e1, e2) in (u, v),
 // whose Jacobian is regular at a simple intersection: v at u0 alone would carry u0's error times
 // dv/du. Kept when u stays within width/2 of u0 and both equations vanish to 10^-(digits+3) of
-// the size of their terms, all in floating point of digits + 30 digits.
+// the size of their terms (never of 1: the verdict is the same for any multiple of an equation), all
+// in floating point of digits + 30 digits.
 std::optional<real_point> common_root_above(const float_system& f, const cln::cl_RA& u0, int digits) {
   const cln::float_format_t format = cln::float_format(digits + 30);
   const cln::cl_F tolerance = cln::cl_float(ten_to_minus(digits + 3), format);
@@ -34,12 +36,12 @@ std::optional<real_point> common_root_above(const float_system& f, const cln::cl
     const auto& other = at[1 - source];
     for (const auto& z : complex_roots(at[source].value)) {
       const double y = z.real();
-      double value = 0, size = 0;
-      for (std::size_t j = other.value.size(); j-- > 0;) {
-        value = value * y + cln::double_approx(other.value[j]);
-        size = size * std::max(1.0, std::abs(y)) + cln::double_approx(other.magnitude[j]);
-      }
-      starts.push_back({std::abs(value) / (1 + size) + std::abs(z.imag()) / (1 + std::abs(y)), y});
+      if (!std::isfinite(y) || !std::isfinite(z.imag())) continue;  // a root at infinity in double
+      // In the precision of the rows: a double would overflow for equations far from unit size.
+      const cln::cl_F yf = cln::cl_float(cln::rational(cln::cl_DF(y)), format);
+      const cln::cl_F value = horner(other.value, yf), size = horner(other.magnitude, cln::max(one, cln::abs(yf)));
+      const double relative = cln::zerop(size) ? 0.0 : cln::double_approx(cln::abs(value) / size);
+      starts.push_back({relative + std::abs(z.imag()) / (1 + std::abs(y)), y});
     }
   }
   std::sort(starts.begin(), starts.end());
@@ -52,8 +54,8 @@ std::optional<real_point> common_root_above(const float_system& f, const cln::cl
       const cln::cl_F s0 = horner(slope[0], y), s1 = horner(slope[1], y);
       // Slopes relative to each equation's own size: one may be a large multiple of a small factor.
       const cln::cl_F ay = cln::max(one, cln::abs(y));
-      const cln::cl_F size0 = one + horner(at[0].magnitude, ay), size1 = one + horner(at[1].magnitude, ay);
-      const std::size_t e = cln::abs(s0) / size0 >= cln::abs(s1) / size1 ? 0 : 1;
+      const cln::cl_F size0 = horner(at[0].magnitude, ay), size1 = horner(at[1].magnitude, ay);
+      const std::size_t e = cln::abs(s0) * size1 >= cln::abs(s1) * size0 ? 0 : 1;  // |s0|/size0 ≥ |s1|/size1
       const cln::cl_F& s = e == 0 ? s0 : s1;
       if (cln::zerop(s)) break;
       const cln::cl_F step = horner(at[e].value, y) / s;
@@ -158,6 +160,7 @@ std::optional<std::vector<real_point>> common_roots_above_algebraic(const coeffi
   const float_bivariate_rows b1(e1, u, v, format), b2(e2, u, v, format);
   const auto at1 = b1.at_u(a), at2 = b2.at_u(a);
   for (const auto& z : complex_roots(value)) {
+    if (!std::isfinite(z.real()) || !std::isfinite(z.imag())) return std::nullopt;  // not concluded: pair instead
     if (std::abs(z.imag()) > 1e-6 * (1 + std::abs(z.real()))) continue;  // a conjugate pair
     cln::cl_F y = cln::cl_float(cln::rational(cln::cl_DF(z.real())), format);
     bool newton_converged = false;

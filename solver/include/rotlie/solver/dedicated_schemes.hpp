@@ -24,8 +24,10 @@ struct dedicated_solution {
   std::vector<std::pair<std::string, cln::cl_RA>> coefficients;
   std::vector<std::string> free;  ///< names of the free coefficients
   std::vector<std::string> exact;  ///< coefficients fixed to an exact rational by the first-order conditions alone
-  cln::cl_RA residual;            ///< max |P_i| of H_R3 at the coefficients rounded to `digits` digits
-  double analytic_remainder = 0;  ///< ‖H_R5‖ in the normalisation of analytic_remainder_norm
+  /// max over the conditions up to order 4 of |value| / Σ|terms| at the coefficients as a table of
+  /// `digits` digits writes them (certify_order_four): relative, so the same in any unit
+  cln::cl_RA residual;
+  double analytic_remainder = 0;  ///< ‖H_R5‖ (eq. 64), natural units, body scaled to I3 = 1
   std::string name() const { return scheme + " " + permutation + " (" + std::to_string(label) + ")"; }
 };
 
@@ -37,6 +39,7 @@ struct system_report {
   int eliminant_degree = 0;  ///< degree of the univariate resultant whose real roots were isolated
   std::string eliminated;    ///< R, P: the coefficient solved linearly from one condition
   int discarded = 0;         ///< R, P: roots of the reduced system where that linear solve is undefined
+  int uncertified = 0;       ///< roots dropped because their written coefficients do not certify order 4
 };
 
 struct family_result {
@@ -45,12 +48,17 @@ struct family_result {
   double seconds_conditions = 0, seconds_elimination = 0, seconds_roots = 0, seconds_remainder = 0;
 };
 
-/// Solves every (scheme, permutation) pair; schemes must have two or three free coefficients.
+/// Solves every (scheme, permutation) pair; schemes must have two or three free coefficients. The
+/// body may be given in any unit: the result is that of the body scaled to I3 = 1.
 /// Throws std::invalid_argument for an unknown scheme or permutation or digits < 10.
 family_result solve_dedicated(const lie::moments_of_inertia& body, const std::vector<std::string>& schemes,
                               const std::vector<std::string>& permutations, int digits);
 
-/// The normalisation of ‖H_R5‖ that reproduces Tables 3 and 4: see the implementation.
-double analytic_remainder_norm(const std::vector<double>& q, const lie::moments_of_inertia& body);
+/// ‖H_R5‖ from its coefficients q for the body scaled to I3 = 1: the normalisation that reproduces
+/// Tables 3 and 4 (see the implementation).
+double analytic_remainder_norm(const std::vector<double>& q);
+
+/// (I1/I3, I2/I3, 1), exactly: the body every solution is computed for.
+lie::moments_of_inertia scaled_to_unit_I3(const lie::moments_of_inertia& body);
 
 }  // namespace rotlie::solver

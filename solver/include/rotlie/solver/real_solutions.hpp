@@ -9,7 +9,9 @@
 // lies above it, and it is real (a second one, or a complex pair, would make u* a multiple root).
 // It is found from the double-precision roots of e(u*, ·), polished by Newton's method in v and
 // then on (e1, e2) in (u, v) (regular at a simple intersection), in (digits + 30)-digit floating
-// point, and accepted when both equations vanish to 10^-(digits+3) of the size of their terms. A
+// point, and accepted when both equations vanish to 10^-(digits+3) of the size of their terms. Every
+// test is relative (the equations are first made primitive with integer coefficients): e1 = e2 = 0 and
+// c1·e1 = c2·e2 = 0 give the same points for any nonzero c1, c2, e.g. a body in any unit. A
 // simple root where both leading coefficients in v vanish is a point at infinity, not a solution.
 //
 // At a multiple root u* (several solutions above it, a tangency, a singular point or a point at
@@ -31,7 +33,7 @@ namespace rotlie::solver {
 
 struct real_point {
   cln::cl_RA u, v;         ///< exact rationals within 10^-(digits+10) of the solution
-  cln::cl_RA residual;     ///< max |e_i(u, v)| at these values
+  cln::cl_RA residual;     ///< max |e_i(u, v)| / (size of e_i's terms) at these values: relative
 };
 
 enum class solve_method { automatic, pairing };

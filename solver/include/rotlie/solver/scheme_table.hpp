@@ -1,18 +1,29 @@
 #pragma once
 // Writing a solution as a scheme table: the only thing that crosses from the symbolic side
 // to the numeric side (docs/scheme_table_format.md). Plain text, one stage per line, every
-// coefficient as a decimal string of at least 40 significant digits, with provenance.
+// coefficient as a decimal string of at least 40 significant digits, with provenance. The
+// `order` line states what the written decimals certify (table_certificate.hpp), never more.
 #include <string>
 
 #include "rotlie/lie/rigid_body.hpp"
+#include "rotlie/schemes/scheme_table.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
+#include "rotlie/solver/table_certificate.hpp"
 
 namespace rotlie::solver {
 
 /// The table's name, e.g. "N2:BAC:2" (the CLI's SCHEME:PERM:LABEL form).
 std::string scheme_table_name(const dedicated_solution& s);
 
-/// The table text; digits is the number of significant digits printed (≥ 40 is the contract).
+/// The stage values exactly as a table of `digits` significant digits writes them.
+std::map<std::string, cln::cl_RA> written_coefficients(const dedicated_solution& s, int digits);
+
+/// The table text; digits is the number of significant digits printed (≥ 40 is the contract). Its
+/// `order` and `residual` lines are the certificate of the printed decimals; body is the body as
+/// given (any unit), written on the `inertia` line.
 std::string scheme_table_text(const dedicated_solution& s, const lie::moments_of_inertia& body, int digits);
+
+/// The solution as the numeric side sees it: its table text (40 digits by default), parsed.
+schemes::scheme_table scheme_table_of(const dedicated_solution& s, const lie::moments_of_inertia& body, int digits = 40);
 
 }  // namespace rotlie::solver
