@@ -38,7 +38,7 @@ report_folder::report_folder(const std::filesystem::path& path) : path_(path) {
   if (std::filesystem::exists(path, ec) && !std::filesystem::is_directory(path, ec))
     unusable(path, "it exists and is not a folder");
   std::filesystem::create_directories(path, ec);
-  if (ec) unusable(path, ec.message());
+  if (ec) throw unusable_output_folder("cannot create the output folder " + printable_path(path) + ": " + ec.message());
   fd_ = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (fd_ < 0) unusable(path, std::strerror(errno));
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {

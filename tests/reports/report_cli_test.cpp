@@ -52,6 +52,14 @@ fs::path test_root() {
   return root;
 }
 
+struct remove_test_root {
+  ~remove_test_root() {
+    std::error_code ignored;
+    fs::remove_all(test_root(), ignored);
+  }
+};
+BOOST_TEST_GLOBAL_FIXTURE(remove_test_root);
+
 process start(const launch& l) {
   static int count = 0;
   const fs::path err = test_root() / ("stderr-" + std::to_string(++count));
@@ -200,7 +208,8 @@ BOOST_AUTO_TEST_CASE(an_unusable_out_is_status_2_naming_the_path) {
   std::ofstream(root / "a-file") << "keep me";
   std::vector<std::pair<std::string, std::string>> cases{
       {(root / "a-file").string(), "'" + (root / "a-file").string() + "': it exists and is not a folder"},
-      {(root / "a-file" / "sub").string(), "'" + (root / "a-file" / "sub").string() + "': Not a directory"},
+      {(root / "a-file" / "sub").string(),
+       "cannot create the output folder '" + (root / "a-file" / "sub").string() + "': Not a directory"},
       {"", "the output folder (--out) is empty"},
       {"/proc", "'/proc': cannot create a file in it"},
       {"/proc/rotlie-report", "'/proc/rotlie-report'"},
@@ -226,6 +235,7 @@ BOOST_AUTO_TEST_CASE(an_unusable_out_is_status_2_naming_the_path) {
   BOOST_TEST(r.status == 2);
   BOOST_TEST(r.err.find("unknown section 'nonsense'") != std::string::npos, r.err);
   BOOST_TEST(!fs::exists(root / "s"));
+  if (fs::exists(root / "read-only")) fs::permissions(root / "read-only", fs::perms::owner_all);
 }
 
 BOOST_AUTO_TEST_CASE(a_second_run_into_a_busy_folder_fails_without_touching_it) {
