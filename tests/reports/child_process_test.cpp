@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
 
 #include "folder_support.hpp"
 #include "rotlie/reports/child_process.hpp"
@@ -47,12 +48,19 @@ BOOST_AUTO_TEST_CASE(a_child_that_stops_reading_is_no_sigpipe) {
 }
 
 BOOST_AUTO_TEST_CASE(a_missing_program_is_a_start_error) {
+  // A PATH of one readable empty folder: ENOENT (an unreadable PATH entry would give EACCES).
+  const fs::path empty = scratch("child-empty-path");
+  const std::string saved = std::getenv("PATH") ? std::getenv("PATH") : "";
+  ::setenv("PATH", empty.c_str(), 1);
+  int error = 0;
   try {
     run_child({"rotlie-no-such-program"}, "", 10s);
-    BOOST_FAIL("no error");
   } catch (const rotlie::reports::child_start_error& e) {
-    BOOST_TEST(e.error == ENOENT);
+    error = e.error;
   }
+  ::setenv("PATH", saved.c_str(), 1);
+  BOOST_TEST(error == ENOENT);
+  fs::remove_all(empty);
 }
 
 BOOST_AUTO_TEST_CASE(the_time_limit_kills_the_child_and_what_it_started) {
