@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <thread>
 #include <tuple>
 #include <vector>
@@ -35,7 +36,9 @@ struct launch {
   launch& only_on_path(const fs::path& dir) { return path_first = dir, only_path_first = true, *this; }
   launch& in(const fs::path& dir) { return cwd = dir, *this; }
   launch& file_size_limit(long bytes) { return size_limit = bytes, *this; }
+  launch& under(std::vector<std::string> program) { return wrapper = std::move(program), *this; }
   std::vector<std::string> args;
+  std::vector<std::string> wrapper;  ///< a program that runs rotlie (strace), or empty
   fs::path path_first;  ///< a folder put first on PATH (a fake gnuplot), or empty
   bool only_path_first = false;
   fs::path cwd = "/";
@@ -78,10 +81,12 @@ process start(const launch& l) {
       const rlimit limit{static_cast<rlim_t>(l.size_limit), static_cast<rlim_t>(l.size_limit)};
       ::setrlimit(RLIMIT_FSIZE, &limit);
     }
-    std::vector<char*> argv{const_cast<char*>(ROTLIE_BINARY)};
+    std::vector<char*> argv;
+    for (const auto& a : l.wrapper) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(const_cast<char*>(ROTLIE_BINARY));
     for (const auto& a : l.args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
-    ::execv(ROTLIE_BINARY, argv.data());
+    ::execvp(argv[0], argv.data());
     ::_exit(127);
   }
   return {pid, err};
@@ -351,4 +356,43 @@ BOOST_AUTO_TEST_CASE(a_write_error_is_status_1_and_leaves_nothing_half_written) 
   BOOST_TEST(!fs::exists(out / "exact_flow_conditioning.png"));
   BOOST_TEST(!fs::exists(out / "index.md"));
   expect_only_complete_files(out);
+}
+
+std::string first_argument(const std::string& call) {
+  const auto open = call.find('(');
+  return call.substr(open + 1, call.find_first_of(",)", open) - open - 1);
+}
+
+// Seen from the system calls (strace, when it can trace here): every rename is preceded by an
+// fsync of the file (then, for an unnamed file, its link) and followed by an fsync of the folder.
+BOOST_AUTO_TEST_CASE(files_reach_the_disk_before_the_rename_and_the_folder_after) {
+  const fs::path out = test_root() / "fsync", log = test_root() / "strace.log";
+  const auto r = run(launch(quick(out, "exact-flow"))
+                         .under({"strace", "-o", log.string(), "-e", "trace=fsync,linkat,renameat,renameat2"}));
+  if (r.status == 127 || r.err.find("strace:") != std::string::npos) {
+    BOOST_TEST_MESSAGE("strace cannot run here: the fsync order is not checked (" << last_line(r.err) << ")");
+    return;
+  }
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
+  std::vector<std::string> calls;
+  std::istringstream lines(slurp(log));
+  for (std::string line; std::getline(lines, line);)
+    if (line.find("fsync(") == 0 || line.find("linkat(") == 0 || line.find("rename") == 0) calls.push_back(line);
+  std::size_t renames = 0;
+  for (std::size_t i = 0; i < calls.size(); ++i) {
+    if (calls[i].find("rename") != 0) continue;
+    ++renames;
+    BOOST_TEST_CONTEXT(calls[i]) {
+      const std::string dirfd = first_argument(calls[i]);
+      const bool linked = i >= 1 && calls[i - 1].find("linkat(") == 0;  // an unnamed file, named just now
+      const std::size_t before = linked ? i - 2 : i - 1;
+      BOOST_REQUIRE(before < i);
+      BOOST_TEST(calls[before].find("fsync(") == 0u);
+      BOOST_TEST(first_argument(calls[before]) != dirfd);  // the file's, not the folder's of the previous file
+      if (linked) BOOST_TEST(first_argument(calls[before]) == first_argument(calls[i - 1]));
+      BOOST_REQUIRE(i + 1 < calls.size());
+      BOOST_TEST(calls[i + 1].find("fsync(" + dirfd + ")") == 0u, calls[i + 1]);
+    }
+  }
+  BOOST_TEST(renames == entries(out).size());  // csv, gp, png, index.md: each written once
 }
