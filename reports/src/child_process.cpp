@@ -104,11 +104,9 @@ double seconds_since(const timespec& start) {
 // Feeds the input and drains both outputs until the child closes them or the limit passes.
 // Returns false on timeout.
 bool exchange(pipe_pair& in, pipe_pair& out, pipe_pair& err, std::string_view input, child_result& r,
-              std::chrono::seconds limit) {
+              const timespec& start, std::chrono::seconds limit) {
   ::fcntl(in.write, F_SETFL, O_NONBLOCK);
   if (input.empty()) in.close_write();
-  timespec start;
-  clock_gettime(CLOCK_MONOTONIC, &start);
   std::array<char, 65536> buffer;
   while (out.read >= 0 || err.read >= 0) {
     const double left = static_cast<double>(limit.count()) - seconds_since(start);
@@ -134,6 +132,20 @@ bool exchange(pipe_pair& in, pipe_pair& out, pipe_pair& err, std::string_view in
   return true;
 }
 
+// Waits, within the limit, until the child has exited, without reaping it (its pid stays ours
+// while a signal handler may still kill it). Returns false on timeout.
+bool exited_in_time(pid_t pid, const timespec& start, std::chrono::seconds limit) {
+  for (;;) {
+    siginfo_t info{};
+    const int rc = ::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOWAIT | WNOHANG);
+    if (rc == 0 && info.si_pid != 0) return true;
+    if (rc != 0 && errno != EINTR) return true;  // nothing to wait for: waitpid reports it
+    if (seconds_since(start) > static_cast<double>(limit.count())) return false;
+    const timespec pause{0, 5'000'000};
+    ::nanosleep(&pause, nullptr);
+  }
+}
+
 }  // namespace
 
 child_start_error::child_start_error(const std::string& program, int e)
@@ -156,15 +168,17 @@ child_result run_child(const std::vector<std::string>& argv, std::string_view in
   in.close_read(), out.close_write(), err.close_write();
 
   child_result r;
+  timespec start;
+  clock_gettime(CLOCK_MONOTONIC, &start);
   try {
-    r.timed_out = !exchange(in, out, err, input, r, limit);
+    // A child may also close its outputs and go on running: the limit holds for its exit too.
+    r.timed_out = !exchange(in, out, err, input, r, start, limit) || !exited_in_time(pid, start, limit);
   } catch (...) {
     kill_running_child();
     throw;
   }
   in.close_write();
   if (r.timed_out) ::kill(-pid, SIGKILL);
-  // Wait without reaping (the pid stays ours while a handler may still kill it), then reap.
   siginfo_t info{};
   while (::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOWAIT) != 0 && errno == EINTR) {
   }

@@ -72,3 +72,11 @@ BOOST_AUTO_TEST_CASE(the_time_limit_kills_the_child_and_what_it_started) {
   BOOST_TEST(r.signal == SIGKILL);
   BOOST_TEST(seconds < 5.0, seconds << " s");
 }
+
+BOOST_AUTO_TEST_CASE(the_time_limit_holds_after_the_outputs_close) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto r = run_child({"sh", "-c", "exec >&- 2>&-; sleep 30"}, "", 1s);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  BOOST_TEST(r.timed_out);
+  BOOST_TEST(seconds < 5.0, seconds << " s");
+}
