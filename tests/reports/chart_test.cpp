@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <vector>
 
@@ -23,7 +24,7 @@ chart sample_chart(const std::string& title = "error against h", const std::stri
   chart c;
   c.title = title, c.x_label = "h", c.y_label = "error";
   chart_series s{series, {}, {}};
-  for (int i = 1; i <= 8; ++i) s.x.push_back(1.0 / (1 << i)), s.y.push_back(1e-3 / (1 << (4 * i)));
+  for (int i = 1; i <= 8; ++i) s.x.push_back(std::ldexp(1.0, -i)), s.y.push_back(1e-3 * std::ldexp(1.0, -4 * i));  // error ∝ h^4
   c.series = {s};
   c.horizontal_line = 1e-10;
   c.horizontal_label = "threshold";
