@@ -84,6 +84,8 @@ int main(int argc, char** argv) {
   auto* report_cmd = app.add_subcommand("report", "Regenerate every table and figure into one folder");
   report_cmd->add_option("--out", report.out, "Output folder (default: rotlie-report)");
   report_cmd->add_flag("--quick", report.quick, "Smaller sweeps, for a fast look");
+  report_cmd->add_option("--sections", report.sections,
+                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow");
 
   // CLI11 would only say "a subcommand is required" for a mistyped one: name it instead.
   if (argc > 1 && argv[1][0] != '-') {

@@ -1,19 +1,46 @@
 #include "rotlie/reports/chart.hpp"
 
+#include <cctype>
+#include <cerrno>
 #include <cmath>
-#include <cstdlib>
+#include <cstdint>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
+#include <utility>
 
+#include "rotlie/reports/child_process.hpp"
 #include "rotlie/reports/output_file.hpp"
 
 namespace rotlie::reports {
 namespace {
 
-std::string quoted(std::string s) {
+thread_local chart_log* current_log = nullptr;
+
+// A gnuplot single-quoted string: no backquote substitution, no macros, no escapes but ''.
+// A line break would end the command, so control characters become spaces.
+std::string gnuplot_text(const std::string& s) {
+  std::string out = "'";
+  for (const char c : s) {
+    if (c == '\'') out += "''";
+    else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) out += ' ';
+    else out += c;
+  }
+  return out + "'";
+}
+
+// A CSV field (RFC 4180): quoted, with "" for a quote.
+std::string csv_text(const std::string& s) {
   std::string out = "\"";
-  for (const char c : s) out += c == '"' ? std::string("\\\"") : std::string(1, c);
+  for (const char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
   return out + "\"";
+}
+
+bool plain_file_name(const std::string& name) {
+  if (name.empty() || name[0] == '-' || name[0] == '.') return false;
+  for (const char c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') return false;
+  return true;
 }
 
 // A point is drawable when it is finite and, on a log axis, positive.
@@ -21,7 +48,8 @@ bool drawable(const chart& c, double x, double y) {
   return std::isfinite(x) && std::isfinite(y) && (!c.log_x || x > 0) && (!c.log_y || y > 0);
 }
 
-std::string gnuplot_script(const chart& c, const std::filesystem::path& png) {
+// Everything but `set output`: run as it is, gnuplot writes the PNG to stdout.
+std::string gnuplot_script(const chart& c) {
   std::ostringstream g;
   g << std::setprecision(17);
   for (std::size_t k = 0; k < c.series.size(); ++k) {
@@ -32,10 +60,9 @@ std::string gnuplot_script(const chart& c, const std::filesystem::path& png) {
     g << "EOD\n";
   }
   g << "set terminal pngcairo size 1000,700 enhanced font 'Sans,10'\n"
-    << "set output " << quoted(png.string()) << "\n"
-    << "set title " << quoted(c.title) << " noenhanced\n"
-    << "set xlabel " << quoted(c.x_label) << " noenhanced\n"
-    << "set ylabel " << quoted(c.y_label) << " noenhanced\n"
+    << "set title " << gnuplot_text(c.title) << " noenhanced\n"
+    << "set xlabel " << gnuplot_text(c.x_label) << " noenhanced\n"
+    << "set ylabel " << gnuplot_text(c.y_label) << " noenhanced\n"
     << (c.log_x ? "set logscale x\nset format x '10^{%L}'\n" : "")
     << (c.log_y ? "set logscale y\nset format y '10^{%L}'\n" : "")
     << "set grid\nset key outside right top noenhanced\n";
@@ -45,61 +72,103 @@ std::string gnuplot_script(const chart& c, const std::filesystem::path& png) {
     g << (first ? "" : ", \\\n     ") << "$s" << k << " using 1:2 with "
       << (c.series[k].points_only ? "points pt " + std::to_string(7 + 2 * k) : "linespoints pt 7 ps 0.6")
       // gnuplot's palette has 8 colours: the next eight series are dashed, then dotted
-      << " dt " << 1 + k / 8 << " lw " << (k >= 8 ? 1.5 : 1.0) << " title " << quoted(c.series[k].name);
+      << " dt " << 1 + k / 8 << " lw " << (k >= 8 ? 1.5 : 1.0) << " title " << gnuplot_text(c.series[k].name);
     first = false;
   }
   if (c.horizontal_line)
     g << (first ? "" : ", \\\n     ") << *c.horizontal_line << " with lines dt 2 lc rgb 'black' title "
-      << quoted(c.horizontal_label), first = false;
+      << gnuplot_text(c.horizontal_label), first = false;
   if (c.diagonal) g << (first ? "" : ", \\\n     ") << "x with lines dt 3 lc rgb 'gray' title 'y = x'";
   g << "\n";
   return g.str();
 }
 
-std::string shell_quoted(const std::string& s) {
-  std::string out = "'";
-  for (const char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
+// The first line of gnuplot's complaint, printable and short, for the failure message.
+std::string first_line(const std::string& text) {
+  std::string line;
+  for (const char c : text) {
+    if (c == '\n' && !line.empty()) break;
+    if (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f && !(c == ' ' && line.empty())) line += c;
+    if (line.size() >= 160) break;
+  }
+  return line;
 }
 
-bool gnuplot_available() {
-  static const bool available = std::system("gnuplot --version > /dev/null 2>&1") == 0;
-  return available;
+// Runs gnuplot on the script; returns the PNG, or an empty string and the reason.
+std::string draw_png(const std::string& script, std::string& reason) {
+  child_result r;
+  try {
+    r = run_child({"gnuplot"}, script, std::chrono::seconds(gnuplot_seconds));
+  } catch (const child_start_error& e) {
+    reason = e.error == ENOENT ? "gnuplot is not installed (not found on PATH)" : e.what();
+    return {};
+  }
+  const std::string said = first_line(r.err);
+  if (r.timed_out) reason = "gnuplot did not finish within " + std::to_string(gnuplot_seconds) + " s";
+  else if (r.signal != 0) reason = "gnuplot was ended by signal " + std::to_string(r.signal);
+  else if (r.exit_status != 0)
+    reason = "gnuplot failed with status " + std::to_string(r.exit_status) + (said.empty() ? "" : ": " + said);
+  else if (r.out.empty()) reason = "gnuplot drew an empty PNG";
+  else if (!is_complete_png(r.out)) reason = "gnuplot's output is not a complete PNG";
+  else return std::move(r.out);
+  return {};
+}
+
+std::uint32_t big_endian(const std::string& b, std::size_t at) {
+  std::uint32_t v = 0;
+  for (std::size_t i = 0; i < 4; ++i) v = v << 8 | static_cast<unsigned char>(b[at + i]);
+  return v;
 }
 
 }  // namespace
 
+chart_log::chart_log() : previous_(current_log) { current_log = this; }
+chart_log::~chart_log() { current_log = previous_; }
+
+bool is_complete_png(const std::string& bytes) {
+  static const std::string signature("\x89PNG\r\n\x1a\n", 8);
+  if (bytes.compare(0, signature.size(), signature) != 0) return false;
+  std::size_t at = signature.size();
+  bool first = true;
+  while (at + 12 <= bytes.size()) {
+    const std::size_t length = big_endian(bytes, at);
+    const std::string type = bytes.substr(at + 4, 4);
+    if (first && type != "IHDR") return false;
+    first = false;
+    if (length > bytes.size() - at - 12) return false;
+    at += 12 + length;
+    if (type == "IEND") return at == bytes.size();
+  }
+  return false;
+}
+
 chart_files write_chart(const std::filesystem::path& dir, const std::string& name, const chart& c) {
+  if (!plain_file_name(name)) throw std::invalid_argument("chart name '" + name + "' is not a plain file name");
   chart_files out;
   std::ostringstream csv;
   csv << std::setprecision(17) << "series,x,y\n";
   for (const auto& s : c.series)
-    for (std::size_t i = 0; i < s.x.size(); ++i) csv << quoted(s.name) << "," << s.x[i] << "," << s.y[i] << "\n";
+    for (std::size_t i = 0; i < s.x.size(); ++i) csv << csv_text(s.name) << "," << s.x[i] << "," << s.y[i] << "\n";
   write_file_atomically(dir / (name + ".csv"), csv.str());
   out.written.push_back(dir / (name + ".csv"));
 
-  // The script draws into a temporary name, renamed when gnuplot succeeded: never a half PNG.
-  const auto png = dir / (name + ".png"), partial = dir / (name + ".png.partial");
-  write_file_atomically(dir / (name + ".gp"), gnuplot_script(c, name + ".png"));
+  const std::string script = gnuplot_script(c);
+  // The saved copy draws into <name>.png when run as `gnuplot <name>.gp` inside the folder.
+  write_file_atomically(dir / (name + ".gp"), "set output " + gnuplot_text(name + ".png") + "\n" + script);
   out.written.push_back(dir / (name + ".gp"));
-  if (!gnuplot_available()) {
-    out.note = "gnuplot is not installed: " + name + ".csv and " + name + ".gp written, no PNG";
+
+  if (current_log) ++current_log->charts_;
+  std::string reason;
+  const std::string png = draw_png(script, reason);
+  if (png.empty()) {
+    std::error_code ignored;
+    std::filesystem::remove(dir / (name + ".png"), ignored);  // an earlier run's picture of other data
+    out.note = "no PNG for " + name + ": " + reason;
+    if (current_log) current_log->failures_.push_back({name, reason});
     return out;
   }
-  const auto run = dir / (name + ".run.gp");
-  write_file_atomically(run, gnuplot_script(c, partial));
-  const std::string command = "gnuplot " + shell_quoted(run.string()) + " > /dev/null 2>&1";
-  const int status = std::system(command.c_str());
-  std::error_code ec;
-  std::filesystem::remove(run, ec);
-  if (status != 0 || !std::filesystem::exists(partial)) {
-    std::filesystem::remove(partial, ec);
-    out.note = "gnuplot failed on " + name + ".gp: no PNG";
-    return out;
-  }
-  std::filesystem::rename(partial, png, ec);
-  if (ec) throw std::runtime_error("cannot write " + png.string() + ": " + ec.message());
-  out.written.push_back(png);
+  write_file_atomically(dir / (name + ".png"), png);
+  out.written.push_back(dir / (name + ".png"));
   out.png = true;
   return out;
 }

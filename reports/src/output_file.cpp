@@ -1,32 +1,194 @@
 #include "rotlie/reports/output_file.hpp"
 
+#include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
-#include <fstream>
+#include <array>
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <stdexcept>
+#include <utility>
 
 namespace rotlie::reports {
+namespace {
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
-  std::filesystem::path tmp = path;
-  tmp += ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(tmp, ignored);
-      throw std::runtime_error("cannot write " + path.string() + " (disk full?)");
+// The named temporaries being written now, for the signal handler: a folder descriptor and a
+// program-chosen name per slot (dirfd < 0: free). The process writes one file at a time.
+struct pending_temporary {
+  std::atomic<int> dirfd{-1};
+  std::array<char, 64> name{};
+};
+std::array<pending_temporary, 4> pending;
+std::atomic<unsigned long> temporary_counter{0};
+
+// Claims a slot so that a signal arriving from now on removes `name` in `dirfd`.
+class pending_guard {
+ public:
+  pending_guard(int dirfd, const std::string& name) {
+    for (auto& p : pending) {
+      int free = -1;
+      if (!p.dirfd.compare_exchange_strong(free, -2)) continue;
+      std::snprintf(p.name.data(), p.name.size(), "%s", name.c_str());
+      p.dirfd.store(dirfd);
+      slot_ = &p;
+      return;
     }
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw std::runtime_error("cannot move " + tmp.string() + " to " + path.string());
+  ~pending_guard() {
+    if (slot_) slot_->dirfd.store(-1);
   }
+  pending_guard(const pending_guard&) = delete;
+  pending_guard& operator=(const pending_guard&) = delete;
+
+ private:
+  pending_temporary* slot_ = nullptr;
+};
+
+class file_descriptor {
+ public:
+  explicit file_descriptor(int fd) : fd_(fd) {}
+  ~file_descriptor() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  file_descriptor(const file_descriptor&) = delete;
+  file_descriptor& operator=(const file_descriptor&) = delete;
+  int get() const { return fd_; }
+  int release() { return std::exchange(fd_, -1); }
+
+ private:
+  int fd_;
+};
+
+[[noreturn]] void fail(const std::filesystem::path& path, int error) {
+  throw std::runtime_error("cannot write " + printable_path(path) + ": " + std::strerror(error));
+}
+
+// fsync where the file system supports it (EINVAL: it does not, nothing to flush).
+bool flushed(int fd) { return ::fsync(fd) == 0 || errno == EINVAL || errno == ENOTSUP; }
+
+// Writes everything and flushes it to disk; returns 0 or the errno of the failure.
+int write_and_flush(int fd, std::string_view content) {
+  while (!content.empty()) {
+    const ssize_t n = ::write(fd, content.data(), content.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return errno;
+    content.remove_prefix(static_cast<std::size_t>(n));
+  }
+  return flushed(fd) ? 0 : errno;
+}
+
+std::string next_temporary_name() {
+  return std::string(temporary_prefix) + std::to_string(::getpid()) + "-" + std::to_string(++temporary_counter);
+}
+
+// An unnamed file (O_TMPFILE) holding the content, then linked under a temporary name: a kill
+// before the link leaves nothing. False when the file system cannot do it (the caller falls back).
+bool write_unnamed(int dirfd, const std::string& temporary, std::string_view content, const std::filesystem::path& path) {
+  file_descriptor fd(::openat(dirfd, ".", O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666));
+  if (fd.get() < 0) {
+    if (errno == EOPNOTSUPP || errno == EISDIR || errno == EINVAL) return false;
+    fail(path, errno);
+  }
+  if (const int e = write_and_flush(fd.get(), content)) fail(path, e);
+  if (::linkat(fd.get(), "", dirfd, temporary.c_str(), AT_EMPTY_PATH) == 0) return true;
+  const std::string proc = "/proc/self/fd/" + std::to_string(fd.get());  // without CAP_DAC_READ_SEARCH
+  if (::linkat(AT_FDCWD, proc.c_str(), dirfd, temporary.c_str(), AT_SYMLINK_FOLLOW) == 0) return true;
+  if (errno == ENOSPC || errno == EDQUOT || errno == EROFS || errno == EIO) fail(path, errno);
+  return false;
+}
+
+void write_named(int dirfd, const std::string& temporary, std::string_view content, const std::filesystem::path& path) {
+  file_descriptor fd(::openat(dirfd, temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666));
+  if (fd.get() < 0) fail(path, errno);
+  int e = write_and_flush(fd.get(), content);
+  if (::close(fd.release()) != 0 && e == 0) e = errno;
+  if (e != 0) {
+    ::unlinkat(dirfd, temporary.c_str(), 0);
+    fail(path, e);
+  }
+}
+
+bool valid_utf8_at(const std::string& s, std::size_t i, std::size_t& length) {
+  const auto c = static_cast<unsigned char>(s[i]);
+  length = c >= 0xf0 && c <= 0xf4 ? 4 : c >= 0xe0 ? 3 : c >= 0xc2 && c <= 0xdf ? 2 : 0;
+  if (c >= 0xf5) length = 0;
+  if (length == 0 || i + length > s.size()) return false;
+  for (std::size_t k = 1; k < length; ++k)
+    if ((static_cast<unsigned char>(s[i + k]) & 0xc0) != 0x80) return false;
+  return true;
+}
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+  const auto parent = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
+  const std::string name = path.filename().string();
+  if (name.empty() || name == "." || name == "..") fail(path, EISDIR);
+  file_descriptor dir(::open(parent.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+  if (dir.get() < 0) fail(path, errno);
+
+  const std::string temporary = next_temporary_name();
+  pending_guard guard(dir.get(), temporary);
+  if (!write_unnamed(dir.get(), temporary, content, path)) write_named(dir.get(), temporary, content, path);
+  if (::renameat(dir.get(), temporary.c_str(), dir.get(), name.c_str()) != 0) {
+    const int e = errno;
+    ::unlinkat(dir.get(), temporary.c_str(), 0);
+    fail(path, e);
+  }
+  if (!flushed(dir.get())) fail(path, errno);  // the rename itself reaches the disk
+}
+
+std::size_t remove_stale_temporaries(const std::filesystem::path& dir) {
+  std::size_t removed = 0;
+  std::error_code ec;
+  for (auto it = std::filesystem::directory_iterator(dir, ec); !ec && it != std::filesystem::directory_iterator();
+       it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(temporary_prefix, 0) != 0) continue;
+    // .rotlie-tmp-<pid>-<n>: keep the files of a process that still runs (another writer).
+    const long pid = std::strtol(name.c_str() + temporary_prefix.size(), nullptr, 10);
+    const bool alive = pid > 0 && pid != ::getpid() && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
+    std::error_code ignored;
+    if (!alive && std::filesystem::remove(it->path(), ignored)) ++removed;
+  }
+  return removed;
+}
+
+void remove_pending_temporaries() noexcept {
+  for (auto& p : pending) {
+    const int dirfd = p.dirfd.load();
+    if (dirfd >= 0) ::unlinkat(dirfd, p.name.data(), 0);
+  }
+}
+
+std::string printable_path(const std::filesystem::path& path) {
+  const std::string s = path.string();
+  std::string out = "'";
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    std::size_t length = 0;
+    if (c >= 0x80 && valid_utf8_at(s, i, length)) {
+      out.append(s, i, length);
+      i += length - 1;
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c == '\\' || c == '\'') {
+      out += '\\', out += static_cast<char>(c);
+    } else if (c < 0x20 || c >= 0x7f) {
+      char hex[5];
+      std::snprintf(hex, sizeof hex, "\\x%02x", c);
+      out += hex;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out + "'";
 }
 
 }  // namespace rotlie::reports

@@ -1,41 +1,128 @@
-// Output files are written whole or not at all.
+// Output files are written whole or not at all, flushed, and named only when complete; write
+// errors are exceptions that name the path; stale temporaries of dead writers are removed.
 #define BOOST_TEST_MODULE output_file
 #include <boost/test/unit_test.hpp>
 
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <fstream>
-#include <sstream>
 
+#include "folder_support.hpp"
 #include "rotlie/reports/output_file.hpp"
 
 namespace fs = std::filesystem;
+using namespace report_test;
 using rotlie::reports::write_file_atomically;
 
 namespace {
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+
+// The exception's message, or "" when none was thrown.
+std::string failure_of(const fs::path& target, const std::string& content) {
+  try {
+    write_file_atomically(target, content);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
 }
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(writes_and_replaces_whole_files) {
-  const fs::path dir = fs::temp_directory_path() / ("rotlie-output-test-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = scratch("output-replace");
   write_file_atomically(dir / "a.txt", "first");
   BOOST_TEST(slurp(dir / "a.txt") == "first");
-  write_file_atomically(dir / "a.txt", "second, longer");
-  BOOST_TEST(slurp(dir / "a.txt") == "second, longer");
-  std::size_t entries = 0;
-  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++entries;
-  BOOST_TEST(entries == 1u);  // no temporary file left behind
+  const std::string big(3'000'000, 'x');  // several write() calls
+  write_file_atomically(dir / "a.txt", big);
+  BOOST_TEST(slurp(dir / "a.txt") == big);
+  write_file_atomically(dir / "a.txt", "");
+  BOOST_TEST(fs::file_size(dir / "a.txt") == 0u);
+  BOOST_TEST(entries(dir) == std::set<std::string>{"a.txt"});  // no temporary left behind
   fs::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_CASE(a_missing_folder_is_an_error_not_a_partial_file) {
   const fs::path target = fs::temp_directory_path() / "rotlie-no-such-folder" / "x" / "a.txt";
-  BOOST_CHECK_THROW(write_file_atomically(target, "content"), std::runtime_error);
+  const std::string message = failure_of(target, "content");
+  BOOST_TEST(message.find("cannot write '" + target.string() + "'") == 0u, message);
+  BOOST_TEST(message.find("No such file or directory") != std::string::npos, message);
   BOOST_TEST(!fs::exists(target));
+}
+
+BOOST_AUTO_TEST_CASE(a_parent_that_is_a_file_is_an_error) {
+  const fs::path dir = scratch("output-parent-file");
+  std::ofstream(dir / "plain") << "x";
+  const std::string message = failure_of(dir / "plain" / "a.txt", "content");
+  BOOST_TEST(message.find("Not a directory") != std::string::npos, message);
+  BOOST_TEST(entries(dir) == std::set<std::string>{"plain"});
+  fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(a_folder_that_takes_no_files_is_an_error) {
+  // /proc refuses new files even to root; a mode-0555 folder refuses them to everyone else.
+  BOOST_TEST(!failure_of("/proc/rotlie-test.txt", "content").empty());
+  BOOST_TEST(!fs::exists("/proc/rotlie-test.txt"));
+  if (::geteuid() == 0) {
+    BOOST_TEST_MESSAGE("running as root: the read-only-mode case is covered by /proc only");
+    return;
+  }
+  const fs::path dir = scratch("output-read-only");
+  fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec);
+  const std::string message = failure_of(dir / "a.txt", "content");
+  fs::permissions(dir, fs::perms::owner_all);
+  BOOST_TEST(message.find("Permission denied") != std::string::npos, message);
+  BOOST_TEST(entries(dir).empty());
+  fs::remove_all(dir);
+}
+
+// A full disk, as a non-root user can make one: a file-size limit turns the write past the
+// limit into EFBIG (SIGXFSZ ignored). The old file must survive intact and no temporary remain.
+BOOST_AUTO_TEST_CASE(a_write_past_the_file_size_limit_fails_and_keeps_the_old_file) {
+  const fs::path dir = scratch("output-full");
+  write_file_atomically(dir / "a.txt", "old content");
+  const fs::path message_file = dir.parent_path() / (dir.filename().string() + ".message");
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{64 * 1024, 64 * 1024};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    const std::string message = failure_of(dir / "a.txt", std::string(1'000'000, 'y'));
+    { std::ofstream(message_file) << message; }
+    ::_exit(message.empty() ? 1 : 0);
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  BOOST_TEST(WIFEXITED(status));
+  BOOST_TEST(WEXITSTATUS(status) == 0, "the write past the limit did not throw");
+  const std::string message = slurp(message_file);
+  BOOST_TEST(message.find("cannot write '" + (dir / "a.txt").string() + "': File too large") == 0u, message);
+  BOOST_TEST(slurp(dir / "a.txt") == "old content");
+  BOOST_TEST(entries(dir) == std::set<std::string>{"a.txt"});
+  fs::remove_all(dir);
+  fs::remove(message_file);
+}
+
+BOOST_AUTO_TEST_CASE(stale_temporaries_of_dead_writers_are_removed_live_ones_kept) {
+  const fs::path dir = scratch("output-stale");
+  const std::string dead = ".rotlie-tmp-" + std::to_string(dead_pid()) + "-3";
+  const std::string live = ".rotlie-tmp-" + std::to_string(::getppid()) + "-1";  // our parent runs
+  const std::string mine = ".rotlie-tmp-" + std::to_string(::getpid()) + "-9";   // none can be pending now
+  for (const auto& n : {dead, live, mine, std::string("keep.txt"), std::string(".rotlie-tmpX")})
+    std::ofstream(dir / n) << "x";
+  BOOST_TEST(rotlie::reports::remove_stale_temporaries(dir) == 2u);
+  BOOST_TEST((entries(dir) == std::set<std::string>{live, "keep.txt", ".rotlie-tmpX"}));
+  fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(printable_paths_stay_on_one_line) {
+  using rotlie::reports::printable_path;
+  BOOST_TEST(printable_path("a\nb") == "'a\\nb'");
+  BOOST_TEST(printable_path("q'x") == "'q\\'x'");
+  BOOST_TEST(printable_path("bad\xff\x01") == "'bad\\xff\\x01'");
+  BOOST_TEST(printable_path("r\xc3\xa9sultats") == "'r\xc3\xa9sultats'");  // valid UTF-8 kept
+  BOOST_TEST(printable_path("cut\xc3") == "'cut\\xc3'");                    // a truncated sequence is not
 }

@@ -1,6 +1,12 @@
 #pragma once
 // Log-log line charts for the report: a CSV beside every PNG (the numbers, for any other tool),
 // the gnuplot script that drew it (to restyle), and the PNG drawn by gnuplot's pngcairo terminal.
+//
+// gnuplot runs without a shell and never sees a path: the script goes to its stdin, the PNG
+// comes back on its stdout and is written by write_file_atomically. Text inside the script
+// (titles, series names) is in single-quoted gnuplot strings, where neither backquote command
+// substitution nor macros apply, with '' for a quote and line breaks replaced by spaces.
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -29,13 +35,44 @@ struct chart_files {
   std::string note;                             ///< why there is no PNG, when there is none
 };
 
-/// Writes <name>.csv (series,x,y), <name>.gp and <name>.png into dir. The PNG is drawn with
-/// gnuplot; without gnuplot the CSV and the script are still written and `note` says why.
+/// A chart whose PNG could not be drawn, and why.
+struct chart_failure {
+  std::string chart, reason;
+};
+
+/// While one exists, every chart drawn on this thread is counted and each failure recorded in
+/// it, so that the report's exit status can say that a chart is missing.
+class chart_log {
+ public:
+  chart_log();
+  ~chart_log();
+  chart_log(const chart_log&) = delete;
+  chart_log& operator=(const chart_log&) = delete;
+  const std::vector<chart_failure>& failures() const { return failures_; }
+  std::size_t charts() const { return charts_; }
+
+ private:
+  friend chart_files write_chart(const std::filesystem::path&, const std::string&, const chart&);
+  chart_log* previous_;
+  std::vector<chart_failure> failures_;
+  std::size_t charts_ = 0;
+};
+
+/// gnuplot's time limit for one chart.
+inline constexpr int gnuplot_seconds = 120;
+
+/// Writes <name>.csv (series,x,y), <name>.gp and <name>.png into dir. `name` is a plain file name
+/// chosen by the program (letters, digits, '_', '-'). When gnuplot is missing, fails, or returns
+/// no complete PNG, the CSV and the script are still written, a PNG of an earlier run is removed,
+/// `note` says why and the failure goes to the current chart_log.
 /// Throws std::runtime_error when a file cannot be written.
 chart_files write_chart(const std::filesystem::path& dir, const std::string& name, const chart& c);
 
 /// The report's markdown for a chart written as `name`: the image (or why there is none), the
 /// caption and a link to the CSV.
 std::string chart_markdown(const chart_files& files, const std::string& name, const std::string& caption);
+
+/// True when `bytes` is a whole PNG: the signature, then chunks up to IEND at the very end.
+bool is_complete_png(const std::string& bytes);
 
 }  // namespace rotlie::reports

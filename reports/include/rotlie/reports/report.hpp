@@ -1,17 +1,22 @@
 #pragma once
 // `rotlie report`: runs every experiment and writes its tables, data and figures into one
-// output folder, with an index.md that links them.
+// output folder, with an index.md that links them. The folder is locked for the run (see
+// report_folder.hpp); a chart gnuplot could not draw is listed in the result, the rest of the
+// report is still written.
 #include <filesystem>
 #include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "rotlie/reports/chart.hpp"
+
 namespace rotlie::reports {
 
 struct report_options {
   std::filesystem::path out_dir = "rotlie-report";
   bool quick = false;                                   ///< smaller sweeps, for a fast look
+  std::vector<std::string> sections;                    ///< keys of report_section_keys(); empty: all
   std::function<void(std::string_view)> progress;      ///< one line per step, may be empty
 };
 
@@ -22,8 +27,20 @@ struct report_section {
   std::vector<std::filesystem::path> files;
 };
 
-/// Writes every section and index.md; returns the paths written. Throws std::runtime_error on I/O failure.
-std::vector<std::filesystem::path> run_report(const report_options& options);
+/// What a run wrote, and the charts that have no PNG.
+struct report_result {
+  std::vector<std::filesystem::path> files;
+  std::size_t charts = 0;
+  std::vector<chart_failure> failed_charts;
+};
+
+/// The sections in report order, by the key that options.sections uses.
+const std::vector<std::string>& report_section_keys();
+
+/// Writes the chosen sections and index.md. Throws unusable_output_folder (a bad --out),
+/// output_folder_busy (another report runs there), std::invalid_argument (an unknown section)
+/// and std::runtime_error on I/O failure.
+report_result run_report(const report_options& options);
 
 /// Section "Lie algebra of the free rigid body": dimensions, Theorems 1–2 verdicts, Table 1.
 report_section lie_algebra_section(const report_options& options);
