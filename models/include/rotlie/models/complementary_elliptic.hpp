@@ -14,6 +14,10 @@
 
 namespace rotlie::models::elliptic {
 
+/// Boost.Math evaluates double functions in long double by default; the formulas here are
+/// already cancellation-free, so double stays double (4× faster, same accuracy: numeric_bench).
+using policy = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
+
 template <class T>
 struct jacobi_triple {
   T sn, cn, dn;
@@ -81,7 +85,7 @@ jacobi_triple<T> jacobi_functions(const T& u, const T& m, const T& mc) {
 /// F(am u | m) = u recovered from sn, cn, dn with |am u| ≤ π/2 (cn ≥ 0): sn R_F(cn², dn², 1).
 template <class T>
 T first_kind_from(const jacobi_triple<T>& j) {
-  return j.sn * boost::math::ellint_rf(j.cn * j.cn, j.dn * j.dn, T(1));
+  return j.sn * boost::math::ellint_rf(j.cn * j.cn, j.dn * j.dn, T(1), policy());
 }
 
 /// Π(am u; n | m) − F(am u | m) = (n/3) sn³ R_J(cn², dn², 1, 1 − n sn²) for cn ≥ 0 (DLMF 19.25.14),
@@ -89,7 +93,7 @@ T first_kind_from(const jacobi_triple<T>& j) {
 template <class T>
 T third_minus_first(const jacobi_triple<T>& j, const T& n, const T& one_minus_n_sn2) {
   if (n == 0 || j.sn == 0) return T(0);
-  return n / 3 * j.sn * j.sn * j.sn * boost::math::ellint_rj(j.cn * j.cn, j.dn * j.dn, T(1), one_minus_n_sn2);
+  return n / 3 * j.sn * j.sn * j.sn * boost::math::ellint_rj(j.cn * j.cn, j.dn * j.dn, T(1), one_minus_n_sn2, policy());
 }
 
 }  // namespace rotlie::models::elliptic

@@ -34,13 +34,13 @@ class exact_free_body {
 
  public:
   /// Safety factor of the a-priori estimate over the measured errors (tests/models/exact_flow_regimes_test).
-  static constexpr double estimate_factor = 16;
+  static constexpr double estimate_factor = 4;
   /// The largest phase |ω|·|t| (radians) that at() accepts.
   static constexpr double max_phase = 1152921504606846976.0;  // 2^60
 
   /// `accuracy`: the absolute error (on Q, and on G relative to |G|) above which an evaluation is
   /// redone in float128; the estimate returned with each state says what was reached.
-  exact_free_body(const vec3<T>& I, const body_state<T>& initial, double accuracy = 1e-13)
+  exact_free_body(const vec3<T>& I, const body_state<T>& initial, double accuracy = 1e-12)
       : initial_(checked(I, initial)),
         accuracy_(accuracy),
         eG_(exponent(std::max({abs_(initial.G[0]), abs_(initial.G[1]), abs_(initial.G[2])}))),

@@ -85,14 +85,14 @@ class free_body_motion {
       a_ = sqrt(-n_);
     } else {
       K_ = elliptic::complete_first_kind(mc_);
-      if (n_ != 0) D_complete_ = n_ / 3 * boost::math::ellint_rj(S(0), mc_, S(1), 1 - n_);
+      if (n_ != 0) D_complete_ = n_ / 3 * boost::math::ellint_rj(S(0), mc_, S(1), 1 - n_, elliptic::policy());
       const S sign_s = s < 0 ? S(-1) : S(1);
       const S d2 = c * c + mc_ * s * s;
       if (abs(c) >= abs(s))  // |φ₀| ≤ π/4 or ≥ 3π/4: F directly
-        u0_ = c >= 0 ? s * boost::math::ellint_rf(c * c, d2, S(1))
-                     : sign_s * 2 * K_ - s * boost::math::ellint_rf(c * c, d2, S(1));
+        u0_ = c >= 0 ? s * boost::math::ellint_rf(c * c, d2, S(1), elliptic::policy())
+                     : sign_s * 2 * K_ - s * boost::math::ellint_rf(c * c, d2, S(1), elliptic::policy());
       else  // near ±K: u₀ = ±(K ∓ v), v = |c| R_F(m_c s², m_c, d²) (complementary argument)
-        u0_ = sign_s * (K_ - c * boost::math::ellint_rf(mc_ * s * s, mc_, d2));
+        u0_ = sign_s * (K_ - c * boost::math::ellint_rf(mc_ * s * s, mc_, d2, elliptic::policy()));
     }
     D0_ = phase(u0_).second;
     R0t_ = transpose(frame(L));
