@@ -194,3 +194,18 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused) {
   BOOST_CHECK_THROW(models::exact_free_body<double>(water, test::initial_state<double>({1e308 * 10, 1, 1})), std::invalid_argument);
   BOOST_CHECK_THROW(models::exact_free_body<double>({1, 1, 3}, test::initial_state<double>({1, 1, 1})), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_CASE(every_scalar_meets_the_target_in_the_hard_regimes) {
+  // the class is templated on the scalar: long double and float128 against the same RK reference
+  const std::vector<std::pair<vec3<double>, vec3<double>>> cases{
+      {water, {1e-12, 1, 1e-12}}, {{3, 3.75, 5}, {-1, 0.5, 1}}, {{1, 1 + 1e-12, 1 + 2e-12}, {0.3, 1, 0.7}}, {{0.25, 0.75, 1}, {0.3, 1, 0.7}}};
+  for (const auto& [I, G] : cases) {
+    const auto reference = rk_reference(I, G, 3);
+    const models::exact_free_body<long double> ld(to<long double>(I), test::initial_state<long double>(to<long double>(G)));
+    const models::exact_free_body<quad> q(to<quad>(I), test::initial_state<quad>(to<quad>(G)));
+    const double e_ld = entry_error(ld.at(3.0L), reference, norm(G)), e_q = entry_error(q.at(quad(3)), reference, norm(G));
+    BOOST_TEST_MESSAGE("long double " << e_ld << ", float128 " << e_q << " (reference floor " << reference_floor << ")");
+    BOOST_TEST(e_ld < 1e-15);
+    BOOST_TEST(e_q < reference_floor);
+  }
+}
