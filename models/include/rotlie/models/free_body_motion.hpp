@@ -28,6 +28,7 @@ class free_body_motion {
  public:
   free_body_motion(const vec3<S>& I, const vec3<S>& G, const mat3<S>& Q0) : Q0_(Q0), G0_(G) {
     using std::abs;
+    using std::isfinite;
     using std::sqrt;
     std::array<int, 3> order{0, 1, 2};
     std::sort(order.begin(), order.end(), [&](int a, int b) { return I[idx(a)] < I[idx(b)]; });
@@ -75,6 +76,14 @@ class free_body_motion {
     rate_ = small_n_ ? length_ / Ix : length_ / Iz;
     // initial phase from sn₀ ∝ L_y L_xm, cn₀ ∝ L_x L_ym (a common positive factor drops out)
     S s = L[1] * Lxm_, c = L[0] * Lym_;
+    const S big = std::max(abs(s), abs(c));
+    if (!(big > 0) || !(wp_ != 0) || !isfinite(psi_scale_)) {
+      // the wobble about z is below the underflow threshold (relative size < 1e-150 in double):
+      // the steady rotation about ω is exact to that size
+      set_steady(I, G);
+      return;
+    }
+    s /= big, c /= big;
     const S r = sqrt(s * s + c * c);
     s /= r, c /= r;
     separatrix_ = mc_ == 0;
