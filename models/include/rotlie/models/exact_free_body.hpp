@@ -6,7 +6,8 @@
 //  - The closed form itself (detail::free_body_motion, REFERENCE.md §2.3 with the reformulations
 //    listed there) keeps its relative accuracy near the separatrix, near spherical, symmetric, thin
 //    and flat bodies; what remains is the round-off of the phase angles: an evaluation's error is
-//    estimated as ε·c·(1 + |u| + |ψ parts|), ε the unit round-off of the scalar used.
+//    estimated as ε·4·(2 + (|u| + |ψ parts|)·√(1 − n)), ε the unit round-off of the scalar used (√(1 − n):
+//    the axis ratio of the ellipse L⊥ runs on, large only in the thin island about z of a body with I_y ≈ I_z).
 //  - When that estimate exceeds the requested accuracy (long times, fast spin of a thin body) and a
 //    wider scalar exists (double, long double → float128), the evaluation is redone in float128;
 //    the wider motion is built once, on first need.
@@ -33,7 +34,8 @@ class exact_free_body {
   using wide = std::conditional_t<has_wider, quad, T>;
 
  public:
-  /// Safety factor of the a-priori estimate over the measured errors (tests/models/exact_flow_regimes_test).
+  /// Safety factor of the estimate over the measured errors (exact_flow_regimes_test; in 88,000 random
+  /// states over every regime the largest measured error was 0.92 of the estimate).
   static constexpr double estimate_factor = 4;
   /// The largest phase |ω|·|t| (radians) that at() accepts.
   static constexpr double max_phase = 1152921504606846976.0;  // 2^60
@@ -72,9 +74,10 @@ class exact_free_body {
                               std::to_string(static_cast<double>(max_time())) + " here)");
     const T tau = ldexp_(t, eG_ - eI_);
     const auto e = core_.at(tau);
-    T estimate = bound<T>(e.phase);
+    // a state the scalar cannot represent has no estimate in it (1: nothing is known)
+    T estimate = core_.representable() ? bound<T>(e.phase * core_.amplification()) : T(1);
     if constexpr (has_wider) {
-      if (estimate > T(accuracy_)) {
+      if (!(estimate <= T(accuracy_))) {
         auto w = wide_.p.load();
         if (!w) {
           vec3<wide> Iw, Gw;
@@ -88,7 +91,8 @@ class exact_free_body {
         body_state<T> s;
         for (std::size_t i = 0; i < 9; ++i) s.Q.a[i] = static_cast<T>(ew.state.Q.a[i]);
         for (std::size_t i = 0; i < 3; ++i) s.G[i] = static_cast<T>(ew.state.G[i]);
-        return {unscale(s), std::max(static_cast<T>(bound<wide>(ew.phase)), std::numeric_limits<T>::epsilon())};
+        const wide wide_estimate = w->representable() ? bound<wide>(ew.phase * w->amplification()) : wide(1);
+        return {unscale(s), std::max(static_cast<T>(wide_estimate), std::numeric_limits<T>::epsilon())};
       }
     }
     return {unscale(e.state), estimate};
@@ -102,7 +106,7 @@ class exact_free_body {
  private:
   template <class S>
   static S bound(const S& phase) {
-    return S(estimate_factor) * std::numeric_limits<S>::epsilon() * (1 + phase);
+    return std::numeric_limits<S>::epsilon() * (2 * S(estimate_factor) + S(estimate_factor) * phase);
   }
   static const body_state<T>& checked(const vec3<T>& I, const body_state<T>& initial) {
     validate_moments(I);

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 
 #include "rotlie/models/complementary_elliptic.hpp"
 #include "rotlie/models/rigid_body.hpp"
@@ -55,6 +56,14 @@ class free_body_motion {
       set_steady(I, G);  // ω ∥ G
       return;
     }
+    const S tiny = std::numeric_limits<S>::min() * S(1152921504606846976.0) * length_ * length_;  // 2^60 × least normal
+    for (const auto& l : L) underflow_ = underflow_ || (l != 0 && l * l < tiny);
+    if (L[0] * L[0] + L[1] * L[1] < tiny) {
+      // the wobble about z is below |L| · 1e-145 (double): its squares would lose their digits to
+      // underflow, and the steady rotation about ω is exact to that size
+      set_steady(I, G);
+      return;
+    }
     const S dzx = Iz - Ix, dzy = Iz - Iy, dyx = Iy - Ix;
     S Dx = 0, Dy = 0, Dz = 0;  // L² − 2E I_x, L² − 2E I_y, 2E I_z − L², without cancellation but in D_y
     for (std::size_t i = 0; i < 3; ++i) {
@@ -73,6 +82,8 @@ class free_body_motion {
     n_ = -Iz * dyx / (Ix * dzy);  // = −L_zm² m / L_xm², Abramowitz–Stegun sign, ≤ 0
     psi_scale_ = length_ * dzx / (Ix * Iz * wp_);
     small_n_ = n_ >= -1;
+    using std::sqrt;
+    amplification_ = sqrt(1 - n_);  // L_ym/L_xm ~ √|n|: how fast the direction of L⊥ turns per unit of u
     rate_ = small_n_ ? length_ / Ix : length_ / Iz;
     // initial phase from sn₀ ∝ L_y L_xm, cn₀ ∝ L_x L_ym (a common positive factor drops out)
     S s = L[1] * Lxm_, c = L[0] * Lym_;
@@ -109,10 +120,17 @@ class free_body_motion {
   }
 
   bool steady() const { return steady_; }
+  /// False when a nonzero component of G is so small against |G| that its square underflows in S
+  /// (below ~1e-145 |G| in double) and the motion is not the steady rotation about the stable
+  /// axis: the energy differences lose that component, so a wider scalar must be used.
+  bool representable() const { return steady_ || !underflow_; }
   bool separatrix() const { return separatrix_; }
   S parameter() const { return steady_ ? S(0) : m_; }
   S complementary_parameter() const { return steady_ ? S(1) : mc_; }
   S n() const { return n_; }
+  /// Factor by which round-off in the phases reaches the attitude: the ellipse of L⊥ has axis ratio
+  /// L_ym/L_xm = √(I_y (I_z − I_x)/(I_x (I_z − I_y))) ≈ √(1 − n), and its direction turns that much faster.
+  S amplification() const { return steady_ ? S(1) : amplification_; }
   S period_phase_rate() const { return steady_ ? S(0) : wp_; }
   S quarter_period() const { return K_; }
 
@@ -214,8 +232,8 @@ class free_body_motion {
   vec3<S> G0_{}, Iw_{}, steady_axis_{};
   S steady_rate_ = 0, length_ = 0;
   S m_ = 0, mc_ = 1, kc_ = 1, Lxm_ = 0, Lym_ = 0, Lzm_ = 0, wp_ = 0, n_ = 0, psi_scale_ = 0, rate_ = 0;
-  S K_ = 0, D_complete_ = 0, u0_ = 0, D0_ = 0, a_ = 0, flip_ = 1;
-  bool steady_ = false, separatrix_ = false, small_n_ = true;
+  S K_ = 0, D_complete_ = 0, u0_ = 0, D0_ = 0, a_ = 0, flip_ = 1, amplification_ = 1;
+  bool steady_ = false, separatrix_ = false, small_n_ = true, underflow_ = false;
 };
 
 }  // namespace rotlie::models::detail
