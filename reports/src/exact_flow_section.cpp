@@ -112,9 +112,11 @@ report_section exact_flow_section(const report_options& options) {
         "runs on (large only in the thin island about z of a body with I_y ≈ I_z); when it passes 1e-12 (long times, "
         "fast spin, that island) or when a component of G is below 1e-145 |G| off the stable steady rotations, the "
         "evaluation is redone in float128, and beyond |ω| t = 2^60 rad the flow refuses.\n\n"
-        "Before this formulation the error grew like ε/d² near the middle axis (1.8e-6 at d = 1e-8, a library "
-        "domain error below d = 1e-9), reached 7.5e-10 at anisotropy 1e-9, and the thin rod lost 8 digits to a "
-        "cancellation in ψ (figures measured on the previous version with the same protocol).\n\n"
+        "Before this formulation (the Π form of REFERENCE.md §2.3 with Boost's k-parametrised functions, measured "
+        "with the same float128 reference at T): the error grew like ε/d² near the middle axis (2.1e-12 at d = 1e-4, "
+        "1.8e-6 at d = 1e-8, a library domain error from d = 1e-10 on and on the branch G1 < 0 of the exact "
+        "separatrix), reached 7e-10 at anisotropy 1e-9 and 4e-11 at 1e-6, 3.5e-10 for water at T = 1e6, and 2.6e-8 for "
+        "the thin rod at t = 1, where double cannot hold the 3e7 rad of spin to better than ~4e-9.\n\n"
      << "| regime | parameter | m_c | max error, Q | max error, G/‖G‖ | estimate | two halves, Q |\n"
      << "|---|---|--:|--:|--:|--:|--:|\n";
   chart c;
