@@ -115,8 +115,8 @@ class free_body_motion {
         u0_ = sign_s * (K_ - c * boost::math::ellint_rf(mc_ * s * s, mc_, d2, elliptic::policy()));
     }
     D0_ = phase(u0_).second;
-    R0t_ = transpose(frame(L));
-    A0w_ = W_ * transpose(Q0);
+    B_ = transpose(frame(L)) * (W_ * transpose(Q0));  // R1(L(0))ᵀ A(0) in the working frame
+    Wt_ = transpose(W_);
   }
 
   bool steady() const { return steady_; }
@@ -152,12 +152,16 @@ class free_body_motion {
     const auto [j, D] = phase(wp_ * t + u0_);
     const vec3<S> L{flip_ * Lxm_ * j.cn, flip_ * Lym_ * j.sn, Lzm_ * j.dn};
     const S linear = rate_ * t, elliptic_part = psi_scale_ * (D - D0_), psi = linear + elliptic_part;
-    mat3<S> Z;
+    // A = R1(L) Z(ψ) R1(L(0))ᵀ A(0), Z(ψ) = [[cos ψ, sin ψ, 0], [−sin ψ, cos ψ, 0], [0, 0, 1]] applied to columns
+    mat3<S> FZ = frame(L);
     const S cp = cos(psi), sp = sin(psi);
-    Z(0, 0) = cp, Z(0, 1) = sp, Z(1, 0) = -sp, Z(1, 1) = cp, Z(2, 2) = S(1);
-    const mat3<S> A = frame(L) * Z * R0t_ * A0w_;
-    const mat3<S> Wt = transpose(W_);
-    return {{transpose(Wt * A), Wt * L}, abs(wp_ * t) + abs(u0_) + abs(linear) + abs(elliptic_part)};
+    for (int i = 0; i < 3; ++i) {
+      const S f0 = FZ(i, 0), f1 = FZ(i, 1);
+      FZ(i, 0) = f0 * cp - f1 * sp;
+      FZ(i, 1) = f0 * sp + f1 * cp;
+    }
+    const mat3<S> A = FZ * B_;
+    return {{transpose(Wt_ * A), Wt_ * L}, abs(wp_ * t) + abs(u0_) + abs(linear) + abs(elliptic_part)};
   }
 
  private:
@@ -228,7 +232,7 @@ class free_body_motion {
     return {t, D};
   }
 
-  mat3<S> Q0_{}, W_{}, R0t_{}, A0w_{};
+  mat3<S> Q0_{}, W_{}, Wt_{}, B_{};
   vec3<S> G0_{}, Iw_{}, steady_axis_{};
   S steady_rate_ = 0, length_ = 0;
   S m_ = 0, mc_ = 1, kc_ = 1, Lxm_ = 0, Lym_ = 0, Lzm_ = 0, wp_ = 0, n_ = 0, psi_scale_ = 0, rate_ = 0;
