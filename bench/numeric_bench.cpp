@@ -1,6 +1,20 @@
 // The numeric core's unit costs in double: one rotation about a principal axis (a stage), one
-// rotation about G, a whole step of the water schemes, and one evaluation of the exact flow.
+// rotation about G, a whole step of the water schemes, the exact flow (construction and
+// evaluation, ordinary and near the separatrix), and the exact flow's special functions from
+// Boost.Math, GSL and models/complementary_elliptic.hpp, with their accuracy against float128
+// printed before the timings.
 #include <benchmark/benchmark.h>
+
+#include <boost/math/special_functions/jacobi_elliptic.hpp>
+#include <boost/multiprecision/float128.hpp>
+
+#include <cstdio>
+
+#ifdef ROTLIE_BENCH_GSL
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_sf_ellint.h>
+#include <gsl/gsl_sf_elljac.h>
+#endif
 
 #include "rotlie/models/composition_stepper.hpp"
 #include "rotlie/models/exact_free_body.hpp"
@@ -9,11 +23,12 @@
 namespace {
 
 using namespace rotlie;
+using quad = boost::multiprecision::float128;
 const models::vec3<double> water{10220.0 / 29376, 19187.0 / 29376, 1};
 
-models::body_state<double> start() {
+models::body_state<double> start(double d = -1) {
   models::body_state<double> s;
-  s.G = {1, 1, 1};
+  s.G = d < 0 ? models::vec3<double>{1, 1, 1} : models::vec3<double>{d, 1, d};
   return s;
 }
 
@@ -51,18 +66,132 @@ void scheme_step(benchmark::State& state, const char* name) {
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-void exact_flow_evaluation(benchmark::State& state) {
-  const models::exact_free_body<double> exact(water, start());
+// d < 0: G = (1, 1, 1); otherwise G = (d, 1, d), d off the middle axis (m_c ≈ 2d²)
+void exact_flow_evaluation(benchmark::State& state, double d) {
+  const models::exact_free_body<double> exact(water, start(d));
   double t = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(exact.at(t));
+    t += 0.37;
+    if (t > 30) t = 0;  // stay within the double range of the estimate (no float128 redo)
+  }
+}
+
+void exact_flow_construction(benchmark::State& state, double d) {
+  const auto s = start(d);
+  for (auto _ : state) benchmark::DoNotOptimize(models::exact_free_body<double>(water, s));
+}
+
+void exact_flow_construction_and_evaluation(benchmark::State& state, double d) {
+  const auto s = start(d);
+  double t = 0.1;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(models::exact_free_body<double>(water, s).at(t));
+    t = t > 10 ? 0.1 : t + 0.37;
+  }
+}
+
+// The float128 path: what an evaluation costs when the estimate asks for it (long times).
+void exact_flow_float128_evaluation(benchmark::State& state) {
+  const models::exact_free_body<double> exact(water, start());
+  double t = 1e6;
   for (auto _ : state) {
     benchmark::DoNotOptimize(exact.at(t));
     t += 0.37;
   }
 }
 
-void exact_flow_construction(benchmark::State& state) {
-  const auto s = start();
-  for (auto _ : state) benchmark::DoNotOptimize(models::exact_free_body<double>(water, s));
+// ---- special functions: m = 1 − m_c
+struct parameter_point {
+  double m, mc;
+};
+const parameter_point ordinary{0.53, 0.47}, near_one{1 - 1e-10, 1e-10};
+
+void jacobi_complementary(benchmark::State& state, parameter_point p) {
+  double u = 0.1;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(models::elliptic::jacobi_functions(u, p.m, p.mc));
+    u = u > 3 ? 0.1 : u + 0.013;
+  }
+}
+void jacobi_boost(benchmark::State& state, parameter_point p) {
+  double u = 0.1, cn, dn;
+  const double k = std::sqrt(p.m);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(boost::math::jacobi_elliptic(k, u, &cn, &dn));
+    u = u > 3 ? 0.1 : u + 0.013;
+  }
+}
+void carlson_boost(benchmark::State& state, bool promote) {
+  double x = 0.1;
+  const models::elliptic::policy fast;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(promote ? boost::math::ellint_rf(x, 0.3, 1.0) + boost::math::ellint_rj(x, 0.3, 1.0, 1.4)
+                                     : boost::math::ellint_rf(x, 0.3, 1.0, fast) + boost::math::ellint_rj(x, 0.3, 1.0, 1.4, fast));
+    x = x > 1 ? 0.1 : x + 0.013;
+  }
+}
+#ifdef ROTLIE_BENCH_GSL
+void jacobi_gsl(benchmark::State& state, parameter_point p) {
+  double u = 0.1, sn, cn, dn;
+  for (auto _ : state) {
+    gsl_sf_elljac_e(u, p.m, &sn, &cn, &dn);
+    benchmark::DoNotOptimize(sn + cn + dn);
+    u = u > 3 ? 0.1 : u + 0.013;
+  }
+}
+void carlson_gsl(benchmark::State& state) {
+  double x = 0.1;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(gsl_sf_ellint_RF(x, 0.3, 1.0, GSL_PREC_DOUBLE) + gsl_sf_ellint_RJ(x, 0.3, 1.0, 1.4, GSL_PREC_DOUBLE));
+    x = x > 1 ? 0.1 : x + 0.013;
+  }
+}
+#endif
+
+double gap(double x, const quad& y) { return std::abs(static_cast<double>(quad(x) - y)); }
+
+// Max abs error of sn, cn, dn over u ∈ [0, K] and of R_F, R_J on a grid, against float128.
+void print_accuracy() {
+  std::printf("max abs error against float128 (u in [0, K], 400 points)\n");
+  for (const auto& p : {ordinary, near_one}) {
+    const quad mq = 1 - quad(p.mc), mcq = p.mc;
+    const double K = models::elliptic::complete_first_kind(p.mc);
+    double ours = 0, boost_err = 0, gsl_err = 0;
+    for (int i = 0; i <= 400; ++i) {
+      const double u = K * i / 400;
+      const auto r = models::elliptic::jacobi_functions(quad(u), mq, mcq);
+      const auto o = models::elliptic::jacobi_functions(u, p.m, p.mc);
+      ours = std::max({ours, gap(o.sn, r.sn), gap(o.cn, r.cn), gap(o.dn, r.dn)});
+      double cn, dn;
+      const double sn = boost::math::jacobi_elliptic(std::sqrt(p.m), u, &cn, &dn);
+      boost_err = std::max({boost_err, gap(sn, r.sn), gap(cn, r.cn), gap(dn, r.dn)});
+#ifdef ROTLIE_BENCH_GSL
+      double s2, c2, d2;
+      gsl_sf_elljac_e(u, p.m, &s2, &c2, &d2);
+      gsl_err = std::max({gsl_err, gap(s2, r.sn), gap(c2, r.cn), gap(d2, r.dn)});
+#endif
+    }
+    std::printf("  sn cn dn, m_c = %g: complementary %.2e, Boost jacobi_elliptic %.2e, GSL elljac %.2e\n", p.mc, ours,
+                boost_err, gsl_err);
+  }
+  const models::elliptic::policy fast;
+  double rf_b = 0, rj_b = 0, rf_g = 0, rj_g = 0;
+  for (int i = 0; i <= 50; ++i)
+    for (const double y : {1e-12, 1e-6, 0.3, 1.0}) {
+      const double x = i / 50.0, p = 1 + i / 10.0;
+      const quad rf = boost::math::ellint_rf(quad(x), quad(y), quad(1)), rj = boost::math::ellint_rj(quad(x), quad(y), quad(1), quad(p));
+      rf_b = std::max(rf_b, gap(boost::math::ellint_rf(x, y, 1.0, fast), rf) / static_cast<double>(rf));
+      rj_b = std::max(rj_b, gap(boost::math::ellint_rj(x, y, 1.0, p, fast), rj) / static_cast<double>(rj));
+#ifdef ROTLIE_BENCH_GSL
+      rf_g = std::max(rf_g, gap(gsl_sf_ellint_RF(x, y, 1.0, GSL_PREC_DOUBLE), rf) / static_cast<double>(rf));
+      rj_g = std::max(rj_g, gap(gsl_sf_ellint_RJ(x, y, 1.0, p, GSL_PREC_DOUBLE), rj) / static_cast<double>(rj));
+#endif
+    }
+  std::printf("  Carlson (Boost without promotion to long double), max relative error: R_F Boost %.2e GSL %.2e; R_J Boost %.2e GSL %.2e\n", rf_b, rf_g, rj_b, rj_g);
+#ifndef ROTLIE_BENCH_GSL
+  std::printf("  (GSL not found: its columns are 0)\n");
+#endif
 }
 
 }  // namespace
@@ -73,6 +202,30 @@ BENCHMARK_CAPTURE(scheme_step, ABCBA2, "ABCBA2:ABC");
 BENCHMARK_CAPTURE(scheme_step, ABCBA4_SS3_Yoshida, "ABCBA4-SS3-Yoshida:ACB");
 BENCHMARK_CAPTURE(scheme_step, RSR4_SS3_Yoshida, "RSR4-SS3-Yoshida:ABC");
 BENCHMARK_CAPTURE(scheme_step, RS4_S5_McLachlan, "RS4-S5-McLachlan:CBA");
-BENCHMARK(exact_flow_evaluation);
-BENCHMARK(exact_flow_construction);
-BENCHMARK_MAIN();
+BENCHMARK_CAPTURE(exact_flow_evaluation, water, -1.0);
+BENCHMARK_CAPTURE(exact_flow_evaluation, middle_axis_1e_10, 1e-10);
+BENCHMARK_CAPTURE(exact_flow_construction, water, -1.0);
+BENCHMARK_CAPTURE(exact_flow_construction, middle_axis_1e_10, 1e-10);
+BENCHMARK_CAPTURE(exact_flow_construction_and_evaluation, water, -1.0);
+BENCHMARK_CAPTURE(exact_flow_construction_and_evaluation, middle_axis_1e_10, 1e-10);
+BENCHMARK(exact_flow_float128_evaluation);
+BENCHMARK_CAPTURE(jacobi_complementary, ordinary, ordinary);
+BENCHMARK_CAPTURE(jacobi_complementary, near_one, near_one);
+BENCHMARK_CAPTURE(jacobi_boost, ordinary, ordinary);
+BENCHMARK_CAPTURE(jacobi_boost, near_one, near_one);
+BENCHMARK_CAPTURE(carlson_boost, long_double_inside, true);
+BENCHMARK_CAPTURE(carlson_boost, double_inside, false);
+#ifdef ROTLIE_BENCH_GSL
+BENCHMARK_CAPTURE(jacobi_gsl, ordinary, ordinary);
+BENCHMARK_CAPTURE(jacobi_gsl, near_one, near_one);
+BENCHMARK(carlson_gsl);
+#endif
+
+int main(int argc, char** argv) {
+  print_accuracy();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -11,7 +11,7 @@ numeric=(
 symbolic=(
   pkg-config libginac-dev libcln-dev # lie/, bch/, solver/
   libeigen3-dev                  # solver/ (eigenvalues)
-  libgsl-dev                     # not used by the build today; kept while GSL is measured for the exact flow
+  libgsl-dev                     # bench/ only: GSL against Boost.Math for the exact flow (the libraries do not use it)
   libcli11-dev nlohmann-json3-dev # apps/rotlie, reports/
   libbenchmark-dev               # bench/
   gnuplot-nox                    # report figures

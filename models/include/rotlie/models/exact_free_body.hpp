@@ -1,175 +1,155 @@
 #pragma once
-// The exact motion of the free rigid body (REFERENCE.md §2.3, van Zon & Schofield's structure):
-// the body momentum by Jacobi elliptic functions, the attitude by the rotation angle ψ about the
-// angular momentum, in closed form with the incomplete elliptic integral of the third kind.
-// Both energy regimes (a frame swap makes the momentum circulate about the working z axis), the
-// separatrix (m = 1, hyperbolic functions), symmetric and spherical bodies and steady rotations
-// are handled; the amplitude and Π are continued across multiples of K, so ψ never jumps.
-#include <boost/math/special_functions/ellint_1.hpp>
-#include <boost/math/special_functions/ellint_3.hpp>
-#include <boost/math/special_functions/jacobi_elliptic.hpp>
+// The exact motion of the free rigid body, for any |G| and any scale of the moments, with an
+// error estimate on every evaluation and a stated time limit.
+//  - Scale-free: G and I are scaled by powers of two (exactly) to O(1); the motion with G scaled by
+//    s is the motion at time s·t, with I scaled by c the motion at time t/c.
+//  - The closed form itself (detail::free_body_motion, REFERENCE.md §2.3 with the reformulations
+//    listed there) keeps its relative accuracy near the separatrix, near spherical, symmetric, thin
+//    and flat bodies; what remains is the round-off of the phase angles: an evaluation's error is
+//    estimated as ε·4·(2 + (|u| + |ψ parts|)·√(1 − n)), ε the unit round-off of the scalar used (√(1 − n):
+//    the axis ratio of the ellipse L⊥ runs on, large only in the thin island about z of a body with I_y ≈ I_z).
+//  - When that estimate exceeds the requested accuracy (long times, fast spin of a thin body) and a
+//    wider scalar exists (double, long double → float128), the evaluation is redone in float128;
+//    the wider motion is built once, on first need.
+//  - Beyond a phase of 2^60 radians (|ω| |t|), where even float128 keeps no more than ~15 digits of
+//    the angle, at() refuses with std::domain_error instead of returning digits it cannot know.
+#include <boost/multiprecision/float128.hpp>
 
-#include <algorithm>
-#include <numeric>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <type_traits>
 
+#include "rotlie/models/free_body_motion.hpp"
 #include "rotlie/models/rigid_body.hpp"
 
 namespace rotlie::models {
 
 template <class T>
 class exact_free_body {
+  using quad = boost::multiprecision::float128;
+  static constexpr bool has_wider = !std::is_same_v<T, quad>;
+  using wide = std::conditional_t<has_wider, quad, T>;
+
  public:
-  exact_free_body(const vec3<T>& I, const body_state<T>& initial) : initial_(initial) {
-    validate_moments(I);
-    using std::abs;
-    using std::atan2;
-    using std::sqrt;
-    // Working frame: a proper rotation W with moments (Ix, Iy, Iz), I_y the middle one, chosen so that
-    // (L² − 2E I_y)(I_z − I_x) ≥ 0: the momentum circulates about the working z axis.
-    std::array<int, 3> order{0, 1, 2};
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return I[static_cast<std::size_t>(a)] < I[static_cast<std::size_t>(b)]; });
-    const vec3<T>& G = initial.G;
-    const T L2 = dot(G, G), two_e = 2 * kinetic_energy(I, G);
-    if (!(I[static_cast<std::size_t>(order[0])] < I[static_cast<std::size_t>(order[2])])) {
-      kind_ = motion::steady;  // spherical body: rotation about G at |G|/I
-    } else {
-      const T Iy = I[static_cast<std::size_t>(order[1])];
-      // Σ G_i² (1 − I_y/I_i) = L² − 2E I_y, without cancellation
-      T middle = 0;
-      for (std::size_t i = 0; i < 3; ++i) middle += G[i] * G[i] * (1 - Iy / I[i]);
-      if (middle < 0) std::swap(order[0], order[2]);  // U*: swap x and z, reverse y (below)
-    }
-    for (int r = 0; r < 3; ++r) W_(r, order[static_cast<std::size_t>(r)]) = T(1);
-    if (det(W_) < 0)
-      for (int c = 0; c < 3; ++c) W_(1, c) = -W_(1, c);
-    for (std::size_t r = 0; r < 3; ++r) Iw_[r] = I[static_cast<std::size_t>(order[r])];
-    const vec3<T> L = W_ * G;
-    length_ = sqrt(L2);
-    const vec3<T> w = angular_velocity(Iw_, L);
-    const T cross = abs(L[0] * w[1] - L[1] * w[0]) + abs(L[1] * w[2] - L[2] * w[1]) + abs(L[2] * w[0] - L[0] * w[2]);
-    if (kind_ == motion::steady || length_ == 0 || cross == 0) {
-      kind_ = motion::steady;  // ω ∥ G: Q(t) = Q0 · rotation(ω/|ω|, |ω| t)
-      const vec3<T> wb = angular_velocity(I, G);
-      steady_rate_ = sqrt(dot(wb, wb));
-      if (steady_rate_ > 0) steady_axis_ = {wb[0] / steady_rate_, wb[1] / steady_rate_, wb[2] / steady_rate_};
-      return;
-    }
-    kind_ = motion::elliptic;
-    const T Ix = Iw_[0], Iy = Iw_[1], Iz = Iw_[2];
-    T Dx = 0, Dz = 0;  // L² − 2E I_x and 2E I_z − L², as sums without cancellation
-    for (std::size_t i = 0; i < 3; ++i) {
-      Dx += L[i] * L[i] * (1 - Ix / Iw_[i]);
-      Dz += L[i] * L[i] * (Iz / Iw_[i] - 1);
-    }
-    (void)two_e;
-    const T sz = L[2] < 0 ? T(-1) : T(1);
-    Lxm_ = sqrt(Ix * Dz / (Iz - Ix));
-    Lym_ = sqrt(Iy * Dz / (Iz - Iy));
-    Lzm_ = sz * sqrt(Iz * Dx / (Iz - Ix));
-    m_ = (Iy - Ix) * Dz / ((Iz - Iy) * Dx);
-    if (m_ > 1) m_ = 1;  // round-off on the separatrix
-    if (m_ < 0) m_ = 0;
-    k_ = sqrt(m_);
-    const T sign_p = sz * ((Iz - Iy) < 0 ? T(-1) : T(1));
-    wp_ = sign_p * sqrt(Dx * (Iz - Iy) / (Ix * Iy * Iz));
-    n_ = -Lzm_ * Lzm_ * m_ / (Lxm_ * Lxm_);  // Abramowitz–Stegun sign, n ≤ 0
-    const T phi0 = atan2(L[1] * Lxm_, L[0] * Lym_);
-    separatrix_ = m_ == 1;
-    if (!separatrix_) {
-      K_ = boost::math::ellint_1(k_);
-      Pi_complete_ = boost::math::ellint_3(k_, n_);
-    }
-    eps_ = continued_F(phi0);
-    Pi0_ = continued_Pi(phi0);
-    psi_scale_ = length_ * (Iz - Ix) / (Ix * Iz * wp_);
-    R0t_ = transpose(frame(L));
-    A0w_ = W_ * transpose(initial.Q);  // van Zon's A = Qᵀ, in the working frame
-  }
+  /// Safety factor of the estimate over the measured errors (exact_flow_regimes_test; in 88,000 random
+  /// states over every regime the largest measured error was 0.92 of the estimate).
+  static constexpr double estimate_factor = 4;
+  /// The largest phase |ω|·|t| (radians) that at() accepts.
+  static constexpr double max_phase = 1152921504606846976.0;  // 2^60
+
+  /// `accuracy`: the absolute error (on Q, and on G relative to |G|) above which an evaluation is
+  /// redone in float128; the estimate returned with each state says what was reached.
+  exact_free_body(const vec3<T>& I, const body_state<T>& initial, double accuracy = 1e-12)
+      : initial_(checked(I, initial)),
+        accuracy_(accuracy),
+        eG_(exponent(std::max({abs_(initial.G[0]), abs_(initial.G[1]), abs_(initial.G[2])}))),
+        eI_(exponent(std::max({I[0], I[1], I[2]}))),
+        I_{ldexp_(I[0], -eI_), ldexp_(I[1], -eI_), ldexp_(I[2], -eI_)},
+        G_{ldexp_(initial.G[0], -eG_), ldexp_(initial.G[1], -eG_), ldexp_(initial.G[2], -eG_)},
+        omega_(T(std::sqrt(static_cast<double>(dot(G_, G_)))) / std::min({I_[0], I_[1], I_[2]})),  // |ω| ≤ |G|/I_min
+        core_(I_, G_, initial.Q) {}
 
   /// The elliptic parameter m of the momentum's motion (0 for a steady rotation, 1 on the separatrix).
-  T parameter() const { return kind_ == motion::steady ? T(0) : m_; }
+  T parameter() const { return core_.parameter(); }
+  /// The complementary parameter m_c = 1 − m, computed directly (exact 0 on the separatrix).
+  T complementary_parameter() const { return core_.complementary_parameter(); }
 
-  /// The state at time t (any sign).
-  body_state<T> at(const T& t) const {
-    if (kind_ == motion::steady) {
-      body_state<T> s = initial_;
-      if (steady_rate_ > 0) s.Q = initial_.Q * rotation(steady_axis_, steady_rate_ * t);
-      return s;
+  /// The largest |t| that at() accepts.
+  T max_time() const { return ldexp_(T(max_phase) / omega_, eI_ - eG_); }
+
+  struct result {
+    body_state<T> state;
+    T error_estimate;  ///< estimated max abs error of the entries of Q and of G/|G|
+  };
+
+  /// The state at time t and its estimated error; throws std::domain_error beyond max_time().
+  result evaluate(const T& t) const {
+    using std::abs;
+    using std::isfinite;
+    if (!isfinite(static_cast<double>(t)) || abs(t) > max_time())
+      throw std::domain_error("the exact flow is limited to |ω|·|t| ≤ 2^60 rad (|t| ≤ " +
+                              std::to_string(static_cast<double>(max_time())) + " here)");
+    const T tau = ldexp_(t, eG_ - eI_);
+    const auto e = core_.at(tau);
+    // a state the scalar cannot represent has no estimate in it (1: nothing is known)
+    T estimate = core_.representable() ? bound<T>(e.phase * core_.amplification()) : T(1);
+    if constexpr (has_wider) {
+      if (!(estimate <= T(accuracy_))) {
+        auto w = wide_.p.load();
+        if (!w) {
+          vec3<wide> Iw, Gw;
+          mat3<wide> Qw;
+          for (std::size_t i = 0; i < 3; ++i) Iw[i] = wide(I_[i]), Gw[i] = wide(G_[i]);
+          for (std::size_t i = 0; i < 9; ++i) Qw.a[i] = wide(initial_.Q.a[i]);
+          w = std::make_shared<const detail::free_body_motion<wide>>(Iw, Gw, Qw);
+          wide_.p.store(w);
+        }
+        const auto ew = w->at(wide(tau));
+        body_state<T> s;
+        for (std::size_t i = 0; i < 9; ++i) s.Q.a[i] = static_cast<T>(ew.state.Q.a[i]);
+        for (std::size_t i = 0; i < 3; ++i) s.G[i] = static_cast<T>(ew.state.G[i]);
+        const wide wide_estimate = w->representable() ? bound<wide>(ew.phase * w->amplification()) : wide(1);
+        return {unscale(s), std::max(static_cast<T>(wide_estimate), std::numeric_limits<T>::epsilon())};
+      }
     }
-    using std::atan2;
-    using std::cos;
-    using std::sin;
-    const T u = wp_ * t + eps_;
-    T sn, cn, dn, am;
-    if (separatrix_) {
-      using std::cosh;
-      using std::tanh;
-      sn = tanh(u);
-      cn = dn = 1 / cosh(u);
-      am = atan2(sn, cn);
-    } else {
-      using std::round;
-      const T j = round(u / (2 * K_));
-      const T v = u - 2 * j * K_;
-      sn = boost::math::jacobi_elliptic(k_, v, &cn, &dn);
-      am = atan2(sn, cn) + j * boost::math::constants::pi<T>();  // cn(v) ≥ 0 on |v| ≤ K: continuous
-      if (static_cast<long long>(j) % 2 != 0) sn = -sn, cn = -cn;  // sn, cn(v + 2jK) = (−1)^j sn, cn(v)
-    }
-    const vec3<T> L{Lxm_ * cn, Lym_ * sn, Lzm_ * dn};
-    const T psi = length_ / Iw_[2] * t + psi_scale_ * (continued_Pi(am) - Pi0_);
-    mat3<T> Z;
-    Z(0, 0) = cos(psi), Z(0, 1) = sin(psi), Z(1, 0) = -sin(psi), Z(1, 1) = cos(psi), Z(2, 2) = T(1);
-    const mat3<T> A = frame(L) * Z * R0t_ * A0w_;
-    body_state<T> s;
-    const mat3<T> Wt = transpose(W_);
-    s.G = Wt * L;
-    s.Q = transpose(Wt * A);
+    return {unscale(e.state), estimate};
+  }
+
+  /// The state at time t (any sign, |t| ≤ max_time()).
+  body_state<T> at(const T& t) const { return evaluate(t).state; }
+  /// The estimated error of at(t).
+  T error_bound(const T& t) const { return evaluate(t).error_estimate; }
+
+ private:
+  template <class S>
+  static S bound(const S& phase) {
+    return std::numeric_limits<S>::epsilon() * (2 * S(estimate_factor) + S(estimate_factor) * phase);
+  }
+  static const body_state<T>& checked(const vec3<T>& I, const body_state<T>& initial) {
+    validate_moments(I);
+    using std::isfinite;
+    for (const auto& g : initial.G)
+      if (!isfinite(static_cast<double>(g))) throw std::invalid_argument("the initial momentum must be finite");
+    for (const auto& q : initial.Q.a)
+      if (!isfinite(static_cast<double>(q))) throw std::invalid_argument("the initial attitude must be finite");
+    return initial;
+  }
+  static int exponent(const T& x) {
+    using std::ilogb;
+    return x > 0 ? static_cast<int>(ilogb(x)) : 0;
+  }
+  static T abs_(const T& x) {
+    using std::abs;
+    return abs(x);
+  }
+  static T ldexp_(const T& x, int e) {
+    using std::ldexp;
+    return ldexp(x, e);
+  }
+  body_state<T> unscale(body_state<T> s) const {
+    for (auto& g : s.G) g = ldexp_(g, eG_);
     return s;
   }
 
- private:
-  enum class motion { steady, elliptic };
-
-  static T det(const mat3<T>& m) {
-    return m(0, 0) * (m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1)) - m(0, 1) * (m(1, 0) * m(2, 2) - m(1, 2) * m(2, 0)) +
-           m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
-  }
-
-  // R1(L) of REFERENCE.md §2.3: columns (L_x L_z/(L L⊥), L_y L_z/(L L⊥), −L⊥/L), (−L_y/L⊥, L_x/L⊥, 0), L/|L|.
-  mat3<T> frame(const vec3<T>& L) const {
-    using std::sqrt;
-    const T perp = sqrt(L[0] * L[0] + L[1] * L[1]), l = length_;
-    mat3<T> r;
-    r(0, 0) = L[0] * L[2] / (l * perp), r(1, 0) = L[1] * L[2] / (l * perp), r(2, 0) = -perp / l;
-    r(0, 1) = -L[1] / perp, r(1, 1) = L[0] / perp, r(2, 1) = 0;
-    r(0, 2) = L[0] / l, r(1, 2) = L[1] / l, r(2, 2) = L[2] / l;
-    return r;
-  }
-
-  // F(φ | m) continued: F(φ + jπ) = F(φ) + 2jK.
-  T continued_F(const T& phi) const {
-    using std::atanh;
-    using std::round;
-    using std::sin;
-    if (separatrix_) return atanh(sin(phi));  // F(φ | 1) = artanh(sin φ), |φ| < π/2
-    const T j = round(phi / boost::math::constants::pi<T>());
-    return 2 * j * K_ + boost::math::ellint_1(k_, phi - j * boost::math::constants::pi<T>());
-  }
-  // Π(φ; n | m) continued: Π(φ + jπ) = Π(φ) + 2jΠ(n | m).
-  T continued_Pi(const T& phi) const {
-    using std::round;
-    if (separatrix_) return boost::math::ellint_3(k_, n_, phi);
-    const T j = round(phi / boost::math::constants::pi<T>());
-    return 2 * j * Pi_complete_ + boost::math::ellint_3(k_, n_, phi - j * boost::math::constants::pi<T>());
-  }
-
   body_state<T> initial_;
-  motion kind_ = motion::elliptic;
-  mat3<T> W_{}, R0t_{}, A0w_{};
-  vec3<T> Iw_{}, steady_axis_{};
-  T steady_rate_ = 0, length_ = 0;
-  T Lxm_ = 0, Lym_ = 0, Lzm_ = 0, m_ = 0, k_ = 0, wp_ = 0, n_ = 0, K_ = 0, Pi_complete_ = 0, eps_ = 0, Pi0_ = 0, psi_scale_ = 0;
-  bool separatrix_ = false;
+  double accuracy_;
+  int eG_ = 0, eI_ = 0;
+  vec3<T> I_{}, G_{};
+  T omega_ = 0;
+  detail::free_body_motion<T> core_;
+  struct wide_cache {  // the float128 motion, built on first need; copies share it
+    mutable std::atomic<std::shared_ptr<const detail::free_body_motion<wide>>> p;
+    wide_cache() = default;
+    wide_cache(const wide_cache& o) : p(o.p.load()) {}
+    wide_cache& operator=(const wide_cache& o) {
+      p.store(o.p.load());
+      return *this;
+    }
+  };
+  wide_cache wide_;
 };
 
 }  // namespace rotlie::models
