@@ -1,10 +1,12 @@
 #include <iostream>
+#include <optional>
 
 #include "arguments.hpp"
 #include "commands.hpp"
 #include "rotlie/bch/remainder_request.hpp"
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/reports/remainder_io.hpp"
+#include "scheme_lookup.hpp"
 
 namespace rotlie::app {
 namespace {
@@ -24,13 +26,45 @@ std::vector<std::pair<std::string, cln::cl_RA>> parse_coefficients(const std::st
                              name.find_first_not_of("0123456789", 1) == std::string::npos;
     if (!well_formed) throw usage_error("--coeffs: '" + name + "' is not a coefficient name (a1, b2, …)");
     const auto value = lie::parse_exact_number(item.substr(eq + 1));
-    if (!value) throw usage_error("--coeffs: " + name + " = '" + item.substr(eq + 1) + "' is not a finite number");
+    if (!value) {
+      const auto why = why_not_a_number(item.substr(eq + 1));
+      throw usage_error("--coeffs: " + name + " = '" + item.substr(eq + 1) + "' " +
+                        (why == "is not a number" ? "is not a finite number" : why));
+    }
     for (const auto& [n, v] : out)
       if (n == name) throw usage_error("--coeffs: " + name + " is given twice");
     out.emplace_back(name, *value);
     start = comma + 1;
   }
   return out;
+}
+
+// A raw word's size, checked before any algebra: the number of BCH terms grows with the word
+// length and the order, and the longest words of the paper have 11 letters (P1…P15, eq. 69).
+constexpr std::size_t max_word_letters = 40;
+
+bool looks_like_a_name(const std::string& s) {
+  const auto digit = s.find_first_of("0123456789");
+  return digit != std::string::npos && digit > 0 && s.find_first_not_of("0123456789", digit) == std::string::npos;
+}
+
+// The checks of a raw word that need no algebra: its length, and that every part acts (as the
+// table loader demands: a part that never acts cannot meet its first-order condition).
+void check_word(const std::string& word, const std::optional<bch::splitting>& split) {
+  if (bch::find_named_scheme(word)) return;
+  if (looks_like_a_name(word))
+    throw usage_error("--scheme: unknown scheme name '" + word +
+                      "' (N1…N7, R, P1…P15, RSRSRSR, SRSRSRS, or a word such as ABCBA)");
+  if (word.size() > max_word_letters)
+    throw usage_error("--scheme: the word has " + std::to_string(word.size()) + " letters, at most " +
+                      std::to_string(max_word_letters) + " are supported");
+  const bool rs = split ? *split == bch::splitting::rs : !word.empty() && word.find_first_not_of("RS") == std::string::npos;
+  const std::string parts = rs ? "RS" : "ABC";
+  if (word.empty() || word.find_first_not_of(parts) != std::string::npos) return;  // the library names the bad letter
+  for (const char p : parts)
+    if (word.find(p) == std::string::npos)
+      throw usage_error("--scheme: part " + std::string(1, p) + " never acts in the word " + word + " (every part of the " +
+                        parts + " splitting must appear)");
 }
 
 }  // namespace
@@ -44,14 +78,11 @@ int run_remainder(const remainder_options& options) {
       throw usage_error("--split must be ABC or RS, got '" + options.split + "'");
     request.split = options.split == "ABC" ? bch::splitting::abc : bch::splitting::rs;
   }
+  check_word(options.scheme, request.split);
   request.permutation = options.perm;
   request.order = static_cast<int>(parse_integer_in_range(options.order, "--order", 1, bch::max_remainder_order));
-  try {
-    if (!options.inertia.empty()) request.inertia = lie::parse_moments(options.inertia);
-    request.coefficients = parse_coefficients(options.coeffs);
-  } catch (const std::invalid_argument& e) {
-    throw usage_error(std::string("--inertia: ") + e.what());
-  }
+  if (!options.inertia.empty()) request.inertia = parse_moments_option(options.inertia);
+  request.coefficients = parse_coefficients(options.coeffs);
   bch::remainder_result result;
   try {
     result = bch::compute_remainder(request);
