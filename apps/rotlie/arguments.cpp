@@ -104,15 +104,59 @@ void check_output_folder(const std::string& folder, std::string_view option) {
   if (!why.empty()) throw usage_error(name + ": cannot create '" + folder + "': " + why);
 }
 
+namespace {
+
+// std::cout's buffer, writing to file descriptor 1 itself so that the reason of the first failed
+// write (ENOSPC, EPIPE, EIO) is kept until the end of the run instead of being lost in errno.
+class checked_output_buffer : public std::streambuf {
+ public:
+  checked_output_buffer() { setp(buffer_, buffer_ + sizeof buffer_); }
+  int first_error() const { return error_; }
+
+ protected:
+  int_type overflow(int_type c) override {
+    if (!drain()) return traits_type::eof();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override { return drain() ? 0 : -1; }
+
+ private:
+  bool drain() {
+    for (const char* p = pbase(); p < pptr();) {
+      const auto n = ::write(1, p, static_cast<std::size_t>(pptr() - p));
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) {
+        if (error_ == 0) error_ = errno;
+        break;
+      }
+      p += n;
+    }
+    setp(buffer_, buffer_ + sizeof buffer_);
+    return error_ == 0;
+  }
+
+  char buffer_[1 << 16];
+  int error_ = 0;
+};
+
+// Never destroyed: std::cout is flushed once more at exit, after function-local statics are gone.
+checked_output_buffer& output_buffer() {
+  static auto* const buffer = new checked_output_buffer;
+  return *buffer;
+}
+
+}  // namespace
+
+void route_standard_output() { std::cout.rdbuf(&output_buffer()); }
+
 std::string flush_standard_output() {
-  errno = 0;
   std::cout.flush();
-  const bool stream_failed = !std::cout;
-  const int stream_errno = errno;
-  errno = 0;
-  const bool stdio_failed = std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
-  const int err = stream_errno != 0 ? stream_errno : errno;
-  if (!stream_failed && !stdio_failed) return "";
+  const int err = output_buffer().first_error();
+  if (err == 0 && std::cout) return "";
   return err != 0 ? std::strerror(err) : "write error";
 }
 

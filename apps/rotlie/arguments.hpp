@@ -29,7 +29,10 @@ std::string why_not_a_number(std::string_view text);
 /// folders made to test creation are removed again).
 void check_output_folder(const std::string& folder, std::string_view option);
 
-/// Flushes standard output; on failure returns the reason ("No space left on device"), else "".
+/// Sends std::cout through a buffer that remembers the first failed write; call once, first.
+void route_standard_output();
+/// Flushes standard output; on failure returns the reason of the first failed write ("No space
+/// left on device"), else "".
 std::string flush_standard_output();
 
 /// `message` on one line: control characters (a newline in a value, an escape sequence) are

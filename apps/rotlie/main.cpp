@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iostream>
 #include <new>
+#include <sstream>
 
 #include "arguments.hpp"
 #include "commands.hpp"
@@ -41,9 +42,14 @@ std::string reworded(const CLI::ParseError& e, const CLI::App* sub) {
     return name.empty() ? what : name + ": wrong number of values";
   }
   if (dynamic_cast<const CLI::ExtrasError*>(&e)) {
-    const auto list = what.substr(colon == std::string::npos ? 0 : colon + 2);
-    const bool option = !list.empty() && list[0] == '-';
-    return std::string(option ? "unknown option " : "unexpected argument ") + list + where;
+    // "The following arguments were not expected: 1 --bogus": name an unknown option first.
+    std::istringstream list(what.substr(colon == std::string::npos ? 0 : colon + 1));
+    std::string word, first;
+    while (list >> word) {
+      if (word[0] == '-') return "unknown option " + word + where;
+      if (first.empty()) first = word;
+    }
+    return "unexpected argument " + first + where;
   }
   if (dynamic_cast<const CLI::RequiredError*>(&e) && what.find("subcommand") != std::string::npos)
     return "a subcommand is required (dims, stages, remainder, solve, integrate, order, exact or report; see rotlie --help)";
@@ -74,6 +80,7 @@ int main(int argc, char** argv) {
   using namespace rotlie::app;
   // The same behaviour on a closed pipe whatever the parent left SIGPIPE as (see the top).
   std::signal(SIGPIPE, SIG_DFL);
+  route_standard_output();
   CLI::App app{"rotlie — dedicated symplectic integrators for rigid-body rotation (Laskar & Vaillant 2018)"};
   app.require_subcommand(1);
   app.footer(exit_status_help);
