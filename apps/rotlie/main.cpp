@@ -51,6 +51,13 @@ std::string reworded(const CLI::ParseError& e, const CLI::App* sub) {
     }
     return "unexpected argument " + first + where;
   }
+  if (dynamic_cast<const CLI::ConversionError*>(&e)) {
+    // "Could not convert: --json = maybe": only a flag can fail to convert (every option is text)
+    const auto equals = what.find(" = ");
+    const auto flag = colon == std::string::npos || equals == std::string::npos ? std::string("a flag")
+                                                                                : what.substr(colon + 2, equals - colon - 2);
+    return flag + " takes no value" + (equals == std::string::npos ? "" : ", got '" + what.substr(equals + 3) + "'");
+  }
   if (dynamic_cast<const CLI::RequiredError*>(&e) && what.find("subcommand") != std::string::npos)
     return "a subcommand is required (dims, stages, remainder, solve, integrate, order, exact or report; see rotlie --help)";
   return what;
@@ -99,7 +106,8 @@ int main(int argc, char** argv) {
   remainder_options remainder;
   auto* remainder_cmd = app.add_subcommand("remainder", "Modified Hamiltonian H_R2 … H_RK of a splitting scheme");
   remainder_cmd->add_option("--scheme", remainder.scheme,
-                            "N1…N7, R, P1…P15, RSRSRSR, SRSRSRS, or a word such as ABCBA (at most 40 letters)")
+                            "N1…N7, R, P1…P15, RSRSRSR, SRSRSRS, or a word such as ABCBA (at most 40 letters, and fewer free "
+                            "coefficients at high orders: the error says how many)")
       ->required();
   remainder_cmd->add_option("--split", remainder.split, "ABC or RS (default: from the scheme)");
   remainder_cmd->add_option("--perm", remainder.perm, "ABC, BCA, CAB, ACB, CBA or BAC (default ABC)");

@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <array>
 #include <iostream>
 #include <optional>
 
@@ -67,6 +69,34 @@ void check_word(const std::string& word, const std::optional<bch::splitting>& sp
                         parts + " splitting must appear)");
 }
 
+// The work grows about tenfold per free coefficient left symbolic, and faster with the order
+// (RS words faster still): the most free coefficients a raw word may leave at each order K
+// (index), measured to stay within about 20 s with symbolic moments. The paper's named schemes
+// are always accepted (P1 at order 9 takes about 40 s, RSRSRSR at order 9 a few minutes).
+constexpr std::array<std::size_t, bch::max_remainder_order + 1> max_free_abc = {0, 40, 40, 40, 18, 10, 6, 4, 3, 3};
+constexpr std::array<std::size_t, bch::max_remainder_order + 1> max_free_rs = {0, 40, 40, 40, 18, 8, 4, 2, 2, 1};
+
+void check_size(const bch::remainder_request& r) {
+  if (bch::find_named_scheme(r.scheme)) return;
+  const std::string& word = r.scheme;
+  const auto split =
+      r.split.value_or(word.find_first_not_of("RS") == std::string::npos ? bch::splitting::rs : bch::splitting::abc);
+  bch::scheme_layout layout;
+  try {
+    layout = bch::layout_scheme(word, split, r.permutation);
+  } catch (const std::invalid_argument&) {
+    return;  // a malformed word: compute_remainder names the problem
+  }
+  std::size_t free = 0;
+  for (const auto& name : layout.free_coefficients)
+    free += std::none_of(r.coefficients.begin(), r.coefficients.end(), [&](const auto& c) { return c.first == name; });
+  const auto limit = (split == bch::splitting::rs ? max_free_rs : max_free_abc).at(static_cast<std::size_t>(r.order));
+  if (free > limit)
+    throw usage_error("--scheme: " + word + " leaves " + std::to_string(free) + " free coefficients at --order " +
+                      std::to_string(r.order) + ", at most " + std::to_string(limit) +
+                      " are supported at that order (give values with --coeffs or lower --order)");
+}
+
 }  // namespace
 
 int run_remainder(const remainder_options& options) {
@@ -83,6 +113,7 @@ int run_remainder(const remainder_options& options) {
   request.order = static_cast<int>(parse_integer_in_range(options.order, "--order", 1, bch::max_remainder_order));
   if (!options.inertia.empty()) request.inertia = parse_moments_option(options.inertia);
   request.coefficients = parse_coefficients(options.coeffs);
+  check_size(request);
   bch::remainder_result result;
   try {
     result = bch::compute_remainder(request);

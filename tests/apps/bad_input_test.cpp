@@ -160,6 +160,8 @@ const std::vector<bad_input> cases = {
   {{"dims", "--max-order", "5", "--max-order", "6"}, usage, "--max-order is given more than once"},
   {{"dims", "--max-order", "5", "--json", "--json"}, usage, "--json is given more than once"},
   {{"dims", "--max-order", "5", "--bogus"}, usage, "unknown option --bogus"},
+  {{"dims", "--max-order", "5", "--json=maybe"}, usage, "--json takes no value, got 'maybe'"},
+  {{"dims", "--max-order", "\xd9\xa5"}, usage, "not an integer"},  // an Arabic-Indic five
   {{"dims", "--max-order", "5", "extra"}, usage, "unexpected argument extra"},
 
   // stages
@@ -178,6 +180,10 @@ const std::vector<bad_input> cases = {
   {{"remainder", "--scheme", "ABA", "--split", "ABC"}, usage, "part C never acts"},
   {{"remainder", "--scheme", "RRR"}, usage, "part S never acts"},
   {{"remainder", "--scheme", std::string(100, 'A') + "B" + std::string(98, 'A') + "C"}, usage, "200 letters, at most 40"},
+  {{"remainder", "--scheme", "ABC" + std::string(38, 'A')}, usage, "41 letters, at most 40"},
+  {{"remainder", "--scheme", "ABCABCABCABCABCA"}, usage, "leaves 13 free coefficients at --order 5, at most 10"},
+  {{"remainder", "--scheme", "ABCABCA", "--order", "9"}, usage, "leaves 4 free coefficients at --order 9, at most 3"},
+  {{"remainder", "--scheme", "RSRSRSRSR", "--order", "9"}, usage, "leaves 3 free coefficients at --order 9, at most 1"},
   {{"remainder", "--scheme", "ABD"}, usage, "'D'"},
   {{"remainder", "--scheme", "AB\nC"}, usage, "\\n"},
   {{"remainder", "--scheme", "N9"}, usage, "unknown scheme name 'N9'"},
@@ -225,6 +231,8 @@ const std::vector<bad_input> cases = {
   {{"solve", "--family", "N", "--inertia", "water", "--out", "@DIR@/a-file/sub"}, usage, "'@DIR@/a-file' is a file"},
   {{"solve", "--family", "N", "--inertia", "water", "--out", "/proc/rotlie-no-such-folder"}, usage, "cannot create '/proc/rotlie-no-such-folder'"},
   {{"solve", "--family", "N", "--inertia", "water", "--json", "--json"}, usage, "--json is given more than once"},
+  {{"solve", "--family", "N", "--inertia", "water", "--out", "/dev/null/x"}, usage, "'/dev/null' is a file"},
+  {{"solve", "--family", "n", "--inertia", "water"}, usage, "--family must be N, R or P"},
   {{"solve", "--family", "R", "--perm", "ABC", "--inertia", "1/2,1/2,1"}, usage, "undefined for this body"},
 
   // integrate: numbers
@@ -258,6 +266,12 @@ const std::vector<bad_input> cases = {
   {{"integrate", "--scheme", "N2:XYZ:2", "--inertia", "water", "--h", "1/64"}, usage, "unknown permutation 'XYZ'"},
   {{"integrate", "--scheme", "N9:BAC:1", "--inertia", "water", "--h", "1/64"}, usage, "unknown dedicated scheme 'N9'"},
   {{"integrate", "--scheme", "N2:BAC:", "--inertia", "water", "--h", "1/64"}, usage, "--scheme label"},
+  {{"integrate", "--scheme", "N2::2", "--inertia", "water", "--h", "1/64"}, usage, "unknown permutation ''"},
+  {{"integrate", "--scheme", "N2:BAC:2:extra", "--inertia", "water", "--h", "1/64"}, usage, "--scheme label"},
+  {{"integrate", "--scheme", "ABCBA2:ABC:1", "--inertia", "water", "--h", "1/64"}, usage, "unknown permutation"},
+  {{"integrate", "--scheme", "ABCBA2", "--inertia", "water", "--h", "1/-64"}, usage, "--h must be positive"},
+  {{"integrate", "--scheme", "ABCBA2", "--inertia", "water", "--h", "0x1p-6"}, usage, "--h must be a number"},
+  {{"integrate", "--scheme", "ABCBA2", "--inertia", "water", "--h", "1/64/2"}, usage, "--h must be a number"},
   {{"integrate", "--scheme", "N2:BAC:0", "--inertia", "water", "--h", "1/64"}, usage, "--scheme label must be at least 1"},
   {{"integrate", "--scheme", "N2:BAC:9", "--inertia", "water", "--h", "1/64"}, usage, "no label 9"},
   {{"integrate", "--scheme", "R:ABC:1", "--inertia", "1/2,1/2,1", "--h", "1/64"}, usage, "0 real solutions"},
@@ -302,6 +316,8 @@ const std::vector<bad_input> cases = {
   {{"exact", "--inertia", "water", "--T", "1", "--G0", "nan,1,1"}, usage, "g1 = 'nan' is not a finite number"},
   {{"exact", "--inertia", "1e-100,1e-100,1e-100", "--T", "1e50", "--G0", "1,0,1"}, usage, "turns by"},
   {{"exact", "--inertia", "0.345,0.653,1", "--T", "1"}, usage, "eq. (77)"},
+  {{"exact", "--inertia", "water", "--T", "1e150"}, usage, "turns by"},
+  {{"exact", "--inertia", "water,1,1", "--T", "1"}, usage, "--inertia"},
   {{"exact", "--inertia", "1e400,1e400,1e400", "--T", "1"}, usage, "outside the range"},
   {{"exact", "--inertia", "water", "--T", "1", "--T", "2"}, usage, "--T is given more than once"},
 
@@ -311,6 +327,8 @@ const std::vector<bad_input> cases = {
   {{"report", "--out", "@DIR@/a-file/sub"}, usage, "cannot create"},
   {{"report", "--out", "/proc/rotlie-no-such-folder"}, usage, "cannot create"},
   {{"report", "--bogus"}, usage, "unknown option --bogus"},
+  {{"report", "--out", "/dev/null"}, usage, "'/dev/null' exists and is not a folder"},
+  {{"report", "--quick=maybe"}, usage, "--quick takes no value"},
   {{"report", "--out", "a", "--out", "b"}, usage, "--out is given more than once"},
   {{"report", "--quick", "--quick"}, usage, "--quick is given more than once"},
   {{"report", "extra"}, usage, "unexpected argument extra"},
@@ -429,8 +447,12 @@ BOOST_AUTO_TEST_CASE(force_uses_a_table_of_another_body_with_a_warning) {
   BOOST_TEST(r.err.find("(1.00000, 2.00000, 2.00000)") != std::string::npos, r.err);  // the table's body
 }
 
+// Run inside the scratch folder, so that a case that wrongly succeeded (a report with its
+// default folder) leaves nothing outside it; removed at the end.
 struct cleanup {
+  cleanup() { fs::current_path(scratch()); }
   ~cleanup() {
+    fs::current_path(fs::temp_directory_path());
     std::error_code ec;
     fs::remove_all(scratch(), ec);
   }
