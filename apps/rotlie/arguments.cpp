@@ -151,7 +151,20 @@ checked_output_buffer& output_buffer() {
 
 }  // namespace
 
-void route_standard_output() { std::cout.rdbuf(&output_buffer()); }
+void route_standard_output() {
+  // A closed descriptor 0, 1 or 2 would be reused by the next file opened (a scheme table
+  // written by solve --out would receive the output). /dev/null opened read-only holds the
+  // place: a closed standard output still fails every write, and is reported.
+  for (const int fd : {0, 1, 2})
+    if (::fcntl(fd, F_GETFD) < 0 && errno == EBADF) {
+      const int placeholder = ::open("/dev/null", fd == 2 ? O_WRONLY : O_RDONLY);
+      if (placeholder >= 0 && placeholder != fd) {
+        ::dup2(placeholder, fd);
+        ::close(placeholder);
+      }
+    }
+  std::cout.rdbuf(&output_buffer());
+}
 
 std::string flush_standard_output() {
   std::cout.flush();

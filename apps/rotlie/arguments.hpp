@@ -29,7 +29,8 @@ std::string why_not_a_number(std::string_view text);
 /// folders made to test creation are removed again).
 void check_output_folder(const std::string& folder, std::string_view option);
 
-/// Sends std::cout through a buffer that remembers the first failed write; call once, first.
+/// Sends std::cout through a buffer that remembers the first failed write, after putting a
+/// placeholder on any closed standard descriptor; call once, first.
 void route_standard_output();
 /// Flushes standard output; on failure returns the reason of the first failed write ("No space
 /// left on device"), else "".

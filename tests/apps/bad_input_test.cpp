@@ -56,8 +56,10 @@ struct run_result {
   std::string out, err;
 };
 
+constexpr int closed_stdout = -2;
+
 // fork and exec without a shell, so that every byte of an argument reaches rotlie as written;
-// `stdout_fd` replaces standard output when not negative.
+// `stdout_fd` replaces standard output when not negative, or closes it (closed_stdout).
 run_result run(const std::vector<std::string>& args, int stdout_fd = -1) {
   const fs::path out = scratch() / "stdout", err = scratch() / "stderr";
   std::vector<std::string> argv_text{ROTLIE_BINARY};
@@ -68,11 +70,12 @@ run_result run(const std::vector<std::string>& args, int stdout_fd = -1) {
   const pid_t pid = ::fork();
   if (pid == 0) {
     const int in = ::open("/dev/null", O_RDONLY);
-    const int o = stdout_fd >= 0 ? stdout_fd : ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int o = stdout_fd >= 0 ? stdout_fd : ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);  // fd 3 or above
     const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     ::dup2(in, 0);
     ::dup2(o, 1);
     ::dup2(e, 2);
+    if (stdout_fd == closed_stdout) ::close(1);
     ::execv(argv[0], argv.data());
     ::_exit(127);
   }
@@ -80,7 +83,7 @@ run_result run(const std::vector<std::string>& args, int stdout_fd = -1) {
   ::waitpid(pid, &raw, 0);
   run_result r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-  r.out = stdout_fd >= 0 ? "" : slurp(out);
+  r.out = stdout_fd == -1 ? slurp(out) : "";
   r.err = slurp(err);
   return r;
 }
@@ -379,6 +382,11 @@ BOOST_AUTO_TEST_CASE(a_folder_without_write_permission_is_refused, *boost::unit_
   check_one_line_error(run({"solve", "--family", "N", "--inertia", "water", "--out", (locked / "sub").string()}), usage,
                        "cannot create");
   fs::permissions(locked, fs::perms::owner_all);
+  const fs::path unreadable = scratch() / "unreadable.scheme";
+  write(unreadable, table_text(""));
+  fs::permissions(unreadable, fs::perms::none);
+  check_one_line_error(run({"integrate", "--scheme", unreadable.string(), "--inertia", "water", "--h", "1/64"}), usage,
+                       "cannot read '" + unreadable.string() + "': Permission denied");
 }
 
 BOOST_AUTO_TEST_CASE(a_full_disk_is_a_failure) {
@@ -395,6 +403,20 @@ BOOST_AUTO_TEST_CASE(a_full_disk_is_a_failure) {
       check_one_line_error(r, failure, "cannot write to standard output: No space left on device");
     }
   }
+}
+
+BOOST_AUTO_TEST_CASE(a_closed_standard_output_is_a_failure) {
+  check_one_line_error(run({"dims", "--max-order", "3"}, closed_stdout), failure,
+                       "cannot write to standard output: Bad file descriptor");
+  // The tables solve writes must not take the free descriptor 1: the listing, written after
+  // them, would land in the last table opened if its descriptor were still in use.
+  const fs::path out = scratch() / "closed-stdout-tables";
+  const auto r = run({"solve", "--family", "N", "--scheme", "N4", "--perm", "BCA", "--inertia", "water", "--out", out.string()},
+                     closed_stdout);
+  check_one_line_error(r, failure, "cannot write to standard output");
+  const auto table = slurp(out / "N4_BCA_1.scheme");
+  BOOST_TEST(table.rfind("# rotlie scheme table", 0) == 0u, table.substr(0, 80));
+  BOOST_TEST(table.find("rank") == std::string::npos);  // no line of the listing
 }
 
 BOOST_AUTO_TEST_CASE(a_closed_pipe_ends_the_writer_by_sigpipe) {
