@@ -171,6 +171,9 @@ int main(int argc, char** argv) {
   }
   if (argc > 1 && argv[1][0] != '-' && !chosen)
     return fail("unknown subcommand '" + std::string(argv[1]) + "' (expected one of: " + names + ")", exit_usage);
+  if (argc > 1 && argv[1][0] == '-' && std::string(argv[1]) != "-h" && std::string(argv[1]) != "--help")
+    return fail("unknown option " + std::string(argv[1]) + " before the subcommand (options follow it; see rotlie --help)",
+                exit_usage);
 
   try {
     app.parse(argc, argv);

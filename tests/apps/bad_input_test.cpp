@@ -146,7 +146,8 @@ const std::vector<bad_input> cases = {
   // no or unknown subcommand
   {{}, usage, "subcommand"},
   {{"frobnicate"}, usage, "unknown subcommand 'frobnicate'"},
-  {{"--bogus"}, usage, "subcommand"},
+  {{"--bogus"}, usage, "unknown option --bogus before the subcommand"},
+  {{"--json", "dims", "--max-order", "3"}, usage, "unknown option --json before the subcommand"},
   {{"DIMS", "--max-order", "3"}, usage, "unknown subcommand 'DIMS'"},
 
   // dims
