@@ -1,5 +1,6 @@
 #pragma once
-// Validation of command-line values, with one-line messages that name the option.
+// Validation of command-line values, with one-line messages that name the option, and the checks
+// every subcommand shares at the boundary (output folders, the state of standard output).
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -11,7 +12,36 @@ struct usage_error : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Exit statuses (also listed in `rotlie --help`).
+inline constexpr int exit_failure = 1;  ///< the run failed: a write error, a numerical failure
+inline constexpr int exit_usage = 2;    ///< bad arguments: nothing was computed
+
 /// Parses a decimal integer in [lo, hi]; throws usage_error naming `option` otherwise.
 long parse_integer_in_range(std::string_view text, std::string_view option, long lo, long hi);
+
+/// Why `text` is not a usable number, for a message: "is out of range" when it is written like a
+/// number whose exponent or digit count is too large, "is not a finite number" for nan/inf, and
+/// "is not a number" otherwise.
+std::string why_not_a_number(std::string_view text);
+
+/// Throws usage_error naming `option` and the path unless `folder` is, or can be created as, a
+/// folder that accepts new files. Leaves the file system as it found it (a probe file and any
+/// folders made to test creation are removed again).
+void check_output_folder(const std::string& folder, std::string_view option);
+
+/// Sends std::cout through a buffer that remembers the first failed write, after putting a
+/// placeholder on any closed standard descriptor; call once, first.
+void route_standard_output();
+/// Flushes standard output; on failure returns the reason of the first failed write ("No space
+/// left on device"), else "".
+std::string flush_standard_output();
+
+/// `message` on one line: control characters (a newline in a value, an escape sequence) are
+/// shown as \n, \r, \t or \xHH so that no value can add lines or drive the terminal.
+std::string one_line(std::string_view message);
+
+/// True for a message worded by a library rather than by rotlie (Boost, CLN, GiNaC, the C++
+/// standard library): such text is never shown to the user.
+bool is_library_message(std::string_view message);
 
 }  // namespace rotlie::app

@@ -52,12 +52,14 @@ namespace rotlie::app {
 struct integrate_options {
   std::string scheme, inertia, h, T = "1", G0 = "1,1,1";
   bool json = false;
+  bool force = false;  ///< use a scheme-table file solved for another body (with a warning)
 };
 int run_integrate(const integrate_options& options);
 
 struct order_options {
   std::string scheme, inertia, T = "1", G0 = "1,1,1", scalar = "double", min_level = "1", max_level = "10";
   bool json = false;
+  bool force = false;  ///< use a scheme-table file solved for another body (with a warning)
 };
 int run_order(const order_options& options);
 

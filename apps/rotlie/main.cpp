@@ -1,24 +1,96 @@
 // The rotlie command-line interface. This is the only translation unit that includes CLI11.
+//
+// Exit statuses: 0 success; 1 the run failed (a write error such as a full disk, a numerical
+// failure); 2 bad arguments (nothing computed). A closed output pipe (`rotlie … | head`) ends
+// rotlie by SIGPIPE, as it does the standard filters: status 141 in the shell, no message.
 #include <CLI/CLI.hpp>
 
+#include <csignal>
+#include <filesystem>
 #include <iostream>
+#include <new>
+#include <sstream>
 
 #include "arguments.hpp"
 #include "commands.hpp"
+#include "scheme_lookup.hpp"
 
 namespace {
 
+using rotlie::app::exit_failure;
+using rotlie::app::exit_usage;
+using rotlie::app::usage_error;
+
 int fail(const std::string& message, int status) {
-  std::cerr << "rotlie: error: " << message << "\n";
+  std::cerr << "rotlie: error: " << rotlie::app::one_line(message) << "\n";
   return status;
+}
+
+const char* const exit_status_help =
+    "Exit status: 0 success; 1 the run failed (a write error such as a full disk, a numerical failure); "
+    "2 bad arguments. A closed output pipe ends rotlie by SIGPIPE (status 141), as it does the standard filters.";
+
+// CLI11's wording, said in rotlie's: which option, and what was wrong with it.
+std::string reworded(const CLI::ParseError& e, const CLI::App* sub) {
+  const std::string what = e.what();
+  const std::string where = sub ? " for " + sub->get_name() + " (see rotlie " + sub->get_name() + " --help)" : "";
+  const auto colon = what.find(':');
+  const std::string name = colon == std::string::npos ? "" : what.substr(0, colon);
+  if (dynamic_cast<const CLI::ArgumentMismatch*>(&e)) {
+    if (what.find("At Most") != std::string::npos) return name + " is given more than once";
+    if (what.find("missing") != std::string::npos) return name + " needs a value";
+    return name.empty() ? what : name + ": wrong number of values";
+  }
+  if (dynamic_cast<const CLI::ExtrasError*>(&e)) {
+    // "The following arguments were not expected: 1 --bogus": name an unknown option first.
+    std::istringstream list(what.substr(colon == std::string::npos ? 0 : colon + 1));
+    std::string word, first;
+    while (list >> word) {
+      if (word[0] == '-') return "unknown option " + word + where;
+      if (first.empty()) first = word;
+    }
+    return "unexpected argument " + first + where;
+  }
+  if (dynamic_cast<const CLI::ConversionError*>(&e)) {
+    // "Could not convert: --json = maybe": only a flag can fail to convert (every option is text)
+    const auto equals = what.find(" = ");
+    const auto flag = colon == std::string::npos || equals == std::string::npos ? std::string("a flag")
+                                                                                : what.substr(colon + 2, equals - colon - 2);
+    return flag + " takes no value" + (equals == std::string::npos ? "" : ", got '" + what.substr(equals + 3) + "'");
+  }
+  if (dynamic_cast<const CLI::RequiredError*>(&e) && what.find("subcommand") != std::string::npos)
+    return "a subcommand is required (dims, stages, remainder, solve, integrate, order, exact or report; see rotlie --help)";
+  return what;
+}
+
+// What CLI11 lets through: an option or flag given twice, an empty value.
+void check_given_options(const CLI::App& sub) {
+  for (const CLI::Option* opt : sub.get_options()) {
+    if (opt->get_name() == "--help" || opt->get_name() == "-h,--help") continue;
+    if (opt->count() > 1) throw usage_error(opt->get_name() + " is given more than once");
+    if (opt->count() == 1 && opt->get_expected_min() > 0)
+      for (const auto& value : opt->results())
+        if (value.empty()) throw usage_error(opt->get_name() + " must not be empty");
+  }
+}
+
+// Standard output written in full, or a failure: a full disk must not end with status 0.
+int finished(int status) {
+  const auto why = rotlie::app::flush_standard_output();
+  if (why.empty()) return status;
+  return fail("cannot write to standard output: " + why, exit_failure);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace rotlie::app;
+  // The same behaviour on a closed pipe whatever the parent left SIGPIPE as (see the top).
+  std::signal(SIGPIPE, SIG_DFL);
+  route_standard_output();
   CLI::App app{"rotlie — dedicated symplectic integrators for rigid-body rotation (Laskar & Vaillant 2018)"};
   app.require_subcommand(1);
+  app.footer(exit_status_help);
 
   dims_options dims;
   auto* dims_cmd = app.add_subcommand("dims", "Dimensions of L_k and the Theorem 1 and 2 verdicts per order");
@@ -33,7 +105,9 @@ int main(int argc, char** argv) {
 
   remainder_options remainder;
   auto* remainder_cmd = app.add_subcommand("remainder", "Modified Hamiltonian H_R2 … H_RK of a splitting scheme");
-  remainder_cmd->add_option("--scheme", remainder.scheme, "N1…N7, R, P1…P15, RSRSRSR, SRSRSRS, or a word such as ABCBA")
+  remainder_cmd->add_option("--scheme", remainder.scheme,
+                            "N1…N7, R, P1…P15, RSRSRSR, SRSRSRS, or a word such as ABCBA (at most 40 letters, and fewer free "
+                            "coefficients at high orders: the error says how many)")
       ->required();
   remainder_cmd->add_option("--split", remainder.split, "ABC or RS (default: from the scheme)");
   remainder_cmd->add_option("--perm", remainder.perm, "ABC, BCA, CAB, ACB, CBA or BAC (default ABC)");
@@ -53,6 +127,7 @@ int main(int argc, char** argv) {
   solve_cmd->add_option("--out", solve.out, "Write one scheme table per solution into this folder");
   solve_cmd->add_flag("--json", solve.json, "Machine-readable output on stdout");
 
+  const char* const force_help = "Use a scheme-table file solved for another body (with a warning)";
   integrate_options integrate;
   auto* integrate_cmd = app.add_subcommand("integrate", "Mean attitude error and CPU time of one run against the exact solution");
   integrate_cmd->add_option("--scheme", integrate.scheme, "Reference name (RS4-S5-McLachlan:CBA), SCHEME:PERM:LABEL (N2:BAC:2) or a scheme-table file")->required();
@@ -61,6 +136,7 @@ int main(int argc, char** argv) {
   integrate_cmd->add_option("--T", integrate.T, "Total time (default 1), a whole number of steps");
   integrate_cmd->add_option("--G0", integrate.G0, "Initial body angular momentum g1,g2,g3 (default 1,1,1)");
   integrate_cmd->add_flag("--json", integrate.json, "Machine-readable output on stdout");
+  integrate_cmd->add_flag("--force", integrate.force, force_help);
 
   order_options order;
   auto* order_cmd = app.add_subcommand("order", "Numeric order: errors at h = T/2^i and the fitted slope");
@@ -72,6 +148,7 @@ int main(int argc, char** argv) {
   order_cmd->add_option("--T", order.T, "Total time (default 1)");
   order_cmd->add_option("--G0", order.G0, "Initial body angular momentum (default 1,1,1)");
   order_cmd->add_flag("--json", order.json, "Machine-readable output on stdout");
+  order_cmd->add_flag("--force", order.force, force_help);
 
   exact_options exact;
   auto* exact_cmd = app.add_subcommand("exact", "The exact free-body state (G, attitude Q) at time T");
@@ -88,37 +165,65 @@ int main(int argc, char** argv) {
                          "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow");
 
   // CLI11 would only say "a subcommand is required" for a mistyped one: name it instead.
-  if (argc > 1 && argv[1][0] != '-') {
-    const std::string word = argv[1];
-    bool known = false;
-    std::string names;
-    for (const auto* sub : app.get_subcommands({})) {
-      known = known || sub->get_name() == word;
-      names += (names.empty() ? "" : ", ") + sub->get_name();
-    }
-    if (!known) return fail("unknown subcommand '" + word + "' (expected one of: " + names + ")", 2);
+  std::string names;
+  const CLI::App* chosen = nullptr;
+  for (const auto* sub : app.get_subcommands({})) {
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+    if (argc > 1 && sub->get_name() == argv[1]) chosen = sub;
   }
+  if (argc > 1 && argv[1][0] != '-' && !chosen)
+    return fail("unknown subcommand '" + std::string(argv[1]) + "' (expected one of: " + names + ")", exit_usage);
+  if (argc > 1 && argv[1][0] == '-' && std::string(argv[1]) != "-h" && std::string(argv[1]) != "--help")
+    return fail("unknown option " + std::string(argv[1]) + " before the subcommand (options follow it; see rotlie --help)",
+                exit_usage);
 
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help
-    return fail(e.what(), 2);
+    if (e.get_exit_code() == 0) return finished(app.exit(e));  // --help
+    return fail(reworded(e, chosen), exit_usage);
   }
 
   try {
-    if (*dims_cmd) return run_dims(dims);
-    if (*stages_cmd) return run_stages(stages);
-    if (*remainder_cmd) return run_remainder(remainder);
-    if (*solve_cmd) return run_solve(solve);
-    if (*integrate_cmd) return run_integrate(integrate);
-    if (*order_cmd) return run_order(order);
-    if (*exact_cmd) return run_exact(exact);
-    if (*report_cmd) return run_report_command(report);
+    for (const auto* sub : app.get_subcommands()) check_given_options(*sub);
+    if (*dims_cmd) return finished(run_dims(dims));
+    if (*stages_cmd) return finished(run_stages(stages));
+    if (*remainder_cmd) return finished(run_remainder(remainder));
+    if (*solve_cmd) {
+      if (!solve.out.empty()) check_output_folder(solve.out, "--out");
+      return finished(run_solve(solve));
+    }
+    if (*integrate_cmd) {
+      check_numeric_scales(integrate.inertia, integrate.G0, integrate.T);
+      return finished(run_integrate(integrate));
+    }
+    if (*order_cmd) {
+      check_numeric_scales(order.inertia, order.G0, order.T);
+      return finished(run_order(order));
+    }
+    if (*exact_cmd) {
+      check_numeric_scales(exact.inertia, exact.G0, exact.T);
+      return finished(run_exact(exact));
+    }
+    if (*report_cmd) {
+      check_output_folder(report.out, "--out");
+      return finished(run_report_command(report));
+    }
   } catch (const usage_error& e) {
-    return fail(e.what(), 2);
+    return fail(e.what(), exit_usage);
+  } catch (const std::filesystem::filesystem_error& e) {
+    // "filesystem error: cannot …: Reason [path]" said without the library's prefix
+    return fail("cannot use '" + e.path1().string() + "': " + e.code().message(), exit_failure);
+  } catch (const std::bad_alloc&) {
+    return fail("out of memory", exit_failure);
   } catch (const std::exception& e) {
-    return fail(e.what(), 1);
+    if (is_library_message(e.what()))
+      return fail("the computation failed inside a numerical library; the input is probably outside what the method "
+                  "supports (please report this command line)",
+                  exit_failure);
+    return fail(e.what(), exit_failure);
+  } catch (...) {
+    return fail("unexpected internal failure (please report this command line)", exit_failure);
   }
-  return fail("no subcommand", 2);
+  return fail("no subcommand", exit_usage);
 }

@@ -61,7 +61,7 @@ models::vec3<T> cast(const models::vec3<double>& v) {
 
 int run_integrate(const integrate_options& o) {
   const auto body = parse_inertia_option(o.inertia);
-  const auto table = lookup_scheme(o.scheme, body);
+  const auto table = lookup_scheme(o.scheme, body, o.force);
   const double h = parse_positive(o.h, "--h"), total = parse_positive(o.T, "--T");
   const long steps = step_count(total, h);
   const auto I = to_double(body);
@@ -114,7 +114,7 @@ models::order_measurement order_in(const schemes::scheme_table& table, const lie
 
 int run_order(const order_options& o) {
   const auto body = parse_inertia_option(o.inertia);
-  const auto table = lookup_scheme(o.scheme, body);
+  const auto table = lookup_scheme(o.scheme, body, o.force);
   const double total = parse_positive(o.T, "--T");
   const auto g0 = parse_momentum(o.G0);
   const int first = static_cast<int>(parse_integer_in_range(o.min_level, "--min-level", 0, 20));

@@ -1,10 +1,14 @@
 #include "scheme_lookup.hpp"
 
+#include <cln/integer.h>
 #include <cln/real.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include "arguments.hpp"
@@ -15,14 +19,135 @@
 #include "rotlie/solver/dedicated_schemes.hpp"
 
 namespace rotlie::app {
+namespace {
 
-lie::moments_of_inertia parse_inertia_option(const std::string& text) {
-  if (text.empty()) throw usage_error("--inertia is required (I1,I2,I3, water or sphere)");
+namespace fs = std::filesystem;
+
+constexpr std::uintmax_t max_table_bytes = 1 << 20;  // the largest solver table is a few kB
+
+const std::string range_text = "1e-" + std::to_string(max_decimal_exponent) + " … 1e" + std::to_string(max_decimal_exponent);
+
+// |x| compared exactly with 10^±150, before any conversion to double can overflow.
+bool magnitude_in_range(const cln::cl_RA& x) {
+  static const cln::cl_RA big = cln::expt_pos(cln::cl_I(10), static_cast<unsigned>(max_decimal_exponent));
+  const cln::cl_RA a = cln::abs(x);
+  return a <= big && a * big >= 1;
+}
+
+std::string shown(const cln::cl_RA& x) { return lie::to_decimal(x, 6); }
+
+std::string shown(double x) {
+  std::ostringstream s;
+  s.precision(3);
+  s << x;
+  return s.str();
+}
+
+// Three moments from a table's `inertia` line ("2555/7344 19187/29376 1"; commas also accepted).
+std::optional<lie::moments_of_inertia> moments_of_line(std::string text) {
+  for (char& c : text)
+    if (c == ',') c = ' ';
+  std::istringstream in(text);
+  std::string part;
+  lie::moments_of_inertia m;
+  std::size_t i = 0;
+  while (in >> part) {
+    const auto x = lie::parse_exact_number(part);
+    if (i == 3 || !x || !cln::plusp(*x)) return std::nullopt;
+    m.I[i++] = *x;
+  }
+  if (i != 3) return std::nullopt;
+  return m;
+}
+
+// The dedicated schemes depend on the moments only through their ratios: a body scaled by a
+// constant is the same body.
+bool same_body(const lie::moments_of_inertia& a, const lie::moments_of_inertia& b) {
+  return a.I[0] * b.I[2] == b.I[0] * a.I[2] && a.I[1] * b.I[2] == b.I[1] * a.I[2];
+}
+
+std::string body_text(const lie::moments_of_inertia& m) {
+  return "(" + shown(m.I[0]) + ", " + shown(m.I[1]) + ", " + shown(m.I[2]) + ")";
+}
+
+void check_body_of(const schemes::scheme_table& t, const std::string& file, const lie::moments_of_inertia& body,
+                   bool force) {
+  if (t.inertia.empty()) return;  // a reference scheme: good for every body
+  const auto solved_for = moments_of_line(t.inertia);
+  std::string why;
+  if (!solved_for)
+    why = file + " was solved for a body given as '" + t.inertia + "', which is not three positive exact numbers";
+  else if (!same_body(*solved_for, body))
+    why = file + " was solved for the body " + body_text(*solved_for) + ", not for --inertia " + body_text(body) +
+          ": its order holds only for the body it was solved for";
+  if (why.empty()) return;
+  if (!force) throw usage_error(why + " (pass --force to use it anyway)");
+  std::cerr << "rotlie: warning: " << one_line(why) << " (used anyway: --force)\n";
+}
+
+// The whole text of a scheme-table file, with every problem of the file itself named.
+std::string table_file_text(const std::string& name) {
+  std::error_code ec;
+  const auto status = fs::status(name, ec);
+  if (fs::is_directory(status)) throw usage_error("--scheme: '" + name + "' is a folder, not a scheme-table file");
+  if (!fs::is_regular_file(status)) throw usage_error("--scheme: '" + name + "' is not a regular file");
+  const auto size = fs::file_size(name, ec);
+  if (!ec && size > max_table_bytes)
+    throw usage_error("--scheme: '" + name + "' is " + std::to_string(size) + " bytes, too large for a scheme table");
+  std::ifstream in(name, std::ios::binary);
+  if (!in) throw usage_error("--scheme: cannot read '" + name + "': " + std::strerror(errno));
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  std::string text = buffer.str();
+  if (in.bad()) throw usage_error("--scheme: cannot read '" + name + "'");
+  if (text.empty()) throw usage_error("--scheme: '" + name + "' is empty, not a scheme table");
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // a byte-order mark from some editors
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if ((u < 0x20 && c != '\n' && c != '\r' && c != '\t') || u == 0x7f)
+      throw usage_error("--scheme: '" + name + "' is not a text scheme table (it holds binary data)");
+  }
+  // Windows line ends (CRLF, or a lone CR at the end) read as plain ones.
+  std::string lf;
+  lf.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if (text[i] != '\r' || (i + 1 < text.size() && text[i + 1] != '\n')) lf += text[i];
+  return lf;
+}
+
+bool looks_like_path(const std::string& name) {
+  std::error_code ec;
+  return name.find('/') != std::string::npos || fs::exists(name, ec) ||
+         (name.size() > 7 && name.compare(name.size() - 7, 7, ".scheme") == 0);
+}
+
+}  // namespace
+
+lie::moments_of_inertia parse_moments_option(const std::string& text) {
+  if (text.empty()) throw usage_error("--inertia must not be empty (I1,I2,I3, water or sphere)");
+  // A value written as a number but beyond the exact parser's limits is out of range, not "not a number".
+  std::size_t start = 0;
+  for (int i = 1; i <= 3 && start <= text.size(); ++i) {
+    const auto comma = std::min(text.find(',', start), text.size());
+    const std::string part = text.substr(start, comma - start);
+    if (!lie::parse_exact_number(part) && why_not_a_number(part).rfind("is out of range", 0) == 0)
+      throw usage_error("--inertia: I" + std::to_string(i) + " = '" + part + "' is out of range");
+    start = comma + 1;
+  }
   try {
     return lie::parse_moments(text);
   } catch (const std::invalid_argument& e) {
     throw usage_error(std::string("--inertia: ") + e.what());
   }
+}
+
+lie::moments_of_inertia parse_inertia_option(const std::string& text) {
+  const auto m = parse_moments_option(text);
+  for (std::size_t i = 0; i < 3; ++i)
+    if (!magnitude_in_range(m.I[i]))
+      throw usage_error("--inertia: I" + std::to_string(i + 1) + " = " + shown(m.I[i]) + " is outside the range " +
+                        range_text + " of the numeric subcommands");
+  return m;
 }
 
 models::vec3<double> to_double(const lie::moments_of_inertia& body) {
@@ -31,47 +156,74 @@ models::vec3<double> to_double(const lie::moments_of_inertia& body) {
 
 double parse_positive(const std::string& text, const std::string& what) {
   const auto x = lie::parse_exact_number(text);
-  if (!x) throw usage_error(what + " must be a number such as 0.01 or 1/64, got '" + text + "'");
+  if (!x) {
+    const auto why = why_not_a_number(text);
+    if (why == "is not a number") throw usage_error(what + " must be a number such as 0.01 or 1/64, got '" + text + "'");
+    throw usage_error(what + " '" + text + "' " + why);
+  }
   if (!cln::plusp(*x)) throw usage_error(what + " must be positive, got '" + text + "'");
-  const double v = cln::double_approx(*x);
-  if (!std::isfinite(v) || v == 0) throw usage_error(what + " is out of range: '" + text + "'");
-  return v;
+  if (!magnitude_in_range(*x)) throw usage_error(what + " '" + text + "' is outside the range " + range_text);
+  return cln::double_approx(*x);
 }
 
 models::vec3<double> parse_momentum(const std::string& text) {
   models::vec3<double> g{};
-  std::istringstream in(text);
-  std::string part;
-  std::size_t i = 0;
-  while (std::getline(in, part, ',')) {
-    if (i == 3) throw usage_error("--G0 takes three components g1,g2,g3");
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto comma = text.find(',', start);
+    if ((i < 2) == (comma == std::string::npos)) throw usage_error("--G0 takes three components g1,g2,g3, got '" + text + "'");
+    const std::string part = text.substr(start, i < 2 ? comma - start : std::string::npos);
     const auto x = lie::parse_exact_number(part);
-    if (!x) throw usage_error("--G0: '" + part + "' is not a number");
-    g[i++] = cln::double_approx(*x);
+    if (!x) throw usage_error("--G0: g" + std::to_string(i + 1) + " = '" + part + "' " + why_not_a_number(part));
+    if (!magnitude_in_range(*x) && cln::abs(*x) > 1)
+      throw usage_error("--G0: g" + std::to_string(i + 1) + " = '" + part + "' is outside the range " + range_text);
+    g[i] = cln::double_approx(*x);  // a component below the range may round to 0: only |G0| matters
+    start = comma + 1;
   }
-  if (i != 3) throw usage_error("--G0 takes three components g1,g2,g3");
-  for (const double c : g)
-    if (!std::isfinite(c)) throw usage_error("--G0 components must be finite");
-  if (g[0] == 0 && g[1] == 0 && g[2] == 0) throw usage_error("--G0 must not be zero");
+  if (g[0] == 0 && g[1] == 0 && g[2] == 0) throw usage_error("--G0 must not be zero, got '" + text + "'");
+  const double length = std::hypot(g[0], g[1], g[2]), range = std::pow(10.0, max_decimal_exponent);
+  if (length * range < 1) throw usage_error("--G0: |G0| = " + shown(length) + " is outside the range " + range_text);
+  // Squares of smaller components underflow in double: the computation could not see them.
+  for (std::size_t i = 0; i < 3; ++i)
+    if (g[i] != 0 && std::abs(g[i]) * range < length)
+      throw usage_error("--G0: g" + std::to_string(i + 1) + " = " + shown(g[i]) + " is below 1e-" +
+                        std::to_string(max_decimal_exponent) + " |G0|; give 0 or a larger value");
   return g;
 }
 
-schemes::scheme_table lookup_scheme(const std::string& name, const lie::moments_of_inertia& body) {
-  if (name.empty()) throw usage_error("--scheme is required");
+void check_numeric_scales(const std::string& inertia, const std::string& g0, const std::string& total) {
+  const auto I = to_double(parse_inertia_option(inertia));
+  const auto g = parse_momentum(g0);
+  const double T = parse_positive(total, "--T");
+  const double smallest = std::min({I[0], I[1], I[2]});
+  const double rate = std::hypot(g[0], g[1], g[2]) / smallest;  // ≤ 1e300: finite
+  const double limit = std::pow(10.0, max_decimal_exponent);
+  if (rate > limit || rate < 1 / limit)
+    throw usage_error("the angular rate |G0|/I_min = " + shown(rate) +
+                      " of --G0 and --inertia is outside the range " + range_text);
+  if (rate * T > limit)
+    throw usage_error("--T: the body turns by |G0| T / I_min = " + shown(rate * T) +
+                      " radians, outside the range " + range_text);
+}
+
+schemes::scheme_table lookup_scheme(const std::string& name, const lie::moments_of_inertia& body, bool force) {
+  if (name.empty()) throw usage_error("--scheme must not be empty");
   try {
     if (auto t = schemes::reference_scheme(name)) return *t;
   } catch (const std::invalid_argument& e) {
     throw usage_error(std::string("--scheme: ") + e.what());
   }
-  if (std::filesystem::is_regular_file(name)) {
-    std::ifstream in(name);
-    std::ostringstream text;
-    text << in.rdbuf();
+  if (looks_like_path(name)) {
+    std::error_code ec;
+    if (!fs::exists(name, ec)) throw usage_error("--scheme: no scheme-table file '" + name + "'");
+    schemes::scheme_table t;
     try {
-      return schemes::parse_scheme_table(text.str());
+      t = schemes::parse_scheme_table(table_file_text(name));
     } catch (const std::invalid_argument& e) {
       throw usage_error(name + ": " + e.what());
     }
+    check_body_of(t, name, body, force);
+    return t;
   }
   // SCHEME:PERM:LABEL
   const auto first = name.find(':'), second = name.find(':', first == std::string::npos ? first : first + 1);

@@ -10,16 +10,29 @@
 
 namespace rotlie::app {
 
-/// Throws usage_error for an unknown name, a bad label or a file that fails its checks.
-schemes::scheme_table lookup_scheme(const std::string& name, const lie::moments_of_inertia& body);
+/// The range of every scale the numeric subcommands take (moments, |G0|, h, T, and the angular
+/// rate |G0|/I): inside it no product or quotient of two of them leaves double precision.
+inline constexpr int max_decimal_exponent = 150;
 
-/// --inertia as exact moments (water, sphere, I1,I2,I3), validated (eq. 77).
+/// Throws usage_error for an unknown name, a bad label or a file that fails its checks. A table
+/// solved for another body (its `inertia` line, compared up to a common factor) is refused unless
+/// `force`, in which case a warning goes to stderr.
+schemes::scheme_table lookup_scheme(const std::string& name, const lie::moments_of_inertia& body, bool force = false);
+
+/// --inertia as exact moments (water, sphere, I1,I2,I3), validated (eq. 77): any size, for the
+/// exact subcommands (remainder).
+lie::moments_of_inertia parse_moments_option(const std::string& text);
+/// The same, each moment within 1e-150 … 1e150, for the numeric subcommands.
 lie::moments_of_inertia parse_inertia_option(const std::string& text);
 models::vec3<double> to_double(const lie::moments_of_inertia& body);
 
-/// A positive finite number given as a decimal or a rational (1/64); `what` names the option.
+/// A positive number within 1e-150 … 1e150 given as a decimal or a rational (1/64); `what` names the option.
 double parse_positive(const std::string& text, const std::string& what);
-/// g1,g2,g3 (decimals or rationals), finite and not all zero.
+/// g1,g2,g3 (decimals or rationals), not all zero, |G0| within 1e-150 … 1e150.
 models::vec3<double> parse_momentum(const std::string& text);
+
+/// The scales of one numeric run together: the fastest angular rate |G0|/I_min and the angle
+/// |G0| T / I_min stay within the range above, so that no energy, rate or phase overflows.
+void check_numeric_scales(const std::string& inertia, const std::string& g0, const std::string& total);
 
 }  // namespace rotlie::app

@@ -114,7 +114,7 @@ BOOST_AUTO_TEST_CASE(bad_orders_get_one_line_and_a_nonzero_exit) {
     expect_clean_error(cmd + " --max-order -4", "--max-order");
     expect_clean_error(cmd + " --max-order abc", "not an integer");
     expect_clean_error(cmd + " --max-order 2.5", "not an integer");
-    expect_clean_error(cmd + " --max-order ''", "not an integer");
+    expect_clean_error(cmd + " --max-order ''", "--max-order must not be empty");
     expect_clean_error(cmd + " --max-order 1000000", "at most");
     expect_clean_error(cmd + " --max-order 99999999999999999999999999", "at most");
     expect_clean_error(cmd + " --max-order -99999999999999999999999999", "at least");
