@@ -205,10 +205,7 @@ int main(int argc, char** argv) {
       check_numeric_scales(exact.inertia, exact.G0, exact.T);
       return finished(run_exact(exact));
     }
-    if (*report_cmd) {
-      check_output_folder(report.out, "--out");
-      return finished(run_report_command(report));
-    }
+    if (*report_cmd) return finished(run_report_command(report));  // checks and locks its folder itself
   } catch (const usage_error& e) {
     return fail(e.what(), exit_usage);
   } catch (const std::filesystem::filesystem_error& e) {

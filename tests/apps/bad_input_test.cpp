@@ -331,7 +331,7 @@ const std::vector<bad_input> cases = {
   {{"report", "--out", "@DIR@/a-file/sub"}, usage, "cannot create"},
   {{"report", "--out", "/proc/rotlie-no-such-folder"}, usage, "cannot create"},
   {{"report", "--bogus"}, usage, "unknown option --bogus"},
-  {{"report", "--out", "/dev/null"}, usage, "'/dev/null' exists and is not a folder"},
+  {{"report", "--out", "/dev/null"}, usage, "'/dev/null': it exists and is not a folder"},
   {{"report", "--quick=maybe"}, usage, "--quick takes no value"},
   {{"report", "--out", "a", "--out", "b"}, usage, "--out is given more than once"},
   {{"report", "--quick", "--quick"}, usage, "--quick is given more than once"},
@@ -379,7 +379,7 @@ BOOST_AUTO_TEST_CASE(a_folder_without_write_permission_is_refused, *boost::unit_
   const fs::path locked = scratch() / "locked";
   fs::create_directories(locked);
   fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec);
-  check_one_line_error(run({"report", "--out", locked.string()}), usage, "cannot write into");
+  check_one_line_error(run({"report", "--out", locked.string()}), usage, "Permission denied");
   check_one_line_error(run({"solve", "--family", "N", "--inertia", "water", "--out", (locked / "sub").string()}), usage,
                        "cannot create");
   fs::permissions(locked, fs::perms::owner_all);

@@ -215,7 +215,7 @@ BOOST_AUTO_TEST_CASE(an_unusable_out_is_status_2_naming_the_path) {
       {(root / "a-file").string(), "'" + (root / "a-file").string() + "': it exists and is not a folder"},
       {(root / "a-file" / "sub").string(),
        "cannot create the output folder '" + (root / "a-file" / "sub").string() + "': Not a directory"},
-      {"", "the output folder (--out) is empty"},
+      {"", "--out must not be empty"},
       {"/proc", "'/proc': cannot create a file in it"},
       {"/proc/rotlie-report", "'/proc/rotlie-report'"},
       {"/dev/null", "'/dev/null': it exists and is not a folder"},
