@@ -30,7 +30,20 @@ struct remainder_result {
   std::vector<GiNaC::symbol> symbols; ///< every symbol in the coefficients, in printing order
 };
 
-/// Throws std::invalid_argument with a one-line reason for anything malformed.
+/// Longest word that compute_remainder expands to `order` (1 … max_remainder_order), so that every
+/// accepted request ends in about a minute or less instead of running for hours: the symbolic
+/// expansion grows steeply with both. Palindromes (symmetric BCH, odd orders only) cost far less
+/// than other words (BCH nested from the left). Measured with a symbolic body, worst case:
+///   palindromes:  order 5, 25 stages: 3.8 s; order 7, 17 stages: 38 s; order 9, 11 stages: 58 s
+///   other words:  order 3, 25 stages: see below; order 5, 13 stages: 2.2 s; order 7, 7 stages: …
+/// (docs/scheme_table_format.md, "Limits", has the whole table).
+constexpr std::size_t max_remainder_stages(int order, bool symmetric) {
+  if (symmetric) return order <= 5 ? max_word_length : order <= 7 ? 17 : 11;
+  return order <= 3 ? max_word_length : order <= 5 ? 13 : order <= 7 ? 7 : 5;
+}
+
+/// Throws std::invalid_argument with a one-line reason for anything malformed, and for a word
+/// longer than max_remainder_stages at the order asked.
 remainder_result compute_remainder(const remainder_request& request);
 
 }  // namespace rotlie::bch
