@@ -20,8 +20,6 @@ namespace {
   throw std::invalid_argument("scheme table line " + std::to_string(line) + ": " + why);
 }
 
-std::string printable(const std::string& s) { return printable_text(s); }
-
 std::string trimmed(const std::string& s) {
   const auto first = s.find_first_not_of(" \t\r");
   if (first == std::string::npos) return "";
@@ -100,9 +98,9 @@ scheme_table parse_scheme_table(std::string_view text) {
     const auto blank = line.find_first_of(" \t");
     const std::string key = line.substr(0, blank);
     const std::string rest = blank == std::string::npos ? "" : trimmed(line.substr(blank));
-    if (key != "stage" && !seen.insert(key).second) fail(number, "'" + printable(key) + "' is given twice");
+    if (key != "stage" && !seen.insert(key).second) fail(number, "'" + printable_text(key) + "' is given twice");
     if (key == "format_version") {
-      if (rest != "1") fail(number, "format_version " + printable(rest) + " is not supported (only 1)");
+      if (rest != "1") fail(number, "format_version " + printable_text(rest) + " is not supported (only 1)");
     } else if (key == "name") {
       t.name = rest;
     } else if (key == "scheme" || key == "label" || key == "digits" || key == "residual" || key == "analytic_remainder") {
@@ -110,35 +108,35 @@ scheme_table parse_scheme_table(std::string_view text) {
     } else if (key == "split") {
       if (rest == "ABC") t.splitting = split::abc;
       else if (rest == "RS") t.splitting = split::rs;
-      else fail(number, "split must be ABC or RS, got '" + printable(rest) + "'");
+      else fail(number, "split must be ABC or RS, got '" + printable_text(rest) + "'");
     } else if (key == "word") {
       t.word = rest;
     } else if (key == "permutation") {
       t.permutation = rest;
     } else if (key == "order") {
-      if (rest != "2" && rest != "4") fail(number, "order must be 2 or 4, got '" + printable(rest) + "'");
+      if (rest != "2" && rest != "4") fail(number, "order must be 2 or 4, got '" + printable_text(rest) + "'");
       t.order = rest == "2" ? 2 : 4;
     } else if (key == "symmetric") {
       if (rest != "true" && rest != "false") fail(number, "symmetric must be true or false");
       t.symmetric = rest == "true";
     } else if (key == "inertia") {
-      if (!is_body_text(rest)) fail(number, "inertia must be three positive numbers I1 I2 I3, got '" + printable(rest) + "'");
+      if (!is_body_text(rest)) fail(number, "inertia must be three positive numbers I1 I2 I3, got '" + printable_text(rest) + "'");
       t.inertia = rest;
     } else if (key == "source") {
       t.source = rest;
     } else if (key == "stages") {
       if (rest.empty() || rest.find_first_not_of("0123456789") != std::string::npos || rest.size() > 4)
-        fail(number, "stages must be a count, got '" + printable(rest) + "'");
+        fail(number, "stages must be a count, got '" + printable_text(rest) + "'");
       declared_stages = std::stoi(rest);
     } else if (key == "stage") {
       std::istringstream s(rest);
       std::string letter, name, value;
       s >> letter >> name >> value;
-      if (letter.size() != 1) fail(number, "a stage needs a one-letter part, got '" + printable(letter) + "'");
-      if (!is_decimal(value)) fail(number, "stage value '" + printable(value) + "' is not a finite decimal number");
+      if (letter.size() != 1) fail(number, "a stage needs a one-letter part, got '" + printable_text(letter) + "'");
+      if (!is_decimal(value)) fail(number, "stage value '" + printable_text(value) + "' is not a finite decimal number");
       t.stages.push_back({letter[0], name, value});
     } else {
-      fail(number, "unknown key '" + printable(key) + "'");
+      fail(number, "unknown key '" + printable_text(key) + "'");
     }
   }
   for (const char* required : {"format_version", "split", "word"})
@@ -168,29 +166,29 @@ std::string format_scheme_table(const scheme_table& t) {
 
 void check_scheme_table(const scheme_table& t) {
   const std::string letters = t.splitting == split::abc ? "ABC" : "RS";
-  const std::string name = printable(t.name);
+  const std::string name = printable_text(t.name);
   if (t.stages.empty()) throw std::invalid_argument("scheme table " + name + ": no stages");
   if (t.word.size() != t.stages.size())
     throw std::invalid_argument("scheme table " + name + ": the word has " + std::to_string(t.word.size()) +
                                 " letters but there are " + std::to_string(t.stages.size()) + " stages");
   static const std::vector<std::string> perms = {"ABC", "BCA", "CAB", "ACB", "CBA", "BAC"};
   if (std::find(perms.begin(), perms.end(), t.permutation) == perms.end())
-    throw std::invalid_argument("scheme table " + name + ": unknown permutation '" + printable(t.permutation) + "'");
+    throw std::invalid_argument("scheme table " + name + ": unknown permutation '" + printable_text(t.permutation) + "'");
   std::map<char, long double> sum, size;
   std::map<char, int> count;
   std::vector<long double> value(t.stages.size());
   for (std::size_t i = 0; i < t.stages.size(); ++i) {
     const char p = t.stages[i].part;
     if (letters.find(p) == std::string::npos)
-      throw std::invalid_argument("scheme table " + name + ": part '" + printable(std::string(1, p)) + "' is not in the " +
+      throw std::invalid_argument("scheme table " + name + ": part '" + printable_text(std::string(1, p)) + "' is not in the " +
                                   letters + " splitting");
     if (t.word[i] != p)
       throw std::invalid_argument("scheme table " + name + ": stage " + std::to_string(i + 1) + " is " +
-                                  std::string(1, p) + " but the word says " + printable(std::string(1, t.word[i])));
+                                  std::string(1, p) + " but the word says " + printable_text(std::string(1, t.word[i])));
     value[i] = decimal_value(t.stages[i].value);
     if (std::isnan(value[i]))
       throw std::invalid_argument("scheme table " + name + ": stage " + std::to_string(i + 1) + " value '" +
-                                  printable(t.stages[i].value) + "' is not a finite decimal number");
+                                  printable_text(t.stages[i].value) + "' is not a finite decimal number");
     sum[p] += value[i];
     size[p] += std::fabs(value[i]);
     ++count[p];
