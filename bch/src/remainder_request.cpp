@@ -37,6 +37,10 @@ remainder_result compute_remainder(const remainder_request& request) {
     throw std::invalid_argument("--order must be between 1 and " + std::to_string(max_remainder_order) + ", got " +
                                 std::to_string(request.order));
   result.layout = layout_scheme(word, split, request.permutation);
+  if (const auto most = max_remainder_stages(request.order, result.layout.symmetric); result.layout.stages.size() > most)
+    throw std::invalid_argument("a " + std::string(result.layout.symmetric ? "palindromic" : "non-palindromic") + " word of " +
+                                std::to_string(result.layout.stages.size()) + " stages is too long for order " +
+                                std::to_string(request.order) + ": at most " + std::to_string(most) + " stages");
   auto coefficients = make_coefficients(result.layout);
 
   GiNaC::lst values;

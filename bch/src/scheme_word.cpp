@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "rotlie/lie/exact_number.hpp"
+
 namespace rotlie::bch {
 
 const std::vector<named_scheme>& named_schemes() {
@@ -42,13 +44,22 @@ bool is_permutation_name(std::string_view p) {
 
 scheme_layout layout_scheme(std::string_view word, splitting split, std::string_view permutation) {
   if (word.empty()) throw std::invalid_argument("the scheme word is empty");
+  if (word.size() > max_word_length)
+    throw std::invalid_argument("the scheme word has " + std::to_string(word.size()) + " stages; at most " +
+                                std::to_string(max_word_length) + " are supported");
   const std::string allowed = split == splitting::abc ? "ABC" : "RS";
+  const std::string split_name = split == splitting::abc ? "ABC" : "RS";
   for (const char c : word)
     if (allowed.find(c) == std::string::npos)
-      throw std::invalid_argument(std::string("letter '") + c + "' is not a part of the " +
-                                  (split == splitting::abc ? "ABC" : "RS") + " splitting (allowed: " + allowed + ")");
+      throw std::invalid_argument("letter '" + lie::printable_text(std::string_view(&c, 1)) + "' is not a part of the " + split_name +
+                                  " splitting (allowed: " + allowed + ")");
+  // H is the sum of every part: a part that never acts leaves it out of the flow (H_R1 ≠ H).
+  for (const char c : allowed)
+    if (word.find(c) == std::string_view::npos)
+      throw std::invalid_argument("part " + std::string(1, c) + " never acts in " + lie::printable_text(word) + ": every part of the " +
+                                  split_name + " splitting must appear");
   if (!is_permutation_name(permutation))
-    throw std::invalid_argument("unknown permutation '" + std::string(permutation) +
+    throw std::invalid_argument("unknown permutation '" + lie::printable_text(permutation) +
                                 "' (expected ABC, BCA, CAB, ACB, CBA or BAC)");
 
   scheme_layout layout;
@@ -97,6 +108,29 @@ coefficient_symbols make_coefficients(const scheme_layout& layout) {
     out.value.emplace(name, out.free.at(name));
   }
   solve_first_order_conditions(layout, out.value, [](const GiNaC::ex& x, int n) { return (x / n).expand(); });
+  return out;
+}
+
+std::vector<std::pair<std::string, cln::cl_RA>> parse_coefficient_values(std::string_view text) {
+  std::vector<std::pair<std::string, cln::cl_RA>> out;
+  if (text.empty()) return out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const auto comma = std::min(text.find(',', start), text.size());
+    const std::string item(text.substr(start, comma - start));
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) throw std::invalid_argument("'" + lie::printable_text(item) + "' is not of the form name=value");
+    const std::string name = item.substr(0, eq);
+    const bool well_formed = name.size() >= 2 && name.size() <= 4 && name[0] >= 'a' && name[0] <= 'z' && name[1] != '0' &&
+                             name.find_first_not_of("0123456789", 1) == std::string::npos;
+    if (!well_formed) throw std::invalid_argument("'" + lie::printable_text(name) + "' is not a coefficient name (a1, b2, …)");
+    const auto value = lie::parse_exact_number_checked(item.substr(eq + 1));
+    if (!value.value) throw std::invalid_argument(name + " = '" + lie::printable_text(item.substr(eq + 1)) + "' " + value.problem);
+    for (const auto& [n, v] : out)
+      if (n == name) throw std::invalid_argument(name + " is given twice");
+    out.emplace_back(name, *value.value);
+    start = comma + 1;
+  }
   return out;
 }
 

@@ -14,13 +14,12 @@ moments_of_inertia parse_moments(std::string_view text) {
   for (int i = 0; i < 3; ++i) {
     const auto comma = text.find(',', start);
     if ((i < 2) == (comma == std::string_view::npos))
-      throw std::invalid_argument("inertia must be three values I1,I2,I3 (or water, sphere), got '" + std::string(text) + "'");
+      throw std::invalid_argument("inertia must be three values I1,I2,I3 (or water, sphere), got '" + printable_text(text) + "'");
     const auto piece = text.substr(start, i < 2 ? comma - start : std::string_view::npos);
-    const auto value = parse_exact_number(piece);
-    if (!value)
-      throw std::invalid_argument("I" + std::to_string(i + 1) + " = '" + std::string(piece) +
-                                  "' is not a finite number (use e.g. 0.348, 3.48e-1 or 10220/29376)");
-    m.I[static_cast<std::size_t>(i)] = *value;
+    const auto value = parse_exact_number_checked(piece);
+    if (!value.value)
+      throw std::invalid_argument("I" + std::to_string(i + 1) + " = '" + printable_text(piece) + "' " + value.problem);
+    m.I[static_cast<std::size_t>(i)] = *value.value;
     start = comma + 1;
   }
   validate_moments(m);

@@ -156,7 +156,7 @@ const std::vector<std::string>& reference_scheme_names() {
 scheme_table permuted(scheme_table t, const std::string& permutation) {
   static const std::vector<std::string> perms = {"ABC", "BCA", "CAB", "ACB", "CBA", "BAC"};
   if (std::find(perms.begin(), perms.end(), permutation) == perms.end())
-    throw std::invalid_argument("unknown permutation '" + permutation + "' (ABC, BCA, CAB, ACB, CBA, BAC)");
+    throw std::invalid_argument("unknown permutation '" + printable_text(permutation) + "' (ABC, BCA, CAB, ACB, CBA, BAC)");
   if (t.splitting == split::abc) {
     for (auto& c : t.word) c = permutation[static_cast<std::size_t>(c - 'A')];
     for (auto& s : t.stages) s.part = permutation[static_cast<std::size_t>(s.part - 'A')];

@@ -1,11 +1,17 @@
 #include "rotlie/schemes/scheme_table.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <cfloat>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
+
+#include "rotlie/schemes/same_body.hpp"
 
 namespace rotlie::schemes {
 namespace {
@@ -14,17 +20,57 @@ namespace {
   throw std::invalid_argument("scheme table line " + std::to_string(line) + ": " + why);
 }
 
-bool is_decimal(const std::string& s) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  const long double v = std::strtold(s.c_str(), &end);
-  return end == s.c_str() + s.size() && std::isfinite(v);
+std::string trimmed(const std::string& s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return "";
+  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
 }
+
+// The value of a decimal text, or NaN when it is not [+-]digits[.digits][(e|E)[+-]digits] with a
+// finite long double value (strtold alone would also take hexadecimal, inf and nan).
+long double decimal_value(const std::string& s) {
+  std::size_t i = 0;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+  std::size_t digits = 0;
+  bool point = false;
+  for (; i < s.size(); ++i) {
+    if (std::isdigit(static_cast<unsigned char>(s[i]))) ++digits;
+    else if (s[i] == '.' && !point) point = true;
+    else break;
+  }
+  if (digits == 0) return std::numeric_limits<long double>::quiet_NaN();
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    const std::size_t start = i;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+    if (i == start) return std::numeric_limits<long double>::quiet_NaN();
+  }
+  if (i != s.size()) return std::numeric_limits<long double>::quiet_NaN();
+  const long double v = std::strtold(s.c_str(), nullptr);
+  return std::isfinite(v) ? v : std::numeric_limits<long double>::quiet_NaN();
+}
+
+bool is_decimal(const std::string& s) { return !std::isnan(decimal_value(s)); }
 
 }  // namespace
 
+std::string printable_text(std::string_view text) {
+  constexpr std::size_t max_shown = 80;
+  static const char hex[] = "0123456789ABCDEF";
+  std::string out;
+  for (std::size_t i = 0; i < text.size() && i < max_shown; ++i) {
+    const auto u = static_cast<unsigned char>(text[i]);
+    if (u >= 0x20 && u < 0x7f)
+      out += static_cast<char>(u);
+    else
+      out += std::string("\\x") + hex[u >> 4] + hex[u & 15];
+  }
+  return text.size() > max_shown ? out + "…" : out;
+}
+
 int axis_of_letter(char letter) {
-  if (letter < 'A' || letter > 'C') throw std::invalid_argument(std::string("not an axis letter: ") + letter);
+  if (letter < 'A' || letter > 'C') throw std::invalid_argument("not an axis letter: " + printable_text(std::string_view(&letter, 1)));
   return letter - 'A';
 }
 
@@ -38,23 +84,23 @@ int cost_in_rotations(const scheme_table& t) {
 }
 
 scheme_table parse_scheme_table(std::string_view text) {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte-order mark
   scheme_table t;
   std::istringstream in{std::string(text)};
   std::string line;
   int number = 0, declared_stages = -1;
-  bool have_version = false, have_split = false, have_word = false;
+  std::set<std::string> seen;
   while (std::getline(in, line)) {
     ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // CRLF line endings
+    line = trimmed(line);
     if (line.empty() || line[0] == '#') continue;
-    std::istringstream f(line);
-    std::string key;
-    f >> key;
-    std::string rest;
-    std::getline(f, rest);
-    if (!rest.empty() && rest[0] == ' ') rest.erase(0, rest.find_first_not_of(' '));
+    const auto blank = line.find_first_of(" \t");
+    const std::string key = line.substr(0, blank);
+    const std::string rest = blank == std::string::npos ? "" : trimmed(line.substr(blank));
+    if (key != "stage" && !seen.insert(key).second) fail(number, "'" + printable_text(key) + "' is given twice");
     if (key == "format_version") {
-      if (rest != "1") fail(number, "format_version " + rest + " is not supported (only 1)");
-      have_version = true;
+      if (rest != "1") fail(number, "format_version " + printable_text(rest) + " is not supported (only 1)");
     } else if (key == "name") {
       t.name = rest;
     } else if (key == "scheme" || key == "label" || key == "digits" || key == "residual" || key == "analytic_remainder") {
@@ -62,41 +108,39 @@ scheme_table parse_scheme_table(std::string_view text) {
     } else if (key == "split") {
       if (rest == "ABC") t.splitting = split::abc;
       else if (rest == "RS") t.splitting = split::rs;
-      else fail(number, "split must be ABC or RS, got '" + rest + "'");
-      have_split = true;
+      else fail(number, "split must be ABC or RS, got '" + printable_text(rest) + "'");
     } else if (key == "word") {
       t.word = rest;
-      have_word = true;
     } else if (key == "permutation") {
       t.permutation = rest;
     } else if (key == "order") {
-      if (rest != "2" && rest != "4") fail(number, "order must be 2 or 4, got '" + rest + "'");
-      t.order = std::stoi(rest);
+      if (rest != "2" && rest != "4") fail(number, "order must be 2 or 4, got '" + printable_text(rest) + "'");
+      t.order = rest == "2" ? 2 : 4;
     } else if (key == "symmetric") {
       if (rest != "true" && rest != "false") fail(number, "symmetric must be true or false");
       t.symmetric = rest == "true";
     } else if (key == "inertia") {
+      if (!is_body_text(rest)) fail(number, "inertia must be three positive numbers I1 I2 I3, got '" + printable_text(rest) + "'");
       t.inertia = rest;
     } else if (key == "source") {
       t.source = rest;
     } else if (key == "stages") {
       if (rest.empty() || rest.find_first_not_of("0123456789") != std::string::npos || rest.size() > 4)
-        fail(number, "stages must be a count, got '" + rest + "'");
+        fail(number, "stages must be a count, got '" + printable_text(rest) + "'");
       declared_stages = std::stoi(rest);
     } else if (key == "stage") {
       std::istringstream s(rest);
       std::string letter, name, value;
       s >> letter >> name >> value;
-      if (letter.size() != 1) fail(number, "a stage needs a one-letter part, got '" + letter + "'");
-      if (!is_decimal(value)) fail(number, "stage value '" + value + "' is not a finite decimal number");
+      if (letter.size() != 1) fail(number, "a stage needs a one-letter part, got '" + printable_text(letter) + "'");
+      if (!is_decimal(value)) fail(number, "stage value '" + printable_text(value) + "' is not a finite decimal number");
       t.stages.push_back({letter[0], name, value});
     } else {
-      fail(number, "unknown key '" + key + "'");
+      fail(number, "unknown key '" + printable_text(key) + "'");
     }
   }
-  if (!have_version) throw std::invalid_argument("scheme table: no format_version line");
-  if (!have_split) throw std::invalid_argument("scheme table: no split line");
-  if (!have_word) throw std::invalid_argument("scheme table: no word line");
+  for (const char* required : {"format_version", "split", "word"})
+    if (!seen.count(required)) throw std::invalid_argument(std::string("scheme table: no ") + required + " line");
   if (declared_stages >= 0 && declared_stages != static_cast<int>(t.stages.size()))
     throw std::invalid_argument("scheme table: " + std::to_string(declared_stages) + " stages declared, " +
                                 std::to_string(t.stages.size()) + " given");
@@ -104,37 +148,65 @@ scheme_table parse_scheme_table(std::string_view text) {
   return t;
 }
 
+std::string format_scheme_table(const scheme_table& t) {
+  std::ostringstream out;
+  out << "format_version 1\n";
+  if (!t.name.empty()) out << "name " << t.name << "\n";
+  out << "split " << (t.splitting == split::abc ? "ABC" : "RS") << "\n"
+      << "word " << t.word << "\n"
+      << "permutation " << t.permutation << "\n"
+      << "order " << t.order << "\n"
+      << "symmetric " << (t.symmetric ? "true" : "false") << "\n";
+  if (!t.inertia.empty()) out << "inertia " << t.inertia << "\n";
+  if (!t.source.empty()) out << "source " << t.source << "\n";
+  out << "stages " << t.stages.size() << "\n";
+  for (const auto& s : t.stages) out << "stage " << s.part << " " << (s.name.empty() ? "-" : s.name) << " " << s.value << "\n";
+  return out.str();
+}
+
 void check_scheme_table(const scheme_table& t) {
   const std::string letters = t.splitting == split::abc ? "ABC" : "RS";
-  if (t.stages.empty()) throw std::invalid_argument("scheme table " + t.name + ": no stages");
+  const std::string name = printable_text(t.name);
+  if (t.stages.empty()) throw std::invalid_argument("scheme table " + name + ": no stages");
   if (t.word.size() != t.stages.size())
-    throw std::invalid_argument("scheme table " + t.name + ": the word has " + std::to_string(t.word.size()) +
+    throw std::invalid_argument("scheme table " + name + ": the word has " + std::to_string(t.word.size()) +
                                 " letters but there are " + std::to_string(t.stages.size()) + " stages");
   static const std::vector<std::string> perms = {"ABC", "BCA", "CAB", "ACB", "CBA", "BAC"};
   if (std::find(perms.begin(), perms.end(), t.permutation) == perms.end())
-    throw std::invalid_argument("scheme table " + t.name + ": unknown permutation '" + t.permutation + "'");
-  std::map<char, long double> sum;
+    throw std::invalid_argument("scheme table " + name + ": unknown permutation '" + printable_text(t.permutation) + "'");
+  std::map<char, long double> sum, size;
+  std::map<char, int> count;
+  std::vector<long double> value(t.stages.size());
   for (std::size_t i = 0; i < t.stages.size(); ++i) {
     const char p = t.stages[i].part;
     if (letters.find(p) == std::string::npos)
-      throw std::invalid_argument("scheme table " + t.name + ": part '" + std::string(1, p) + "' is not in the " +
+      throw std::invalid_argument("scheme table " + name + ": part '" + printable_text(std::string(1, p)) + "' is not in the " +
                                   letters + " splitting");
     if (t.word[i] != p)
-      throw std::invalid_argument("scheme table " + t.name + ": stage " + std::to_string(i + 1) + " is " +
-                                  std::string(1, p) + " but the word says " + std::string(1, t.word[i]));
-    sum[p] += std::strtold(t.stages[i].value.c_str(), nullptr);
+      throw std::invalid_argument("scheme table " + name + ": stage " + std::to_string(i + 1) + " is " +
+                                  std::string(1, p) + " but the word says " + printable_text(std::string(1, t.word[i])));
+    value[i] = decimal_value(t.stages[i].value);
+    if (std::isnan(value[i]))
+      throw std::invalid_argument("scheme table " + name + ": stage " + std::to_string(i + 1) + " value '" +
+                                  printable_text(t.stages[i].value) + "' is not a finite decimal number");
+    sum[p] += value[i];
+    size[p] += std::fabs(value[i]);
+    ++count[p];
   }
+  // Σ = 1 to what the integrator's double arithmetic resolves: the sum of n rounded terms is off
+  // by at most n·ε·Σ|c| (ε = DBL_EPSILON), so the tolerance grows with the stages and their sizes.
   for (const char p : letters) {
-    if (!sum.count(p)) throw std::invalid_argument("scheme table " + t.name + ": part " + std::string(1, p) + " never acts");
-    if (std::fabs(sum[p] - 1.0L) > 1e-15L)
-      throw std::invalid_argument("scheme table " + t.name + ": the coefficients of part " + std::string(1, p) +
+    if (!count.count(p)) throw std::invalid_argument("scheme table " + name + ": part " + std::string(1, p) + " never acts");
+    const long double tolerance = count[p] * static_cast<long double>(DBL_EPSILON) * size[p];
+    if (!(std::fabs(sum[p] - 1.0L) <= tolerance))
+      throw std::invalid_argument("scheme table " + name + ": the coefficients of part " + std::string(1, p) +
                                   " sum to " + std::to_string(static_cast<double>(sum[p])) + ", not 1 (first-order condition)");
   }
   if (t.symmetric)
     for (std::size_t i = 0, j = t.stages.size() - 1; i < j; ++i, --j)
       if (t.stages[i].part != t.stages[j].part ||
-          std::fabs(std::strtold(t.stages[i].value.c_str(), nullptr) - std::strtold(t.stages[j].value.c_str(), nullptr)) > 1e-15L)
-        throw std::invalid_argument("scheme table " + t.name + ": declared symmetric but stages " + std::to_string(i + 1) +
+          !(std::fabs(value[i] - value[j]) <= static_cast<long double>(DBL_EPSILON) * (std::fabs(value[i]) + std::fabs(value[j]))))
+        throw std::invalid_argument("scheme table " + name + ": declared symmetric but stages " + std::to_string(i + 1) +
                                     " and " + std::to_string(j + 1) + " differ");
 }
 

@@ -3,12 +3,14 @@
 // letters get the names a, b, c in order of first appearance in the unpermuted word; each stage
 // of the first half (middle included) of a palindrome takes the next index of its name and the
 // second half mirrors it; the first-order conditions eliminate the highest index of each name.
+#include <cln/rational.h>
 #include <ginac/ginac.h>
 
 #include <map>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace rotlie::bch {
@@ -45,9 +47,20 @@ struct scheme_layout {
   std::vector<std::string> eliminated;         ///< fixed by the first-order conditions
 };
 
+/// Longest word accepted: the symbolic remainder grows steeply with the length (a 25-stage palindrome
+/// takes 4 s at order 5, 33 stages 36 s; max_remainder_stages in remainder_request.hpp limits each
+/// order further). The paper's longest word has 11 stages, Suzuki's SS5 composition of ABCBA 21.
+inline constexpr std::size_t max_word_length = 25;
+
 /// Validates and names a word; throws std::invalid_argument with a one-line reason
-/// (empty word, a letter outside the splitting, unknown permutation).
+/// (empty word, longer than max_word_length, a letter outside the splitting, a part of the
+/// splitting that never acts, unknown permutation).
 scheme_layout layout_scheme(std::string_view word, splitting split, std::string_view permutation = "ABC");
+
+/// "a1=1/6,b1=0.25" → (name, exact value) pairs: names are a letter and an index (a1, b2, …),
+/// values exact numbers (lie::parse_exact_number), each name at most once; empty text → none.
+/// Throws std::invalid_argument with a one-line reason.
+std::vector<std::pair<std::string, cln::cl_RA>> parse_coefficient_values(std::string_view text);
 
 /// Symbols for the free coefficients and expressions for the eliminated ones (first-order
 /// conditions: Σ of each name's coefficients over the stages = 1).

@@ -30,7 +30,10 @@ polynomial<R> poisson_bracket(const polynomial<R>& f, const polynomial<R>& g) {
   polynomial<R> out;
   for (const auto& [ma, ca] : f.terms())
     for (const auto& [mb, cb] : g.terms())
-      bracket_of_monomials(ma, mb, [&](const monomial& m, long c) { out.add_term(m, traits::from_int(c) * ca * cb); });
+      // explicit captures: clang before 16 cannot capture structured bindings implicitly
+      bracket_of_monomials(ma, mb, [&, &ca = ca, &cb = cb](const monomial& m, long c) {
+        out.add_term(m, traits::from_int(c) * ca * cb);
+      });
   return out;
 }
 

@@ -15,6 +15,7 @@ struct stage {
   char part = 'A';        ///< A, B, C (ABC splitting, letters already permuted) or R, S
   std::string name;       ///< a1, b1, … (informative)
   std::string value;      ///< decimal text, ≥ 40 digits for solver tables
+  friend bool operator==(const stage&, const stage&) = default;
 };
 
 struct scheme_table {
@@ -27,15 +28,26 @@ struct scheme_table {
   std::string inertia;               ///< the body a dedicated scheme was solved for ("" for reference schemes)
   std::string source;
   std::vector<stage> stages;
+  friend bool operator==(const scheme_table&, const scheme_table&) = default;
 };
 
-/// Parses format version 1; throws std::invalid_argument naming the line and the problem.
+/// Parses format version 1 (LF or CRLF line endings, an optional UTF-8 byte-order mark), then
+/// checks it (check_scheme_table); throws std::invalid_argument naming the line and the problem.
 scheme_table parse_scheme_table(std::string_view text);
 
-/// The loader's contract: a known split, letters of that split, Σ of each part's coefficients = 1
-/// (to 1e-15, in long double), and the palindrome when the table says symmetric. Throws
-/// std::invalid_argument with a one-line reason.
+/// The table as format version 1 text: parse_scheme_table gives it back (provenance lines that the
+/// parser skips, such as digits or residual, are not written).
+std::string format_scheme_table(const scheme_table& t);
+
+/// The loader's contract: a known split, letters of that split, every part acting, stage values
+/// finite decimals, Σ of each part's n coefficients c = 1 to n·ε·Σ|c| (ε = DBL_EPSILON, in long
+/// double: what a double integrator resolves), and the palindrome to ε·(|c_i| + |c_j|) when the
+/// table says symmetric. Throws std::invalid_argument with a one-line reason.
 void check_scheme_table(const scheme_table& t);
+
+/// User text fit for a one-line message: bytes outside printable ASCII as \xHH, at most 80
+/// characters (then "…").
+std::string printable_text(std::string_view text);
 
 /// Body axis (0, 1, 2) of a permutation letter: the permutation XYZ sends A → X, B → Y, C → Z.
 int axis_of_letter(char letter);
