@@ -1,9 +1,11 @@
 #include "scheme_lookup.hpp"
 
 #include <cln/integer.h>
+#include <cln/rational_io.h>
 #include <cln/real.h>
 
 #include <cerrno>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -16,6 +18,7 @@
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/reports/protocol_curves.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
+#include "rotlie/schemes/same_body.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 
 namespace rotlie::app {
@@ -43,44 +46,26 @@ std::string shown(double x) {
   return s.str();
 }
 
-// Three moments from a table's `inertia` line ("2555/7344 19187/29376 1"; commas also accepted).
-std::optional<lie::moments_of_inertia> moments_of_line(std::string text) {
-  for (char& c : text)
-    if (c == ',') c = ' ';
-  std::istringstream in(text);
-  std::string part;
-  lie::moments_of_inertia m;
-  std::size_t i = 0;
-  while (in >> part) {
-    const auto x = lie::parse_exact_number(part);
-    if (i == 3 || !x || !cln::plusp(*x)) return std::nullopt;
-    m.I[i++] = *x;
-  }
-  if (i != 3) return std::nullopt;
-  return m;
-}
-
-// The dedicated schemes depend on the moments only through their ratios: a body scaled by a
-// constant is the same body.
-bool same_body(const lie::moments_of_inertia& a, const lie::moments_of_inertia& b) {
-  return a.I[0] * b.I[2] == b.I[0] * a.I[2] && a.I[1] * b.I[2] == b.I[1] * a.I[2];
-}
-
 std::string body_text(const lie::moments_of_inertia& m) {
   return "(" + shown(m.I[0]) + ", " + shown(m.I[1]) + ", " + shown(m.I[2]) + ")";
 }
 
 void check_body_of(const schemes::scheme_table& t, const std::string& file, const lie::moments_of_inertia& body,
                    bool force) {
-  if (t.inertia.empty()) return;  // a reference scheme: good for every body
-  const auto solved_for = moments_of_line(t.inertia);
+  std::array<std::string, 3> exact;  // p/q text, compared as rationals by the table's own rule
+  for (std::size_t i = 0; i < 3; ++i) {
+    std::ostringstream text;
+    text << body.I[i];
+    exact[i] = text.str();
+  }
   std::string why;
-  if (!solved_for)
-    why = file + " was solved for a body given as '" + t.inertia + "', which is not three positive exact numbers";
-  else if (!same_body(*solved_for, body))
-    why = file + " was solved for the body " + body_text(*solved_for) + ", not for --inertia " + body_text(body) +
-          ": its order holds only for the body it was solved for";
-  if (why.empty()) return;
+  try {
+    if (schemes::same_body(t, {exact[0], exact[1], exact[2]}) != schemes::body_match::different) return;
+    why = file + " was solved for the body (" + t.inertia + "), not for --inertia " + body_text(body) +
+          ": its order holds only for the body it was solved for (bodies are compared up to a common factor)";
+  } catch (const std::invalid_argument& e) {
+    why = file + ": its inertia line '" + t.inertia + "' is not three positive exact numbers";
+  }
   if (!force) throw usage_error(why + " (pass --force to use it anyway)");
   std::cerr << "rotlie: warning: " << one_line(why) << " (used anyway: --force)\n";
 }
