@@ -2,6 +2,7 @@
 # Installs the Debian 12 packages rotlie's build uses (idempotent: installed packages are skipped).
 #   scripts/install-deps.sh                 everything (symbolic side, CLI, reports, tests, benchmarks)
 #   scripts/install-deps.sh --numeric-only  what the numeric-only preset needs: no GiNaC, no CLN
+#   scripts/install-deps.sh --fuzz          everything, plus clang and libFuzzer for the fuzz preset
 set -euo pipefail
 
 numeric=(
@@ -20,7 +21,8 @@ symbolic=(
 case "${1:-}" in
   "") packages=("${numeric[@]}" "${symbolic[@]}") ;;
   --numeric-only) packages=("${numeric[@]}") ;;
-  *) echo "install-deps: error: unknown option '$1' (only --numeric-only)" >&2; exit 2 ;;
+  --fuzz) packages=("${numeric[@]}" "${symbolic[@]}" clang libclang-rt-14-dev) ;;  # fuzz/: libFuzzer
+  *) echo "install-deps: error: unknown option '$1' (--numeric-only or --fuzz)" >&2; exit 2 ;;
 esac
 
 missing=()
