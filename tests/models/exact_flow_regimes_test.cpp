@@ -9,9 +9,12 @@
 #define BOOST_TEST_MODULE exact_flow_regimes
 #include <boost/test/unit_test.hpp>
 
+#include <boost/multiprecision/cpp_int.hpp>
+
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 #include <stdexcept>
@@ -176,6 +179,36 @@ BOOST_AUTO_TEST_CASE(near_the_separatrix_away_from_the_middle_axis) {
     BOOST_TEST(e < target, label << ": " << e);
     BOOST_TEST(e <= r.error_estimate + reference_floor, label << ": error " << e << " above its estimate " << r.error_estimate);
   }
+}
+
+BOOST_AUTO_TEST_CASE(middle_energy_difference_is_correct_to_its_last_places) {
+  // D_y = G1²(I1 − I2)/I1 + G3²(I3 − I2)/I3 against exact rational arithmetic, on both of its paths
+  // (double-double, and the exact sum when the terms cancel to below 64ε of themselves)
+  using rational = boost::multiprecision::cpp_rational;
+  auto exact = [](const auto& I, const auto& G) {
+    auto r = [](const auto& v) { return rational(v); };
+    return r(G[0]) * r(G[0]) * (r(I[0]) - r(I[1])) / r(I[0]) + r(G[2]) * r(G[2]) * (r(I[2]) - r(I[1])) / r(I[2]);
+  };
+  auto check_relative = [&](const auto& I, const auto& G, double eps, const std::string& label) {
+    using S = std::decay_t<decltype(I[0])>;
+    const S d = models::detail::middle_energy_difference<S>(I, G, 0, 1, 2);
+    const rational e = exact(I, G);
+    BOOST_TEST_REQUIRE(e != 0, label);
+    const rational rel = abs((rational(d) - e) / e);
+    BOOST_TEST(static_cast<double>(rel) <= 4 * eps, label << ": relative error " << static_cast<double>(rel));
+  };
+  const vec3<double> I{1, 2, 3}, water_I = water;
+  for (int k = 0; k <= 16; ++k) {
+    const double delta = std::pow(10.0, -k);
+    check_relative(I, vec3<double>{1, 1, std::sqrt(3.0) * (1 + delta)}, 0x1p-53, "double, delta " + sci(delta));
+    check_relative(water_I, vec3<double>{0.3 + delta, 0.5, 1.59048173339384 * 0.3}, 0x1p-53, "water, delta " + sci(delta));
+  }
+  check_relative(I, vec3<double>{0.5180697268109302, 0, 0.8973230886998593}, 0x1p-53, "double, delta 2e-22");
+  check_relative(I, vec3<double>{0.6627976094924595, 0, 1.1479991347761358}, 0x1p-53, "double, delta 4e-32");
+  // float128 inputs that are not doubles
+  const vec3<quad> Iq{1, 2, 3};
+  for (const int k : {5, 20, 30, 33})
+    check_relative(Iq, vec3<quad>{1, 1, sqrt(quad(3)) * (1 + pow(quad(10), -k))}, 0x1p-113, "float128, delta 1e-" + std::to_string(k));
 }
 
 BOOST_AUTO_TEST_CASE(flat_body_one_ulp_outside_the_triangle_inequality) {

@@ -5,10 +5,13 @@
 // rounding: with I_x, I_z the other two moments,
 //   D_y I_x I_z = G_x² I_z (I_x − I_y) + G_z² I_x (I_z − I_y)
 // is split by error-free transformations (TwoSum, TwoProduct by fma) into at most 32 floating-point
-// numbers whose exact sum it is, and those are summed exactly (Shewchuk's non-overlapping partials).
+// numbers whose exact sum it is, and those are summed exactly (Shewchuk's non-overlapping partials)
+// when double-S arithmetic (cheap, branch-free) cannot vouch for the last place.
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
+#include <utility>
 
 namespace rotlie::models::detail {
 
@@ -72,10 +75,29 @@ void add_exact_product(exact_sum<S>& sum, const S& a, const S& b, const S& c, co
   }
 }
 
+// a·b·c·(d − e) in double-S: hi + lo with |error| ≤ ~6ε² |a b c (d − e)|, without branches
+template <class S>
+std::pair<S, S> product_pair(const S& a, const S& b, const S& c, const S& d, const S& e) {
+  using std::fma;
+  const S p = a * b, q = fma(a, b, -p);
+  const S dh = d - e, dz = dh - d, dl = (d - (dh - dz)) + (-e - dz);
+  const S h = p * c, l = fma(p, c, -h) + q * c;
+  const S H = h * dh;
+  return {H, fma(h, dh, -H) + (h * dl + l * dh)};
+}
+
 /// D_y = L² − 2E I_y for moments I (any order) and the middle index y, correct to a few units of
 /// the last place of S for any finite inputs whose products neither overflow nor underflow.
+/// Double-S arithmetic first (error ~ε² of the terms: enough unless they cancel to 64ε of
+/// themselves), the exact sum only then.
 template <class S, class V>
 S middle_energy_difference(const V& I, const V& G, std::size_t x, std::size_t y, std::size_t z) {
+  using std::abs;
+  const auto [ah, al] = product_pair<S>(G[x], G[x], I[z], I[x], I[y]);
+  const auto [bh, bl] = product_pair<S>(G[z], G[z], I[x], I[z], I[y]);
+  const S sh = ah + bh, sz = sh - ah, sl = (ah - (sh - sz)) + (bh - sz);  // TwoSum
+  const S E = sh + (sl + al + bl);
+  if (abs(E) >= 64 * std::numeric_limits<S>::epsilon() * (abs(ah) + abs(bh))) return E / (I[x] * I[z]);
   exact_sum<S> sum;
   add_exact_product(sum, G[x], G[x], I[z], I[x], I[y]);
   add_exact_product(sum, G[z], G[z], I[x], I[z], I[y]);
