@@ -1,15 +1,22 @@
 // The exact flow in double on a grid of hard regimes, against an independent float128 solution of
 // Euler's equations (RK4 + Richardson, model_support.hpp): near-spherical bodies (prolate, oblate,
 // triaxial; anisotropy 1e-3 … 1e-12), the unstable middle axis (offsets 1e-2 … 1e-15 and exactly on
-// the separatrix, every sign of G1, G3), thin and flat bodies, |G| from 1e-150 to 1e150 (through the
+// the separatrix, every sign of G1, G3), near the separatrix away from the middle axis (δ = 1e-3 …
+// 1e-15 and 2e-22, against an energy-projected reference), thin and flat bodies, |G| from 1e-150 to 1e150 (through the
 // scaling law G → sG, t → t/s, which the reference does not use), long times up to the stated
 // limit and the refusal beyond it, the flow property, and the error estimate (never below the
 // measured error). Target: max abs entry of Q and of G/|G| within 1e-12. Errors are printed.
 #define BOOST_TEST_MODULE exact_flow_regimes
 #include <boost/test/unit_test.hpp>
 
+#include <boost/multiprecision/cpp_int.hpp>
+
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
 #include <stdexcept>
 
 #include "model_support.hpp"
@@ -67,6 +74,43 @@ double check(const std::string& label, const vec3<double>& I, const vec3<double>
 
 const vec3<double> water{10220.0 / 29376, 19187.0 / 29376, 1};
 
+// RK4 + Richardson as above, with G projected after every step back onto the two invariants |G|²
+// and 2E = Σ G_i²/I_i, both taken in float128 from the double inputs (G_i² exact there). Near the
+// separatrix the phase of the motion depends on D_y = |G|² − 2E I_y relative to its own size δ|G|²;
+// plain RK4 drifts in E by far more than δ = 1e-15, the projected one by ~1e-32 |G|².
+models::body_state<quad> projected_rk4(const vec3<quad>& I, models::body_state<quad> s, const quad& t, long steps) {
+  auto invariants = [&I](const vec3<quad>& g) {
+    return std::pair{g[0] * g[0] + g[1] * g[1] + g[2] * g[2], g[0] * g[0] / I[0] + g[1] * g[1] / I[1] + g[2] * g[2] / I[2]};
+  };
+  const auto [c1, c2] = invariants(s.G);
+  const quad h = t / steps;
+  for (long n = 0; n < steps; ++n) {
+    s = models::integrate_rk4(I, s, h, 1);
+    for (int it = 0; it < 2; ++it) {  // Newton on G + a G + b G/I: the residual is O(h⁵), then O(h¹⁰)
+      const auto [r1, r2] = invariants(s.G);
+      quad j11 = 0, j12 = 0, j22 = 0;  // Jacobian of (|G|², 2E) in (a, b), halved
+      for (std::size_t i = 0; i < 3; ++i) {
+        const quad g2 = s.G[i] * s.G[i];
+        j11 += g2, j12 += g2 / I[i], j22 += g2 / (I[i] * I[i]);
+      }
+      const quad f1 = (c1 - r1) / 2, f2 = (c2 - r2) / 2, det = j11 * j22 - j12 * j12;
+      const quad a = (f1 * j22 - f2 * j12) / det, b = (j11 * f2 - j12 * f1) / det;
+      for (std::size_t i = 0; i < 3; ++i) s.G[i] += a * s.G[i] + b * s.G[i] / I[i];
+    }
+  }
+  return s;
+}
+
+models::body_state<quad> projected_reference(const vec3<double>& I, const vec3<double>& G, double t) {
+  const long steps = static_cast<long>(400 * norm(G) / std::min({I[0], I[1], I[2]}) * t) + 10;
+  const auto s0 = test::initial_state<quad>(to<quad>(G));
+  const auto coarse = projected_rk4(to<quad>(I), s0, quad(t), steps), fine = projected_rk4(to<quad>(I), s0, quad(t), 2 * steps);
+  models::body_state<quad> r;
+  for (std::size_t i = 0; i < 9; ++i) r.Q.a[i] = (16 * fine.Q.a[i] - coarse.Q.a[i]) / 15;
+  for (std::size_t i = 0; i < 3; ++i) r.G[i] = (16 * fine.G[i] - coarse.G[i]) / 15;
+  return r;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(near_spherical_bodies) {
@@ -112,6 +156,68 @@ BOOST_AUTO_TEST_CASE(thin_and_flat_bodies) {
   check("thin rod 1e-8", {1e-8, 1, 1}, {0.3, 1, 0.7}, 1e-6);
   check("thin rod 1e-8, I3 + 1e-8", {1e-8, 1, 1 + 1e-8}, {0.3, 1, 0.7}, 1e-6);
   check("thin rod 1e-8, I2 − 1e-8", {1e-8, 1 - 1e-8, 1}, {0.3, 1, 0.7}, 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE(near_the_separatrix_away_from_the_middle_axis) {
+  // I = (1, 2, 3), G = (1, 1, √3 (1 + δ)) as doubles: D_y = G3²/3 − 1 ≈ 2δ is what is left of terms
+  // of size 1 (summed in double it would carry an error of ~1e-16, i.e. relative 1e-16/δ, and the
+  // phase with it). Also a state at δ ≈ 2e-22 whose doubles are a convergent of √3 (G2 = 0).
+  const vec3<double> I{1, 2, 3};
+  std::vector<std::pair<std::string, vec3<double>>> cases;
+  for (int k = 3; k <= 15; ++k) {
+    const double delta = std::pow(10.0, -k);
+    cases.push_back({"delta = " + sci(delta), {1, 1, std::sqrt(3.0) * (1 + delta)}});
+  }
+  cases.push_back({"delta = 2e-22", {0.5180697268109302, 0, 0.8973230886998593}});
+  for (const auto& [label, G] : cases) {
+    const double t = 40;
+    const models::exact_free_body<double> flow(I, test::initial_state<double>(G));
+    const auto r = flow.evaluate(t);
+    const double e = entry_error(r.state, projected_reference(I, G, t), norm(G));
+    BOOST_TEST_MESSAGE(label << ": error " << e << ", estimate " << r.error_estimate << ", m_c " << flow.complementary_parameter());
+    BOOST_TEST(flow.complementary_parameter() > 0.0, label);
+    BOOST_TEST(e < target, label << ": " << e);
+    BOOST_TEST(e <= r.error_estimate + reference_floor, label << ": error " << e << " above its estimate " << r.error_estimate);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(middle_energy_difference_is_correct_to_its_last_places) {
+  // D_y = G1²(I1 − I2)/I1 + G3²(I3 − I2)/I3 against exact rational arithmetic, on both of its paths
+  // (double-double, and the exact sum when the terms cancel to below 64ε of themselves)
+  using rational = boost::multiprecision::cpp_rational;
+  auto exact = [](const auto& I, const auto& G) {
+    auto r = [](const auto& v) { return rational(v); };
+    return r(G[0]) * r(G[0]) * (r(I[0]) - r(I[1])) / r(I[0]) + r(G[2]) * r(G[2]) * (r(I[2]) - r(I[1])) / r(I[2]);
+  };
+  auto check_relative = [&](const auto& I, const auto& G, double eps, const std::string& label) {
+    using S = std::decay_t<decltype(I[0])>;
+    const S d = models::detail::middle_energy_difference<S>(I, G, 0, 1, 2);
+    const rational e = exact(I, G);
+    BOOST_TEST_REQUIRE(e != 0, label);
+    const rational rel = abs((rational(d) - e) / e);
+    BOOST_TEST(static_cast<double>(rel) <= 4 * eps, label << ": relative error " << static_cast<double>(rel));
+  };
+  const vec3<double> I{1, 2, 3}, water_I = water;
+  for (int k = 0; k <= 16; ++k) {
+    const double delta = std::pow(10.0, -k);
+    check_relative(I, vec3<double>{1, 1, std::sqrt(3.0) * (1 + delta)}, 0x1p-53, "double, delta " + sci(delta));
+    check_relative(water_I, vec3<double>{0.3 + delta, 0.5, 1.59048173339384 * 0.3}, 0x1p-53, "water, delta " + sci(delta));
+  }
+  check_relative(I, vec3<double>{0.5180697268109302, 0, 0.8973230886998593}, 0x1p-53, "double, delta 2e-22");
+  check_relative(I, vec3<double>{0.6627976094924595, 0, 1.1479991347761358}, 0x1p-53, "double, delta 4e-32");
+  // float128 inputs that are not doubles
+  const vec3<quad> Iq{1, 2, 3};
+  for (const int k : {5, 20, 30, 33})
+    check_relative(Iq, vec3<quad>{1, 1, sqrt(quad(3)) * (1 + pow(quad(10), -k))}, 0x1p-113, "float128, delta 1e-" + std::to_string(k));
+}
+
+BOOST_AUTO_TEST_CASE(flat_body_one_ulp_outside_the_triangle_inequality) {
+  // 0.3 + 0.6 < 0.9 in double by one ulp: meant as the flat body I3 = I1 + I2, accepted as such
+  const vec3<double> I{0.3, 0.6, 0.9};
+  BOOST_TEST(I[0] + I[1] < I[2]);
+  check("flat by rounding 0.3, 0.6, 0.9", I, {0.3, 1, 0.7}, 3);
+  BOOST_CHECK_THROW(models::exact_free_body<double>({0.3, 0.6, 0.9 * (1 + 1e-14)}, test::initial_state<double>({1, 1, 1})),
+                    std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_CASE(float128_flow_agrees_with_the_independent_reference_where_it_is_used_below) {

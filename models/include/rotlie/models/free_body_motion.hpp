@@ -3,7 +3,8 @@
 // Schofield's structure): the body momentum by Jacobi elliptic functions about the working z axis,
 // the attitude by the rotation angle ψ about the angular momentum. Written so that nothing
 // degenerates where the elliptic parametrisation does:
-//  - every Δ is a sum of same-sign terms with moment differences taken directly (Leroy's form), and
+//  - every Δ is a sum of same-sign terms with moment differences taken directly (Leroy's form), but
+//    D_y, which cancels near the separatrix and is summed exactly instead, and
 //    m_c = (I_z − I_x) D_y / ((I_z − I_y) D_x) is never formed as 1 − m;
 //  - the initial phase near u = ±K (the homoclinic point, where F has its logarithmic singularity)
 //    is found from the complementary argument sn(K − v) = cd v, cn(K − v) = k' sd v;
@@ -20,6 +21,7 @@
 #include <limits>
 
 #include "rotlie/models/complementary_elliptic.hpp"
+#include "rotlie/models/exact_energy_difference.hpp"
 #include "rotlie/models/rigid_body.hpp"
 
 namespace rotlie::models::detail {
@@ -38,12 +40,10 @@ class free_body_motion {
       return;
     }
     // Working frame: the momentum circulates about z when D_y = Σ G_i² (I_i − I_y)/I_i ≥ 0; else U*.
-    {
-      const S Iy = I[idx(order[1])];
-      S Dy = 0;
-      for (std::size_t i = 0; i < 3; ++i) Dy += G[i] * G[i] * ((I[i] - Iy) / I[i]);
-      if (Dy < 0) std::swap(order[0], order[2]);
-    }
+    // D_y is exact to its last place (it cancels near the separatrix): the branch and m_c stay right
+    // down to any distance from the separatrix the inputs can express.
+    const S Dy = middle_energy_difference<S>(I, G, idx(order[0]), idx(order[1]), idx(order[2]));
+    if (Dy < 0) std::swap(order[0], order[2]);
     for (int r = 0; r < 3; ++r) W_(r, order[idx(r)]) = S(1);
     if (det(W_) < 0)
       for (int c = 0; c < 3; ++c) W_(1, c) = -W_(1, c);
@@ -65,10 +65,9 @@ class free_body_motion {
       return;
     }
     const S dzx = Iz - Ix, dzy = Iz - Iy, dyx = Iy - Ix;
-    S Dx = 0, Dy = 0, Dz = 0;  // L² − 2E I_x, L² − 2E I_y, 2E I_z − L², without cancellation but in D_y
+    S Dx = 0, Dz = 0;  // L² − 2E I_x, 2E I_z − L²: sums of same-sign terms, no cancellation
     for (std::size_t i = 0; i < 3; ++i) {
       Dx += L[i] * L[i] * ((Iw_[i] - Ix) / Iw_[i]);
-      Dy += L[i] * L[i] * ((Iw_[i] - Iy) / Iw_[i]);
       Dz += L[i] * L[i] * ((Iz - Iw_[i]) / Iw_[i]);
     }
     mc_ = std::max(S(0), dzx * Dy / (dzy * Dx));
