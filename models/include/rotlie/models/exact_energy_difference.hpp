@@ -90,18 +90,23 @@ std::pair<S, S> product_pair(const S& a, const S& b, const S& c, const S& d, con
 /// the last place of S for any finite inputs whose products neither overflow nor underflow.
 /// Double-S arithmetic first (error ~ε² of the terms: enough unless they cancel to 64ε of
 /// themselves), the exact sum only then.
+/// `inexact` is set when the terms' sum is so small (< 64 × least normal) that the parts of their
+/// products lost to underflow (≤ the least subnormal each) may reach its last place.
 template <class S, class V>
-S middle_energy_difference(const V& I, const V& G, std::size_t x, std::size_t y, std::size_t z) {
+S middle_energy_difference(const V& I, const V& G, std::size_t x, std::size_t y, std::size_t z, bool& inexact) {
   using std::abs;
   const auto [ah, al] = product_pair<S>(G[x], G[x], I[z], I[x], I[y]);
   const auto [bh, bl] = product_pair<S>(G[z], G[z], I[x], I[z], I[y]);
   const S sh = ah + bh, sz = sh - ah, sl = (ah - (sh - sz)) + (bh - sz);  // TwoSum
-  const S E = sh + (sl + al + bl);
-  if (abs(E) >= 64 * std::numeric_limits<S>::epsilon() * (abs(ah) + abs(bh))) return E / (I[x] * I[z]);
-  exact_sum<S> sum;
-  add_exact_product(sum, G[x], G[x], I[z], I[x], I[y]);
-  add_exact_product(sum, G[z], G[z], I[x], I[z], I[y]);
-  return sum.value() / (I[x] * I[z]);
+  S E = sh + (sl + al + bl);
+  if (!(abs(E) >= 64 * std::numeric_limits<S>::epsilon() * (abs(ah) + abs(bh)))) {
+    exact_sum<S> sum;
+    add_exact_product(sum, G[x], G[x], I[z], I[x], I[y]);
+    add_exact_product(sum, G[z], G[z], I[x], I[z], I[y]);
+    E = sum.value();
+  }
+  inexact = (ah != 0 || bh != 0) && abs(E) < 64 * std::numeric_limits<S>::min();
+  return E / (I[x] * I[z]);
 }
 
 }  // namespace rotlie::models::detail

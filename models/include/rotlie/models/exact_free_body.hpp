@@ -8,6 +8,10 @@
 //    and flat bodies; what remains is the round-off of the phase angles: an evaluation's error is
 //    estimated as ε·4·(2 + (|u| + |ψ parts|)·√(1 − n)), ε the unit round-off of the scalar used (√(1 − n):
 //    the axis ratio of the ellipse L⊥ runs on, large only in the thin island about z of a body with I_y ≈ I_z).
+//    The one input of the phase that cancels, D_y (zero on the separatrix), is exact to a few ε
+//    relative at any distance from the separatrix (exact_energy_difference.hpp); its share of the
+//    phase error, ≤ |u|·|δm_c/m_c|/2, is within that term. Where its terms underflow, so that this
+//    cannot be vouched for, the state counts as unrepresentable (float128, or estimate 1).
 //  - When that estimate exceeds the requested accuracy (long times, fast spin of a thin body) and a
 //    wider scalar exists (double, long double → float128), the evaluation is redone in float128;
 //    the wider motion is built once, on first need.

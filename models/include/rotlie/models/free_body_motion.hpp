@@ -42,7 +42,8 @@ class free_body_motion {
     // Working frame: the momentum circulates about z when D_y = Σ G_i² (I_i − I_y)/I_i ≥ 0; else U*.
     // D_y is exact to its last place (it cancels near the separatrix): the branch and m_c stay right
     // down to any distance from the separatrix the inputs can express.
-    const S Dy = middle_energy_difference<S>(I, G, idx(order[0]), idx(order[1]), idx(order[2]));
+    bool Dy_inexact = false;  // only when its terms underflow: then a wider scalar is needed
+    const S Dy = middle_energy_difference<S>(I, G, idx(order[0]), idx(order[1]), idx(order[2]), Dy_inexact);
     if (Dy < 0) std::swap(order[0], order[2]);
     for (int r = 0; r < 3; ++r) W_(r, order[idx(r)]) = S(1);
     if (det(W_) < 0)
@@ -57,6 +58,7 @@ class free_body_motion {
       return;
     }
     const S tiny = std::numeric_limits<S>::min() * S(1152921504606846976.0) * length_ * length_;  // 2^60 × least normal
+    underflow_ = Dy_inexact;
     for (const auto& l : L) underflow_ = underflow_ || (l != 0 && l * l < tiny);
     if (L[0] * L[0] + L[1] * L[1] < tiny) {
       // the wobble about z is below |L| · 1e-145 (double): its squares would lose their digits to
