@@ -7,6 +7,7 @@
 // is split by error-free transformations (TwoSum, TwoProduct by fma) into at most 32 floating-point
 // numbers whose exact sum it is, and those are summed exactly (Shewchuk's non-overlapping partials)
 // when double-S arithmetic (cheap, branch-free) cannot vouch for the last place.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -91,7 +92,8 @@ std::pair<S, S> product_pair(const S& a, const S& b, const S& c, const S& d, con
 /// Double-S arithmetic first (error ~ε² of the terms: enough unless they cancel to 64ε of
 /// themselves), the exact sum only then.
 /// `inexact` is set when the terms' sum is so small (< 64 × least normal) that the parts of their
-/// products lost to underflow (≤ the least subnormal each) may reach its last place.
+/// products lost to underflow (≤ the least subnormal each, and only for products below
+/// least normal / ε⁴) may reach its last place.
 template <class S, class V>
 S middle_energy_difference(const V& I, const V& G, std::size_t x, std::size_t y, std::size_t z, bool& inexact) {
   using std::abs;
@@ -105,7 +107,11 @@ S middle_energy_difference(const V& I, const V& G, std::size_t x, std::size_t y,
     add_exact_product(sum, G[z], G[z], I[x], I[z], I[y]);
     E = sum.value();
   }
-  inexact = (ah != 0 || bh != 0) && abs(E) < 64 * std::numeric_limits<S>::min();
+  // Parts of the products can be lost to underflow only when the products themselves are below
+  // least normal / ε⁴ (their exact expansions reach ε⁴ of their size); an exact zero (the
+  // separatrix) from products above that is exact.
+  const S eps = std::numeric_limits<S>::epsilon(), lossy = std::numeric_limits<S>::min() / (eps * eps * eps * eps);
+  inexact = (ah != 0 || bh != 0) && std::max(abs(ah), abs(bh)) < lossy && abs(E) < 64 * std::numeric_limits<S>::min();
   return E / (I[x] * I[z]);
 }
 
