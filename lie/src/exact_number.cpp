@@ -127,19 +127,4 @@ std::string to_decimal(const cln::cl_RA& x, int digits) {
   return out;
 }
 
-std::string printable_text(std::string_view text) {
-  constexpr std::size_t max_shown = 80;
-  static const char hex[] = "0123456789ABCDEF";
-  std::string out;
-  for (std::size_t i = 0; i < text.size() && i < max_shown; ++i) {
-    const auto u = static_cast<unsigned char>(text[i]);
-    if (u >= 0x20 && u < 0x7f)
-      out += static_cast<char>(u);
-    else
-      out += std::string("\\x") + hex[u >> 4] + hex[u & 15];
-  }
-  if (text.size() > max_shown) out += "…";
-  return out;
-}
-
 }  // namespace rotlie::lie

@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "rotlie/schemes/scheme_table.hpp"
+
 namespace rotlie::lie {
 
 /// Limits on user numbers: at most this many digits in a decimal and in the numerator and the
@@ -33,8 +35,7 @@ std::optional<cln::cl_RA> parse_exact_number(std::string_view text);
 /// parse_exact_number reads it back within half a unit of its last digit.
 std::string to_decimal(const cln::cl_RA& x, int digits);
 
-/// User text fit for a one-line message: bytes outside printable ASCII as \xHH, at most 80
-/// characters (then "…").
-std::string printable_text(std::string_view text);
+/// User text fit for a one-line message (one rule for every parser: schemes/scheme_table.hpp).
+using schemes::printable_text;
 
 }  // namespace rotlie::lie
