@@ -18,6 +18,7 @@
 #include "rotlie/models/composition_stepper.hpp"
 #include "rotlie/models/exact_free_body.hpp"
 #include "rotlie/reports/protocol_curves.hpp"
+#include "rotlie/solver/scheme_table.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 
 namespace {
@@ -109,7 +110,7 @@ double seconds_per_run(const method& m, long n, double T) {
 
 schemes::scheme_table dedicated(const std::string& scheme, const std::string& perm, int label) {
   const auto body = lie::parse_moments("water");
-  return reports::table_of(reports::find_solution(solver::solve_dedicated(body, {scheme}, {perm}, 40), scheme, perm, label),
+  return solver::scheme_table_of(reports::find_solution(solver::solve_dedicated(body, {scheme}, {perm}, 40), scheme, perm, label),
                            body);
 }
 

@@ -16,10 +16,10 @@
 #include "arguments.hpp"
 #include "rotlie/bch/scheme_word.hpp"
 #include "rotlie/lie/exact_number.hpp"
-#include "rotlie/reports/protocol_curves.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 #include "rotlie/schemes/same_body.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
+#include "rotlie/solver/scheme_table.hpp"
 
 namespace rotlie::app {
 namespace {
@@ -221,7 +221,7 @@ schemes::scheme_table lookup_scheme(const std::string& name, const lie::moments_
     const long label = parse_integer_in_range(label_text, "--scheme label", 1, 1000);
     const auto r = solver::solve_dedicated(body, {scheme}, {perm}, 40);
     for (const auto& s : r.solutions)
-      if (s.label == label) return reports::table_of(s, body);
+      if (s.label == label) return solver::scheme_table_of(s, body);
     std::string why = r.systems.empty() || r.systems[0].note.empty() ? "" : " (" + r.systems[0].note + ")";
     throw usage_error("--scheme: " + scheme + " " + perm + " has " + std::to_string(r.solutions.size()) +
                       " real solutions for this body, no label " + label_text + why);

@@ -9,6 +9,7 @@
 
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/protocol_curves.hpp"
+#include "rotlie/solver/scheme_table.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 
@@ -118,7 +119,7 @@ report_section accuracy_section(const report_options& options) {
   for (const auto& x : sphere_solutions.solutions) by_label.push_back(&x);
   std::sort(by_label.begin(), by_label.end(), [](auto* a, auto* b) { return a->name() < b->name(); });
   for (const auto* x : by_label) {
-    auto c = sphere_runner.run(table_of(*x, sphere));
+    auto c = sphere_runner.run(solver::scheme_table_of(*x, sphere));
     c.name = x->name();
     sphere_curves.push_back(std::move(c));
   }
@@ -187,7 +188,7 @@ report_section accuracy_section(const report_options& options) {
   std::vector<scheme_curve> fig3;
   for (const auto& [scheme, perm, label] : table4) {
     const auto& x = find_solution(water_n, scheme, perm, label);
-    auto c = water_runner.run(table_of(x, water));
+    auto c = water_runner.run(solver::scheme_table_of(x, water));
     c.name = x.name();
     fig3.push_back(std::move(c));
   }
@@ -208,9 +209,9 @@ report_section accuracy_section(const report_options& options) {
     if (r.order == 4) fig4.push_back(r);
   figure.pair("fig4_water_reference", "Fig. 4: water, N2 BAC (2) and the 4th-order reference schemes (best permutations)",
               fig4, "Fig. 4 (water).");
-  auto r_abc4 = water_runner.run(table_of(find_solution(water_r, "R", "ABC", 4), water));
+  auto r_abc4 = water_runner.run(solver::scheme_table_of(find_solution(water_r, "R", "ABC", 4), water));
   r_abc4.name = "R ABC (4)";
-  auto p1_bac5 = water_runner.run(table_of(find_solution(water_p, "P1", "BAC", 5), water));
+  auto p1_bac5 = water_runner.run(solver::scheme_table_of(find_solution(water_p, "P1", "BAC", 5), water));
   p1_bac5.name = "P1 BAC (5)";
   auto rs4_s5_cba = water_runner.run(*schemes::reference_scheme("RS4-S5-McLachlan:CBA"));
   const std::vector<scheme_curve> fig5 = {n2, p1_bac5, r_abc4, rs4_s5_cba};

@@ -9,7 +9,6 @@
 
 #include "rotlie/bch/scheme_word.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
-#include "rotlie/solver/scheme_table.hpp"
 
 namespace rotlie::reports {
 namespace {
@@ -99,10 +98,6 @@ double ratio_at_equal_cpu_time(const scheme_curve& worse, const scheme_curve& be
   const int p = worse.order;
   return ratio_at_equal_reduced_step(worse, better) *
          std::pow((worse.seconds_per_step / worse.cost) / (better.seconds_per_step / better.cost), p);
-}
-
-schemes::scheme_table table_of(const solver::dedicated_solution& s, const lie::moments_of_inertia& body) {
-  return solver::scheme_table_of(s, body);
 }
 
 const solver::dedicated_solution& find_solution(const solver::family_result& r, const std::string& scheme,

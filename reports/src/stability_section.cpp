@@ -8,6 +8,7 @@
 #include "rotlie/models/stability_scan.hpp"
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/protocol_curves.hpp"
+#include "rotlie/solver/scheme_table.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 
@@ -61,14 +62,14 @@ report_section stability_section(const report_options& options) {
     }
     const auto n = solver::solve_dedicated(body, {"N1", "N2", "N3", "N4", "N5", "N6", "N7"}, bch::permutation_names(), 40);
     if (n.solutions.empty()) throw std::runtime_error("no N solution for the " + b.title);
-    auto best_n = table_of(n.solutions.front(), body);
+    auto best_n = solver::scheme_table_of(n.solutions.front(), body);
     best_n.name = "best N: " + n.solutions.front().name();
     tables.push_back(best_n);
     if (b.key == "water") {
       const auto p = solver::solve_dedicated(body, {"P1"}, {"BAC"}, 40), r = solver::solve_dedicated(body, {"R"}, {"ABC"}, 40);
-      auto p1 = table_of(find_solution(p, "P1", "BAC", 5), body);
+      auto p1 = solver::scheme_table_of(find_solution(p, "P1", "BAC", 5), body);
       p1.name = "P1 BAC (5)";
-      auto r4 = table_of(find_solution(r, "R", "ABC", 4), body);
+      auto r4 = solver::scheme_table_of(find_solution(r, "R", "ABC", 4), body);
       r4.name = "R ABC (4)";
       tables.push_back(p1), tables.push_back(r4);
     }

@@ -50,10 +50,6 @@ double ratio_at_equal_reduced_step(const scheme_curve& worse, const scheme_curve
 /// The same at equal measured CPU time per unit of simulated time.
 double ratio_at_equal_cpu_time(const scheme_curve& worse, const scheme_curve& better);
 
-/// Kept for existing callers: forwards to solver::scheme_table_of (the conversion lives beside the
-/// table writer), which new code calls directly.
-schemes::scheme_table table_of(const solver::dedicated_solution& s, const lie::moments_of_inertia& body);
-
 /// The solution named scheme/perm/label in a solver result; throws std::runtime_error if absent.
 const solver::dedicated_solution& find_solution(const solver::family_result& r, const std::string& scheme,
                                                 const std::string& perm, int label);
