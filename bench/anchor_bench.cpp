@@ -17,6 +17,8 @@
 #include "euler_odeint.hpp"
 #include "rotlie/models/composition_stepper.hpp"
 #include "rotlie/models/exact_free_body.hpp"
+#include "rotlie/models/integrate.hpp"
+#include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/reports/protocol_curves.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
@@ -26,7 +28,7 @@ namespace {
 using namespace rotlie;
 using clock_type = std::chrono::steady_clock;
 
-const models::vec3<double> water{10220.0 / 29376, 19187.0 / 29376, 1};
+const models::vec3<double> water = models::moments_from_text<double>("10220/29376 19187/29376 1");
 
 models::body_state<double> initial() {
   models::body_state<double> s;
@@ -39,13 +41,15 @@ using observer = std::function<void(long, const models::mat3<double>&)>;
 using method = std::function<double(long n, double T, const observer* each)>;
 
 method splitting(const schemes::scheme_table& table) {
-  auto stepper = std::make_shared<models::composition_stepper<double>>(table, water);
-  return [stepper](long n, double T, const observer* each) {
+  auto engine = std::make_shared<models::free_body_composition<double>>(models::free_body_method(table, water));
+  return [engine](long n, double T, const observer* each) {
     auto s = initial();
     const double h = T / static_cast<double>(n);
-    for (long k = 1; k <= n; ++k) {
-      stepper->step(s, h);
-      if (each) (*each)(k, s.Q);
+    if (each) {
+      auto attitude = [each](long k, double, const models::body_state<double>& x) { (*each)(k, x.Q); };
+      models::integrate(*engine, s, h, n, attitude);
+    } else {
+      models::integrate(*engine, s, h, n);
     }
     return s.G[0];
   };

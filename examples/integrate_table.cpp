@@ -19,6 +19,8 @@
 
 #include "rotlie/models/composition_stepper.hpp"
 #include "rotlie/models/exact_free_body.hpp"
+#include "rotlie/models/integrate.hpp"
+#include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 #include "rotlie/schemes/scheme_table.hpp"
 
@@ -28,21 +30,6 @@ using rotlie::models::body_state;
 using rotlie::models::vec3;
 using rotlie::schemes::scheme_table;
 
-std::string table_text(const scheme_table& t) {
-  std::ostringstream out;
-  out << "format_version 1\n"
-      << "name " << t.name << "\n"
-      << "split " << (t.splitting == rotlie::schemes::split::abc ? "ABC" : "RS") << "\n"
-      << "word " << t.word << "\n"
-      << "permutation " << t.permutation << "\n"
-      << "order " << t.order << "\n"
-      << "symmetric " << (t.symmetric ? "true" : "false") << "\n"
-      << "source " << t.source << "\n"
-      << "stages " << t.stages.size() << "\n";
-  for (const auto& s : t.stages) out << "stage " << s.part << " " << s.name << " " << s.value << "\n";
-  return out.str();
-}
-
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::invalid_argument("cannot read " + path);
@@ -51,34 +38,10 @@ std::string read_file(const std::string& path) {
   return text.str();
 }
 
-// "p/q" or a decimal, as the `inertia` line writes them.
-double rational_value(const std::string& text) {
-  const auto slash = text.find('/');
-  auto number = [&](const std::string& part) {
-    std::size_t used = 0;
-    double x = 0;
-    try {
-      x = std::stod(part, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (part.empty() || used != part.size()) throw std::invalid_argument("bad moment of inertia '" + text + "'");
-    return x;
-  };
-  if (slash == std::string::npos) return number(text);
-  return number(text.substr(0, slash)) / number(text.substr(slash + 1));
-}
-
+// The table's `inertia` line (a scheme solved for that body), read exactly into double; water
+// (LV section 4.3) for a table that names no body.
 vec3<double> body_of(const scheme_table& t) {
-  if (t.inertia.empty()) return {10220.0 / 29376.0, 19187.0 / 29376.0, 1.0};  // water
-  std::istringstream in(t.inertia);
-  vec3<double> I{};
-  for (auto& x : I) {
-    std::string word;
-    if (!(in >> word)) throw std::invalid_argument("inertia line needs three moments: " + t.inertia);
-    x = rational_value(word);
-  }
-  return I;
+  return rotlie::models::moments_from_text<double>(t.inertia.empty() ? "10220/29376 19187/29376 1" : t.inertia);
 }
 
 double max_abs_difference(const body_state<double>& x, const body_state<double>& y) {
@@ -88,10 +51,9 @@ double max_abs_difference(const body_state<double>& x, const body_state<double>&
   return d;
 }
 
-double error_after(const rotlie::models::composition_stepper<double>& stepper, const body_state<double>& exact_end,
+double error_after(const rotlie::models::free_body_composition<double>& method, const body_state<double>& exact_end,
                    body_state<double> s, double T, long steps) {
-  const double h = T / static_cast<double>(steps);
-  for (long n = 0; n < steps; ++n) stepper.step(s, h);
+  rotlie::models::integrate(method, s, T / static_cast<double>(steps), steps);
   return max_abs_difference(s, exact_end);
 }
 
@@ -111,7 +73,7 @@ int main(int argc, char** argv) {
     } else {
       path = "ABC4-S5-McLachlan.table";
       std::ofstream out(path);
-      out << table_text(*rotlie::schemes::reference_scheme("ABC4-S5-McLachlan"));
+      out << rotlie::schemes::format_scheme_table(*rotlie::schemes::reference_scheme("ABC4-S5-McLachlan"));
       if (!out.flush()) {
         std::cerr << "integrate_table: error: cannot write " << path << "\n";
         return 1;
@@ -119,8 +81,7 @@ int main(int argc, char** argv) {
       std::printf("wrote %s\n", path.c_str());
     }
     table = rotlie::schemes::parse_scheme_table(read_file(path));
-    I = body_of(table);
-    rotlie::models::validate_moments(I);
+    I = body_of(table);  // validated (eq. 77)
     rotlie::schemes::check_scheme_table(table);  // what the stepper checks, reported here as bad input
   } catch (const std::invalid_argument& e) {
     std::cerr << "integrate_table: error: " << e.what() << "\n";
@@ -130,7 +91,7 @@ int main(int argc, char** argv) {
     return 1;
   }
 
-  const rotlie::models::composition_stepper<double> stepper(table, I);
+  const auto method = rotlie::models::free_body_method(table, I);
   body_state<double> start;
   start.G = {0.3, 0.9, -0.4};  // a generic tumbling motion, away from the axes
   const double T = 10;
@@ -139,8 +100,8 @@ int main(int argc, char** argv) {
   // h = 1/64 for a 4th-order table, 1/1024 for a 2nd-order one: errors near 1e-8 either way, far
   // above round-off, so the observed order is the scheme's.
   const long steps = table.order >= 4 ? 640 : 10240;
-  const double coarse = error_after(stepper, exact_end, start, T, steps);
-  const double fine = error_after(stepper, exact_end, start, T, 2 * steps);
+  const double coarse = error_after(method, exact_end, start, T, steps);
+  const double fine = error_after(method, exact_end, start, T, 2 * steps);
   const double slope = std::log2(coarse / fine);
   std::printf("table %s (declared order %d, %zu stages), body %.6g %.6g %.6g\n", table.name.c_str(), table.order,
               table.stages.size(), I[0], I[1], I[2]);

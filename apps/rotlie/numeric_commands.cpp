@@ -1,4 +1,5 @@
-// integrate, order and exact: the numeric core on the command line (DESIGN.md CLI table).
+// integrate, order and exact: the numeric core on the command line (DESIGN.md CLI table). Every
+// run is models::integrate on the composition engine, observed by the free-body observers.
 #include <nlohmann/json.hpp>
 
 #include <boost/multiprecision/float128.hpp>
@@ -11,6 +12,7 @@
 #include "commands.hpp"
 #include "progress.hpp"
 #include "rotlie/models/error_protocol.hpp"
+#include "rotlie/models/moments_from_text.hpp"
 #include "scheme_lookup.hpp"
 
 namespace rotlie::app {
@@ -52,85 +54,92 @@ void warn_reference(double error, double reference_error, const std::string& whe
             << " (within a factor " << models::reference_margin << "): the figure may measure the reference rather than the scheme\n";
 }
 
+// One numeric run's table and body: the table looked up for the body (a table solved for another
+// body is refused unless --force), and the body's exact moments as text, read into the scalar of
+// each run once by models::moments_from_text.
+struct free_body_input {
+  schemes::scheme_table table;
+  std::string inertia;
+};
+
+free_body_input free_body_of(const std::string& scheme, const std::string& inertia, bool force) {
+  const auto body = parse_inertia_option(inertia);
+  return {lookup_scheme(scheme, body, force), lie::inertia_text(body)};
+}
+
 template <class T>
-models::vec3<T> cast(const models::vec3<double>& v) {
-  return {T(v[0]), T(v[1]), T(v[2])};
+models::body_state<T> initial_state(const models::vec3<double>& g0) {
+  return {models::mat3<T>::identity(), {T(g0[0]), T(g0[1]), T(g0[2])}};
+}
+
+// The protocol in scalar T, fitted over the finest points (at most four) above T's round-off floor
+// and well above the exact reference's estimated error.
+template <class T>
+models::order_measurement order_in(const free_body_input& in, const models::vec3<double>& g0, double total, int first,
+                                   int last) {
+  const auto initial = initial_state<T>(g0);
+  const auto method = models::free_body_method(in.table, models::moments_from_text<T>(in.inertia));
+  check_time_limit(models::exact_free_body<T>(method.system().moments(), initial), total);
+  models::fit_rule rule;
+  rule.at_most = 4;
+  rule.floor = models::round_off_floor<T>();
+  return models::measure_order(method, initial, T(total), first, last, rule);
 }
 
 }  // namespace
 
 int run_integrate(const integrate_options& o) {
-  const auto body = parse_inertia_option(o.inertia);
-  const auto table = lookup_scheme(o.scheme, body, o.force);
+  const auto in = free_body_of(o.scheme, o.inertia, o.force);
   const double h = parse_positive(o.h, "--h"), total = parse_positive(o.T, "--T");
   const long steps = step_count(total, h);
-  const auto I = to_double(body);
-  const auto initial = models::body_state<double>{models::mat3<double>::identity(), parse_momentum(o.G0)};
-  const models::composition_stepper<double> stepper(table, I);
-  const models::exact_free_body<double> exact(I, initial);
+  const auto initial = initial_state<double>(parse_momentum(o.G0));
+  const auto method = models::free_body_method(in.table, models::moments_from_text<double>(in.inertia));
+  const models::exact_free_body<double> exact(method.system().moments(), initial);
   check_time_limit(exact, total);
   progress_line progress;
-  auto s = initial;
-  double sum = 0, reference_sum = 0;
-  for (long k = 1; k <= steps; ++k) {
-    stepper.step(s, h);
-    const auto r = exact.evaluate(static_cast<double>(k) * h);
-    sum += models::distance(s.Q, r.state.Q);
-    reference_sum += 3 * r.error_estimate;  // max abs entry → R^9 distance
+  auto guard = models::stop_unless_finite<double>();
+  models::flow_attitude_error<double> attitude(exact);
+  auto show_progress = [&](long k, double, const models::body_state<double>&) {
     if (k % 1000000 == 0) progress.show("step " + std::to_string(k) + " of " + std::to_string(steps));
-  }
-  const double error = sum / static_cast<double>(steps), reference_error = reference_sum / static_cast<double>(steps);
-  if (!std::isfinite(error)) throw std::runtime_error("the integration diverged (NaN): the step is beyond the scheme's stability limit");
-  const models::protocol_point point{h, h / stepper.cost(), error, reference_error};
-  if (!point.attributable()) warn_reference(error, reference_error, "h = " + number(h));
-  const double cpu = models::cpu_seconds_per_unit_time(stepper, initial, h) * total;
+  };
+  auto s = initial;
+  models::integrate(method, s, h, steps, guard, attitude, show_progress);
+  if (guard.stopped())
+    throw std::runtime_error("the integration diverged (NaN): the step is beyond the scheme's stability limit");
+  const models::protocol_point point{h, h / method.cost(), attitude.mean(), attitude.reference_mean()};
+  if (!point.attributable()) warn_reference(point.error, point.reference_error, "h = " + number(h));
+  const double cpu = models::cpu_seconds_per_unit_time(method, initial, h) * total;
   if (o.json) {
-    std::cout << nlohmann::json{{"scheme", table.name}, {"slope", nullptr},
-                                {"points", {point_json(h, h / stepper.cost(), error, cpu, reference_error)}}}.dump(2) << "\n";
+    std::cout << nlohmann::json{{"scheme", in.table.name}, {"slope", nullptr},
+                                {"points", {point_json(h, point.h_over_cost, point.error, cpu, point.reference_error)}}}
+                     .dump(2)
+              << "\n";
   } else {
-    std::cout << table.name << " (" << stepper.cost() << " C0 per step), h = " << h << ", T = " << total << ", "
-              << steps << " steps\nmean attitude error " << error << " (exact reference: estimated error " << reference_error
-              << ")\nCPU " << cpu << " s (stepping only)\n";
+    std::cout << in.table.name << " (" << method.cost() << " C0 per step), h = " << h << ", T = " << total << ", " << steps
+              << " steps\nmean attitude error " << point.error << " (exact reference: estimated error "
+              << point.reference_error << ")\nCPU " << cpu << " s (stepping only)\n";
   }
   return 0;
 }
 
-namespace {
-template <class T>
-models::order_measurement order_in(const schemes::scheme_table& table, const lie::moments_of_inertia& body,
-                                   const models::vec3<double>& g0, double total, int first, int last, double floor) {
-  const models::body_state<T> initial{models::mat3<T>::identity(), cast<T>(g0)};
-  check_time_limit(models::exact_free_body<T>(cast<T>(to_double(body)), initial), total);
-  auto m = models::measure_order<T>(table, cast<T>(to_double(body)), initial, T(total), first, last, last - first + 1);
-  // Fit over the finest points still above the round-off floor of T and well above the exact
-  // reference's estimated error (at most four).
-  std::vector<double> hs, es;
-  for (auto it = m.points.rbegin(); it != m.points.rend() && hs.size() < 4; ++it)
-    if (it->error > floor && it->attributable()) hs.push_back(it->h), es.push_back(it->error);
-  m.slope = hs.size() >= 2 ? models::fitted_slope(hs, es) : std::nan("");
-  return m;
-}
-}  // namespace
-
 int run_order(const order_options& o) {
-  const auto body = parse_inertia_option(o.inertia);
-  const auto table = lookup_scheme(o.scheme, body, o.force);
+  const auto in = free_body_of(o.scheme, o.inertia, o.force);
   const double total = parse_positive(o.T, "--T");
   const auto g0 = parse_momentum(o.G0);
   const int first = static_cast<int>(parse_integer_in_range(o.min_level, "--min-level", 0, 20));
   const int last = static_cast<int>(parse_integer_in_range(o.max_level, "--max-level", first, 20));
   models::order_measurement m;
   if (o.scalar == "double")
-    m = order_in<double>(table, body, g0, total, first, last, 1e-13);
+    m = order_in<double>(in, g0, total, first, last);
   else if (o.scalar == "long-double")
-    m = order_in<long double>(table, body, g0, total, first, last, 1e-16);
+    m = order_in<long double>(in, g0, total, first, last);
   else if (o.scalar == "float128")
-    m = order_in<boost::multiprecision::float128>(table, body, g0, total, first, last, 1e-28);
+    m = order_in<boost::multiprecision::float128>(in, g0, total, first, last);
   else
     throw usage_error("--scalar must be double, long-double or float128, got '" + o.scalar + "'");
   // CPU per run in double (the scalar a user integrates with), stepping only
-  const models::composition_stepper<double> timing(table, to_double(body));
-  const models::body_state<double> initial{models::mat3<double>::identity(), g0};
+  const auto timing = models::free_body_method(in.table, models::moments_from_text<double>(in.inertia));
+  const auto initial = initial_state<double>(g0);
   std::vector<double> cpu;
   for (const auto& p : m.points) {
     cpu.push_back(models::cpu_seconds_per_unit_time(timing, initial, p.h, 0.005) * total);
@@ -140,11 +149,12 @@ int run_order(const order_options& o) {
     nlohmann::json points = nlohmann::json::array();
     for (std::size_t i = 0; i < m.points.size(); ++i)
       points.push_back(point_json(m.points[i].h, m.points[i].h_over_cost, m.points[i].error, cpu[i], m.points[i].reference_error));
-    nlohmann::json j{{"scheme", table.name}, {"scalar", o.scalar}, {"declared_order", table.order}, {"points", points}};
+    nlohmann::json j{{"scheme", in.table.name}, {"scalar", o.scalar}, {"declared_order", in.table.order}, {"points", points}};
     j["slope"] = std::isfinite(m.slope) ? nlohmann::json(m.slope) : nlohmann::json(nullptr);
     std::cout << j.dump(2) << "\n";
   } else {
-    std::cout << table.name << " in " << o.scalar << ": declared order " << table.order << ", fitted slope " << m.slope << "\n";
+    std::cout << in.table.name << " in " << o.scalar << ": declared order " << in.table.order << ", fitted slope " << m.slope
+              << "\n";
     for (std::size_t i = 0; i < m.points.size(); ++i)
       std::cout << "  h = " << m.points[i].h << "  h/C = " << m.points[i].h_over_cost << "  error = " << m.points[i].error
                 << "  reference error = " << m.points[i].reference_error << "  cpu = " << cpu[i] << " s\n";
@@ -153,10 +163,9 @@ int run_order(const order_options& o) {
 }
 
 int run_exact(const exact_options& o) {
-  const auto body = parse_inertia_option(o.inertia);
-  const auto I = to_double(body);
+  const auto I = models::moments_from_text<double>(lie::inertia_text(parse_inertia_option(o.inertia)));
   const double total = parse_positive(o.T, "--T");
-  const models::exact_free_body<double> exact(I, {models::mat3<double>::identity(), parse_momentum(o.G0)});
+  const models::exact_free_body<double> exact(I, initial_state<double>(parse_momentum(o.G0)));
   check_time_limit(exact, total);
   const auto r = exact.evaluate(total);
   const auto& s = r.state;

@@ -1,5 +1,8 @@
 #include "rotlie/lie/rigid_body.hpp"
 
+#include <cln/rational_io.h>
+
+#include <sstream>
 #include <stdexcept>
 
 #include "rotlie/lie/exact_number.hpp"
@@ -40,6 +43,12 @@ void validate_moments(const moments_of_inertia& m) {
                                   to_decimal(m.I[j], 6) + " < " + to_decimal(m.I[kk], 6) +
                                   "), violating the triangle inequality of eq. (77)");
   }
+}
+
+std::string inertia_text(const moments_of_inertia& m) {
+  std::ostringstream text;
+  text << m.I[0] << " " << m.I[1] << " " << m.I[2];  // p/q or an integer, exactly
+  return text.str();
 }
 
 std::string symmetry_of(const moments_of_inertia& m) {

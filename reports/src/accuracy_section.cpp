@@ -1,22 +1,18 @@
 // Report section "Accuracy against cost": LV section 4 regenerated. Figs. 1-2 and Table 3's
 // numeric column (spherical top), Figs. 3-5 (water), each also against measured CPU time, and the
-// paper's accuracy claims next to ours.
+// paper's accuracy claims next to ours. The curves and claims are computed by
+// compute_accuracy_curves (accuracy_curves.cpp); this file renders them.
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
-#include <tuple>
 
+#include "rotlie/reports/accuracy_curves.hpp"
 #include "rotlie/reports/chart.hpp"
-#include "rotlie/reports/protocol_curves.hpp"
-#include "rotlie/solver/scheme_table.hpp"
 #include "rotlie/reports/report.hpp"
-#include "rotlie/schemes/reference_schemes.hpp"
 
 namespace rotlie::reports {
 namespace {
-
-const std::vector<std::string> n_family = {"N1", "N2", "N3", "N4", "N5", "N6", "N7"};
 
 enum class axis { reduced_step, cpu };
 
@@ -85,13 +81,6 @@ const scheme_curve* named(const std::vector<scheme_curve>& curves, const std::st
   return nullptr;
 }
 
-struct claim {
-  std::string text;
-  double paper;
-  const scheme_curve* worse;
-  const scheme_curve* better;
-};
-
 }  // namespace
 
 report_section accuracy_section(const report_options& options) {
@@ -109,26 +98,10 @@ report_section accuracy_section(const report_options& options) {
         "the ratio of error/(h/C)⁴ averaged over the three finest steps. The costs C are LV's: N rotations for an ABC "
         "scheme of N stages, N + 1 for an RS scheme (one rotation about G per step).\n\n";
 
-  // Spherical top: the 12 N solutions of Table 2, leapfrog and Yoshida (Figs. 1-2, Table 3).
-  if (options.progress) options.progress("Accuracy: spherical top (Figs. 1-2, Table 3 numeric column)");
-  const auto sphere = lie::parse_moments("sphere");
-  const auto sphere_solutions = solver::solve_dedicated(sphere, n_family, {"ABC"}, 40);
-  const protocol_runner sphere_runner(sphere, 1, max_level);
-  std::vector<scheme_curve> sphere_curves;
-  std::vector<const solver::dedicated_solution*> by_label;
-  for (const auto& x : sphere_solutions.solutions) by_label.push_back(&x);
-  std::sort(by_label.begin(), by_label.end(), [](auto* a, auto* b) { return a->name() < b->name(); });
-  for (const auto* x : by_label) {
-    auto c = sphere_runner.run(solver::scheme_table_of(*x, sphere));
-    c.name = x->name();
-    sphere_curves.push_back(std::move(c));
-  }
-  const std::size_t n_count = sphere_curves.size();
-  sphere_curves.push_back(sphere_runner.run(*schemes::reference_scheme("ABCBA2")));
-  sphere_curves.push_back(sphere_runner.run(*schemes::reference_scheme("ABCBA4-SS3-Yoshida")));
-  const scheme_curve* n5_2 = named(sphere_curves, "N5 ABC (2)");
-  const scheme_curve* yoshida_sphere = named(sphere_curves, "ABCBA4-SS3-Yoshida");
-  if (!n5_2 || !yoshida_sphere) throw std::runtime_error("the spherical top lacks N5 (2) or Yoshida");
+  const auto curves = compute_accuracy_curves(max_level, options.progress);
+  const auto& sphere_curves = curves.sphere;
+  const scheme_curve* n5_2 = &curve_named(sphere_curves, "N5 ABC (2)");
+  const std::size_t n_count = curves.sphere_solutions.size();
 
   md << "### Spherical top\n\n";
   figure.pair("fig1_sphere", "Fig. 1: spherical top, the N integrators of Table 2, leapfrog and Yoshida", sphere_curves,
@@ -140,7 +113,7 @@ report_section accuracy_section(const report_options& options) {
       {"N4 ABC (2)", {2.06, 1.58}},     {"N4 ABC (3)", {1.59, 1.18}},     {"N5 ABC (1)", {107.82, 92.79}},
       {"N5 ABC (3)", {27.02, 22.51}},   {"N7 ABC (1)", {120.07, 100.50}}};  // LV Table 3 (quoted)
   double n5_analytic = 0;
-  for (const auto& x : sphere_solutions.solutions)
+  for (const auto& x : curves.sphere_solutions)
     if (x.scheme == "N5" && x.label == 2) n5_analytic = x.analytic_remainder;
   chart fig2;
   fig2.title = "Fig. 2: analytic against numeric remainder, normalised by N5 (2)";
@@ -154,8 +127,8 @@ report_section accuracy_section(const report_options& options) {
   for (const auto& [name, lv] : table3) {
     const scheme_curve* c = named(sphere_curves, name);
     const solver::dedicated_solution* sol = nullptr;
-    for (const auto* x : by_label)
-      if (x->name() == name) sol = x;
+    for (const auto& x : curves.sphere_solutions)
+      if (x.name() == name) sol = &x;
     if (!c || !sol) {
       md << "| " << name << " | missing | " << lv.first << " | | | " << lv.second << " |\n";
       continue;
@@ -173,34 +146,10 @@ report_section accuracy_section(const report_options& options) {
   curve_table(md, sphere_curves, *n5_2);
 
   // Water (Figs. 3-5).
-  if (options.progress) options.progress("Accuracy: water molecule (Figs. 3-5), every reference scheme at every permutation");
-  const auto water = lie::parse_moments("water");
-  const auto water_n = solver::solve_dedicated(water, n_family, bch::permutation_names(), 40);
-  if (options.progress) options.progress("Accuracy: solving R ABC and P1 BAC for water");
-  const auto water_r = solver::solve_dedicated(water, {"R"}, {"ABC"}, 40);
-  const auto water_p = solver::solve_dedicated(water, {"P1"}, {"BAC"}, 40);
-  const protocol_runner water_runner(water, 1, max_level);
-  // The paper's Table 4 selection (which integrators it plots; the coefficients come from our solver).
-  const std::vector<std::tuple<std::string, std::string, int>> table4 = {
-      {"N1", "ABC", 1}, {"N1", "ABC", 2}, {"N2", "ABC", 1}, {"N2", "CAB", 2}, {"N2", "ACB", 1},
-      {"N2", "BAC", 2}, {"N3", "ABC", 1}, {"N3", "BAC", 1}, {"N4", "BCA", 1}, {"N5", "CAB", 2},
-      {"N5", "ACB", 1}, {"N5", "BAC", 1}, {"N6", "ABC", 1}, {"N6", "ABC", 2}, {"N6", "BAC", 1}};
-  std::vector<scheme_curve> fig3;
-  for (const auto& [scheme, perm, label] : table4) {
-    const auto& x = find_solution(water_n, scheme, perm, label);
-    auto c = water_runner.run(solver::scheme_table_of(x, water));
-    c.name = x.name();
-    fig3.push_back(std::move(c));
-  }
-  const scheme_curve n2 = *named(fig3, "N2 BAC (2)");
-  std::vector<scheme_curve> references;
-  for (const auto& base : schemes::reference_scheme_names()) references.push_back(water_runner.best_permutation(base));
-  const auto reference = [&](const std::string& base) -> const scheme_curve& {
-    for (const auto& r : references)
-      if (r.name.rfind(base + ":", 0) == 0) return r;
-    throw std::logic_error("no curve for " + base);
-  };
-  for (const auto* base : {"ABCBA2", "RSR2", "ABCBA4-SS3-Yoshida", "RSR4-SS3-Yoshida"}) fig3.push_back(reference(base));
+  const auto& fig3 = curves.fig3;
+  const auto& references = curves.references;
+  const auto& fig5 = curves.fig5;
+  const scheme_curve& n2 = curve_named(fig5, "N2 BAC (2)");
   md << "### Water molecule\n\n";
   figure.pair("fig3_water", "Fig. 3: water, the N integrators of Table 4, leapfrog and Yoshida (best permutations)", fig3,
               "Fig. 3 (water).");
@@ -209,12 +158,6 @@ report_section accuracy_section(const report_options& options) {
     if (r.order == 4) fig4.push_back(r);
   figure.pair("fig4_water_reference", "Fig. 4: water, N2 BAC (2) and the 4th-order reference schemes (best permutations)",
               fig4, "Fig. 4 (water).");
-  auto r_abc4 = water_runner.run(solver::scheme_table_of(find_solution(water_r, "R", "ABC", 4), water));
-  r_abc4.name = "R ABC (4)";
-  auto p1_bac5 = water_runner.run(solver::scheme_table_of(find_solution(water_p, "P1", "BAC", 5), water));
-  p1_bac5.name = "P1 BAC (5)";
-  auto rs4_s5_cba = water_runner.run(*schemes::reference_scheme("RS4-S5-McLachlan:CBA"));
-  const std::vector<scheme_curve> fig5 = {n2, p1_bac5, r_abc4, rs4_s5_cba};
   figure.pair("fig5_water_dedicated", "Fig. 5: water, N2 BAC (2), P1 BAC (5), R ABC (4) and RS4 S5 McLachlan CBA", fig5,
               "Fig. 5 (water).");
 
@@ -230,28 +173,20 @@ report_section accuracy_section(const report_options& options) {
   curve_table(md, all, n2);
 
   // The paper's claims next to ours.
-  const std::vector<claim> claims = {
-      {"spherical top: N5 (2) more accurate than ABCBA4 Yoshida", 700, yoshida_sphere, n5_2},
-      {"water: N2 BAC (2) more accurate than ABCBA4 Yoshida (best permutation)", 170, &reference("ABCBA4-SS3-Yoshida"), &n2},
-      {"water: N2 BAC (2) more accurate than RSR4 Yoshida (best permutation)", 1.6, &reference("RSR4-SS3-Yoshida"), &n2},
-      {"water: RS4 S5 McLachlan CBA more accurate than N2 BAC (2)", 4.7, &n2, &rs4_s5_cba},
-      {"water: P1 BAC (5) more accurate than N2 BAC (2)", 8, &n2, &p1_bac5},
-      {"water: P1 BAC (5) more accurate than RS4 S5 McLachlan CBA", 1.7, &rs4_s5_cba, &p1_bac5},
-      {"water: R ABC (4) more accurate than N2 BAC (2)", 1.5, &n2, &r_abc4}};
   md << "### The paper's accuracy claims\n\n"
      << "| claim (LV section 4) | LV | ours, equal h/C | deviation | within 20 % | ours, equal CPU time |\n"
      << "|:--|--:|--:|--:|:--:|--:|\n";
   int held = 0;
-  for (const auto& c : claims) {
-    const double ours_ratio = ratio_at_equal_reduced_step(*c.worse, *c.better);
+  for (const auto& c : curves.claims) {
+    const double ours_ratio = c.at_equal_reduced_step();
     const double deviation = ours_ratio / c.paper - 1;
     const bool ok = std::abs(deviation) <= 0.2;
     held += ok;
-    md << "| " << c.text << " (" << c.worse->name << " vs " << c.better->name << ") | " << c.paper << "× | "
+    md << "| " << c.text << " (" << c.worse.name << " vs " << c.better.name << ") | " << c.paper << "× | "
        << fixed(ours_ratio, ours_ratio < 10 ? 2 : 0) << "× | " << fixed(100 * deviation, 1) << " % | "
-       << (ok ? "yes" : "**no**") << " | " << fixed(ratio_at_equal_cpu_time(*c.worse, *c.better), 2) << "× |\n";
+       << (ok ? "yes" : "**no**") << " | " << fixed(c.at_equal_cpu_time(), 2) << "× |\n";
   }
-  md << "\n" << held << " of " << claims.size()
+  md << "\n" << held << " of " << curves.claims.size()
      << " claims reproduced within 20 % at equal reduced step h/C, the paper's measure. The last column "
         "replaces the rotation count C by the measured CPU time of our double stepper: an RS step's rotation about "
         "G and the ABC rotations about a principal axis do not cost exactly the same, which moves the ratios.\n\n";

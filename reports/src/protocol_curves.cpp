@@ -1,13 +1,12 @@
 #include "rotlie/reports/protocol_curves.hpp"
 
-#include <cln/real.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "rotlie/bch/scheme_word.hpp"
+#include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 
 namespace rotlie::reports {
@@ -15,16 +14,9 @@ namespace {
 
 constexpr int fit_points = 3;
 
-models::vec3<long double> moments(const lie::moments_of_inertia& body) {
-  models::vec3<long double> I{};
-  for (std::size_t k = 0; k < 3; ++k)  // exact rational → long double, one rounding per part
-    I[k] = static_cast<long double>(cln::double_approx(cln::numerator(body.I[k]))) /
-           static_cast<long double>(cln::double_approx(cln::denominator(body.I[k])));
-  return I;
-}
-
-models::body_state<long double> paper_initial_state() {
-  models::body_state<long double> s;
+template <class T>
+models::body_state<T> paper_initial_state() {
+  models::body_state<T> s;
   s.G = {1, 1, 1};  // LV section 4.1
   return s;
 }
@@ -32,22 +24,21 @@ models::body_state<long double> paper_initial_state() {
 }  // namespace
 
 protocol_runner::protocol_runner(const lie::moments_of_inertia& body, int min_level, int max_level, bool time_steps)
-    : I_(moments(body)), initial_(paper_initial_state()), exact_(I_, initial_, 1.0L, max_level),
+    : inertia_(lie::inertia_text(body)), I_(models::moments_from_text<long double>(inertia_)),
+      initial_(paper_initial_state<long double>()), exact_(I_, initial_, 1.0L, max_level),
       min_level_(min_level), max_level_(max_level), time_steps_(time_steps) {
   if (min_level < 0 || max_level - min_level + 1 < fit_points)
     throw std::invalid_argument("the protocol needs at least three step levels");
 }
 
 scheme_curve protocol_runner::run(const schemes::scheme_table& table) const {
-  const models::composition_stepper<long double> stepper(table, I_);
+  const auto method = models::free_body_method(table, I_);
   scheme_curve c;
   c.name = table.name;
-  c.cost = stepper.cost();
+  c.cost = method.cost();
   c.order = table.order;
-  const models::vec3<double> I{static_cast<double>(I_[0]), static_cast<double>(I_[1]), static_cast<double>(I_[2])};
-  const models::composition_stepper<double> fast(table, I);
-  models::body_state<double> s0;
-  s0.G = {1, 1, 1};
+  const auto fast = models::free_body_method(table, models::moments_from_text<double>(inertia_));
+  const auto s0 = paper_initial_state<double>();
   // The fastest of several short timings: interference from the rest of the machine only ever
   // slows a run down, and errors at equal CPU time go as the 4th power of this number.
   const double h_timing = 1.0 / 64;
@@ -55,22 +46,25 @@ scheme_curve protocol_runner::run(const schemes::scheme_table& table) const {
   for (int repeat = 0; time_steps_ && repeat < 7; ++repeat)
     c.seconds_per_step =
         std::min(c.seconds_per_step, models::cpu_seconds_per_unit_time(fast, s0, h_timing, 0.005) * h_timing);
-  std::vector<double> hs, es;
+  std::vector<models::protocol_point> measured;
   for (int level = min_level_; level <= max_level_; ++level) {
     curve_point p;
     p.h = std::ldexp(1.0, -level);
     p.h_over_cost = p.h / c.cost;
-    p.error = static_cast<double>(models::mean_attitude_error(stepper, initial_, exact_, level));
+    const auto r = models::sampled_run(method, initial_, exact_, level);
+    p.error = static_cast<double>(r.error);
     p.cpu_seconds = c.seconds_per_step / p.h;
     c.points.push_back(p);
+    measured.push_back({p.h, p.h_over_cost, p.error, static_cast<double>(r.reference_error)});
   }
+  // The three finest points, every one of them (long double's reference is far below the errors).
+  models::fit_rule rule;
+  rule.finest = fit_points;
+  rule.margin = 0;
+  c.slope = models::fitted_order(measured, rule);
   double sum = 0;
-  for (std::size_t i = c.points.size() - fit_points; i < c.points.size(); ++i) {
-    hs.push_back(c.points[i].h);
-    es.push_back(c.points[i].error);
+  for (std::size_t i = c.points.size() - fit_points; i < c.points.size(); ++i)
     sum += c.points[i].error / std::pow(c.points[i].h_over_cost, c.order);
-  }
-  c.slope = models::fitted_slope(hs, es);
   c.constant = sum / fit_points;
   return c;
 }

@@ -1,10 +1,9 @@
 // Report section "Stability: where methods fail": for water, a near-symmetric and a near-flat
 // body, the step beyond which each scheme stops working (models/stability_scan.hpp).
-#include <cln/real.h>
-
 #include <iomanip>
 #include <sstream>
 
+#include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/models/stability_scan.hpp"
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/protocol_curves.hpp"
@@ -52,8 +51,7 @@ report_section stability_section(const report_options& options) {
   for (const auto& b : bodies) {
     if (options.progress) options.progress("Stability: " + b.title);
     const auto body = lie::parse_moments(b.inertia);
-    const models::vec3<double> I{cln::double_approx(body.I[0]), cln::double_approx(body.I[1]),
-                                 cln::double_approx(body.I[2])};
+    const auto I = models::moments_from_text<double>(lie::inertia_text(body));
     std::vector<schemes::scheme_table> tables;
     const protocol_runner chooser(body, 3, 7, false);
     for (const auto& base : reference_bases) {

@@ -21,6 +21,10 @@ moments_of_inertia parse_moments(std::string_view text);
 /// Throws std::invalid_argument naming the broken rule.
 void validate_moments(const moments_of_inertia& m);
 
+/// The moments as exact text, "p/q p/q p/q" (a scheme table's `inertia` line): the form the
+/// numeric side reads into its scalar with one rounding per moment (models::moments_from_text).
+std::string inertia_text(const moments_of_inertia& m);
+
 /// Which pair of moments coincide, e.g. "I1 = I2", or empty for an asymmetric body.
 std::string symmetry_of(const moments_of_inertia& m);
 

@@ -4,7 +4,8 @@
 // error exceeds the same threshold (relative), |G| drifts beyond round-off, or a value is not
 // finite. Every stage is an exact rotation, so |G| is kept and the energy stays between
 // |G|²/(2 I_max) and |G|²/(2 I_min): a splitting scheme of this kind loses accuracy, it cannot
-// diverge, and the scan reports where the loss sets in.
+// diverge, and the scan reports where the loss sets in. Each run is models::integrate with the
+// observers of free_body_observers.hpp.
 #include <cmath>
 #include <limits>
 #include <string>
@@ -12,6 +13,8 @@
 
 #include "rotlie/models/composition_stepper.hpp"
 #include "rotlie/models/exact_free_body.hpp"
+#include "rotlie/models/free_body_observers.hpp"
+#include "rotlie/models/integrate.hpp"
 
 namespace rotlie::models {
 
@@ -33,31 +36,24 @@ struct stability_scan_result {
 
 /// One run of `steps` steps of size total_time/steps.
 template <class T>
-stability_point stability_run(const composition_stepper<T>& stepper, const vec3<T>& I, const body_state<T>& initial,
+stability_point stability_run(const free_body_composition<T>& method, const body_state<T>& initial,
                               const exact_free_body<T>& exact, const T& total_time, long steps, double threshold) {
-  using std::abs;
-  using std::isfinite;
-  using std::sqrt;
   stability_point p;
   const T h = total_time / static_cast<T>(steps);
   p.h = static_cast<double>(h);
-  const T e0 = kinetic_energy(I, initial.G), g0 = sqrt(dot(initial.G, initial.G));
+  auto guard = stop_unless_finite<T>();
+  flow_attitude_error<T> error(exact);
+  invariant_drift<T> drift(method.system().moments(), initial);
   body_state<T> s = initial;
-  T sum = 0;
-  for (long k = 1; k <= steps; ++k) {
-    stepper.step(s, h);
-    const T d = distance(s.Q, exact.at(h * static_cast<T>(k)).Q);
-    const T de = abs(kinetic_energy(I, s.G) - e0) / e0, dg = abs(sqrt(dot(s.G, s.G)) - g0) / g0;
-    if (!isfinite(static_cast<double>(d)) || !isfinite(static_cast<double>(de))) {
-      p.finite = false;
-      p.failure = "not finite";
-      return p;
-    }
-    sum += d;
-    p.energy_error = std::max(p.energy_error, static_cast<double>(de));
-    p.momentum_error = std::max(p.momentum_error, static_cast<double>(dg));
+  integrate(method, s, h, steps, guard, error, drift);
+  p.energy_error = drift.energy_error();  // up to the last finite step
+  p.momentum_error = drift.momentum_error();
+  if (guard.stopped()) {
+    p.finite = false;
+    p.failure = "not finite";
+    return p;
   }
-  p.mean_error = static_cast<double>(sum / static_cast<T>(steps));
+  p.mean_error = static_cast<double>(error.mean());
   if (p.mean_error > threshold)
     p.failure = "mean attitude error above threshold";
   else if (p.energy_error > threshold)
@@ -72,7 +68,7 @@ template <class T>
 stability_scan_result stability_scan(const schemes::scheme_table& table, const vec3<T>& I, const body_state<T>& initial,
                                      const T& total_time, double h_min, int per_octave, double threshold) {
   if (!(h_min > 0) || !(total_time > 0) || per_octave < 1) throw std::invalid_argument("bad stability scan parameters");
-  const composition_stepper<T> stepper(table, I);
+  const auto method = free_body_method(table, I);
   const exact_free_body<T> exact(I, initial);
   stability_scan_result r;
   long previous = 0;
@@ -80,7 +76,7 @@ stability_scan_result stability_scan(const schemes::scheme_table& table, const v
     const long steps = std::max(1L, std::lround(static_cast<double>(total_time) / h));
     if (steps == previous) continue;
     previous = steps;
-    r.points.push_back(stability_run(stepper, I, initial, exact, total_time, steps, threshold));
+    r.points.push_back(stability_run(method, initial, exact, total_time, steps, threshold));
     const auto& p = r.points.back();
     if (!p.failure.empty() && r.failure.empty()) {
       r.failure = p.failure;

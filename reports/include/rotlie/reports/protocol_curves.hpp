@@ -38,6 +38,7 @@ class protocol_runner {
   scheme_curve best_permutation(const std::string& base_name) const;
 
  private:
+  std::string inertia_;  ///< the body's exact moments as text, read into each scalar once
   models::vec3<long double> I_;
   models::body_state<long double> initial_;
   models::exact_samples<long double> exact_;
