@@ -66,7 +66,7 @@ existing_map read_existing(const fs::path& path, const std::string& family, int 
   const std::string text = buffer.str();
   std::map<long, std::size_t> index_of;
   for (std::size_t k = 0; k < bodies.size(); ++k) index_of[static_cast<long>(bodies[k].i) * (K + 1) + bodies[k].j] = k;
-  const std::string refusal = "--resume: '" + reports::printable_path(path) + "' ";
+  const std::string refusal = "--resume: " + reports::printable_path(path) + " ";
   std::size_t at = 0;
   for (std::size_t line_number = 1;; ++line_number) {
     const auto end = text.find('\n', at);
@@ -199,14 +199,14 @@ prepared_map prepare(const map_options& o) {
   p.path = map_file(folder, p.family);
   const bool exists = fs::exists(p.path);
   if (exists && !o.resume)
-    throw usage_error("--out: '" + reports::printable_path(p.path) +
-                      "' exists: continue it with --resume, or choose another folder; it is left as it is");
+    throw usage_error("--out: " + reports::printable_path(p.path) +
+                      " exists: continue it with --resume, or choose another folder; it is left as it is");
   if (exists) p.existing = read_existing(p.path, p.family, p.K, p.bodies);
   fs::create_directories(folder);
   return p;
 }
 
-std::string summary(const prepared_map& p, double seconds, std::size_t computed) {
+std::string summary(const prepared_map& p, double seconds, std::size_t computed, int processes) {
   std::size_t bodies = 0, failed = 0, better = 0, with_ratio = 0, singular = 0;
   std::ifstream in(p.path);
   std::string line;
@@ -224,7 +224,8 @@ std::string summary(const prepared_map& p, double seconds, std::size_t computed)
   }
   std::ostringstream s;
   s << "map of family " << p.family << " at --grid " << p.K << ": " << bodies << " of " << p.bodies.size()
-    << " asymmetric bodies (" << computed << " computed now in " << duration_text(seconds) << ") in "
+    << " asymmetric bodies (" << computed << " computed now in " << duration_text(seconds) << " by " << processes
+    << (processes == 1 ? " process" : " processes") << ") in "
     << p.path.string() << "\n";
   if (with_ratio > 0)
     s << p.family << " better than " << solver::map_reference_scheme << " at equal cost (ratio > 1) at " << better << " of "
@@ -292,7 +293,7 @@ int run_rank0(const map_options& o, process_group& group) {
   if (!writer.complete()) throw std::runtime_error("a process of the MPI job did not deliver all its bodies");
   if (file) file->finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!o.json) std::cout << summary(p, seconds, todo.size());
+  if (!o.json) std::cout << summary(p, seconds, todo.size(), group.size());
   return 0;
 }
 
