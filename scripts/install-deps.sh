@@ -14,6 +14,7 @@ symbolic=(
   libeigen3-dev                  # solver/ (eigenvalues)
   libgsl-dev                     # bench/ only: GSL against Boost.Math for the exact flow (the libraries do not use it)
   libcli11-dev nlohmann-json3-dev # apps/rotlie, reports/
+  libopenmpi-dev openmpi-bin     # rotlie map over MPI ranks (optional: without them it runs as one process)
   libbenchmark-dev               # bench/
   gnuplot-nox                    # report figures
 )

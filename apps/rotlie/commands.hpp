@@ -70,3 +70,20 @@ struct exact_options {
 int run_exact(const exact_options& options);
 
 }  // namespace rotlie::app
+
+namespace rotlie::app {
+
+// Body-set maps (LV section 5) and the best integrator for one body.
+struct map_options {
+  std::string family, grid, out;
+  bool resume = false, json = false;
+};
+int run_map(const map_options& options);
+
+struct best_options {
+  std::string inertia;
+  bool json = false;
+};
+int run_best(const best_options& options);
+
+}  // namespace rotlie::app

@@ -164,6 +164,20 @@ int main(int argc, char** argv) {
   report_cmd->add_option("--sections", report.sections,
                          "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow");
 
+  // Body-set maps (LV section 5) and the best integrator for one body.
+  map_options map;
+  auto* map_cmd = app.add_subcommand("map", "Best integrator of a family over the set of rigid bodies (LV Figs. 7-10), one JSON line per body");
+  map_cmd->add_option("--family", map.family, "N, R or P")->required();
+  map_cmd->add_option("--grid", map.grid, "Divisions K of the triangle: (K+1)^2 grid points, 200 for the paper's 40,401")->required();
+  map_cmd->add_option("--out", map.out, "Folder of the map file map-<family>.jsonl (default rotlie-map; none with --json alone)");
+  map_cmd->add_flag("--resume", map.resume, "Continue the map file in --out where a killed run stopped");
+  map_cmd->add_flag("--json", map.json, "The body lines on stdout");
+  map_cmd->footer("Under mpirun (mpirun -n 4 rotlie map ...) the bodies are shared among the processes; the file is the same.");
+  best_options best;
+  auto* best_cmd = app.add_subcommand("best", "Best N, R and P integrators for one body, the best reference and the predicted gain");
+  best_cmd->add_option("--inertia", best.inertia, "I1,I2,I3 as exact numbers, or water")->required();
+  best_cmd->add_flag("--json", best.json, "Machine-readable output on stdout");
+
   // CLI11 would only say "a subcommand is required" for a mistyped one: name it instead.
   std::string names;
   const CLI::App* chosen = nullptr;
@@ -206,6 +220,8 @@ int main(int argc, char** argv) {
       return finished(run_exact(exact));
     }
     if (*report_cmd) return finished(run_report_command(report));  // checks and locks its folder itself
+    if (*map_cmd) return finished(run_map(map));  // checks its folder itself (on rank 0 only under MPI)
+    if (*best_cmd) return finished(run_best(best));
   } catch (const usage_error& e) {
     return fail(e.what(), exit_usage);
   } catch (const std::filesystem::filesystem_error& e) {

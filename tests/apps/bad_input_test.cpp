@@ -293,6 +293,26 @@ const std::vector<bad_input> cases = {
   {{"integrate", "--scheme", "@DIR@/garbled-body.scheme", "--inertia", "water", "--h", "1/64"}, usage, "inertia must be three positive numbers"},
   {{"integrate", "--scheme", "ABCBA2", "--inertia", "water", "--h", "1/64", "--force", "--force"}, usage, "--force is given more than once"},
 
+  // map and best (every case fails before any solving; a refused map file is left as it was: map_cli_test)
+  {{"map", "--grid", "4"}, usage, "--family is required"},
+  {{"map", "--family", "N"}, usage, "--grid is required"},
+  {{"map", "--family", "Q", "--grid", "4", "--json"}, usage, "--family must be N, R or P"},
+  {{"map", "--family", "N", "--grid", "0", "--json"}, usage, "--grid must be at least 1"},
+  {{"map", "--family", "N", "--grid", "-5", "--json"}, usage, "--grid must be at least 1"},
+  {{"map", "--family", "N", "--grid", "100000", "--json"}, usage, "--grid must be at most 2000"},
+  {{"map", "--family", "N", "--grid", "99999999999999999999", "--json"}, usage, "--grid must be at most"},
+  {{"map", "--family", "N", "--grid", "1e3", "--json"}, usage, "--grid"},
+  {{"map", "--family", "N", "--grid", "4", "--json", "--resume"}, usage, "--resume needs --out"},
+  {{"map", "--family", "N", "--grid", "4", "--out", "@DIR@/a-file"}, usage, "'@DIR@/a-file' exists and is not a folder"},
+  {{"map", "--family", "N", "--grid", "4", "--out", "/proc/rotlie-no-such-folder"}, usage, "cannot create '/proc/rotlie-no-such-folder'"},
+  {{"map", "--family", "N", "--grid", "4", "--out", "/dev/null/x"}, usage, "'/dev/null' is a file"},
+  {{"best"}, usage, "--inertia is required"},
+  {{"best", "--inertia", "1,2,4"}, usage, "triangle inequality"},
+  {{"best", "--inertia", "-1,1,1"}, usage, "not positive"},
+  {{"best", "--inertia", "sphere"}, usage, "symmetric top"},
+  {{"best", "--inertia", "1/2,3/4,3/4"}, usage, "symmetric top"},
+  {{"best", "--inertia", "nan,1,1"}, usage, "--inertia"},
+
   // order
   {{"order", "--scheme", "ABCBA2"}, usage, "--inertia is required"},
   {{"order", "--scheme", "ABCBA2", "--inertia", "water", "--scalar", "quad"}, usage, "--scalar must be double"},
@@ -355,7 +375,7 @@ BOOST_AUTO_TEST_CASE(every_bad_input_gets_one_line_and_its_status) {
   }
   BOOST_TEST(distinct.size() == cases.size(), "every case is distinct");
   BOOST_TEST(cases.size() >= 100u);
-  for (const auto* sub : {"dims", "stages", "remainder", "solve", "integrate", "order", "exact", "report"})
+  for (const auto* sub : {"dims", "stages", "remainder", "solve", "integrate", "order", "exact", "report", "map", "best"})
     BOOST_TEST(per_subcommand[sub] >= 5, sub << " has " << per_subcommand[sub] << " cases");
   for (const auto& [sub, n] : per_subcommand) BOOST_TEST_MESSAGE(sub << ": " << n << " bad inputs");
 }
