@@ -109,9 +109,23 @@ std::vector<quad> mclachlan_s5() {  // x1 y1 x2 y2 x3 y3 x3 y2 x2 y1 x1
   return mirror({x1, quad(2) / 5, x2, quad(-1) / 10, x3, quad(2) / 5}, true);
 }
 
+// van Zon & Schofield eq. (8), the PEFRL scheme of Omelyan, Mryglod & Folk (2002) with the kicks
+// (V) on ξ, χ, 1 − 2(χ + ξ) and the free flights (T) on (1 − 2λ)/2, λ. The three printed 16-digit
+// decimals are taken as exact; h4 = 1/2 − h2 as printed, and h5 = 1 − 2(h1 + h3), the corrected
+// form of the misprinted h − 2(h1 + h2) (REFERENCE.md §1.5, §6.1): only it makes Σ V = 1.
+std::vector<quad> pefrl_tv() {
+  const quad h1("0.1720865590295143"), h2("0.5915620307551568"), h3("-0.1616217622107222");
+  const quad h4 = quad(1) / 2 - h2, h5 = 1 - 2 * (h1 + h3);
+  return mirror({h1, h2, h3, h4, h5}, true);
+}
+
 scheme_table build(const std::string& name) {
   std::string word;
   std::vector<quad> c;
+  if (name == "Strang-TV") return make(name, split::tv, 2, "VTV", {0.5, 1, 0.5}, "generalised Verlet, van Zon & Schofield (2007) eq. (7)");
+  if (name == "PEFRL-TV")
+    return make(name, split::tv, 4, "VTVTVTVTV", pefrl_tv(),
+                "Omelyan, Mryglod & Folk (2002) PEFRL as van Zon & Schofield (2007) eq. (8), with h5 = 1 - 2(h1 + h3)");
   const std::string ss_source = "LV eq. (13) composition of ABCBA / RSR";
   if (name == "ABCBA2") return make(name, split::abc, 2, "ABCBA", {0.5, 0.5, 1, 0.5, 0.5}, "leapfrog, LV eqs. (13)-(15)");
   if (name == "RSR2") return make(name, split::rs, 2, "RSR", {0.5, 1, 0.5}, "leapfrog, LV eqs. (13)-(15)");
@@ -153,7 +167,15 @@ const std::vector<std::string>& reference_scheme_names() {
   return names;
 }
 
+const std::vector<std::string>& reference_tv_scheme_names() {
+  static const std::vector<std::string> names = {"Strang-TV", "PEFRL-TV"};
+  return names;
+}
+
 scheme_table permuted(scheme_table t, const std::string& permutation) {
+  if (t.splitting == split::tv)
+    throw std::invalid_argument(printable_text(t.name) + " is a TV table (free flight and kick): it takes no permutation, got '" +
+                                printable_text(permutation) + "'");
   static const std::vector<std::string> perms = {"ABC", "BCA", "CAB", "ACB", "CBA", "BAC"};
   if (std::find(perms.begin(), perms.end(), permutation) == perms.end())
     throw std::invalid_argument("unknown permutation '" + printable_text(permutation) + "' (ABC, BCA, CAB, ACB, CBA, BAC)");
@@ -169,7 +191,10 @@ scheme_table permuted(scheme_table t, const std::string& permutation) {
 std::optional<scheme_table> reference_scheme(std::string_view full) {
   const std::string name(full.substr(0, full.find(':')));
   const auto& names = reference_scheme_names();
-  if (std::find(names.begin(), names.end(), name) == names.end()) return std::nullopt;
+  const auto& tv_names = reference_tv_scheme_names();
+  if (std::find(names.begin(), names.end(), name) == names.end() &&
+      std::find(tv_names.begin(), tv_names.end(), name) == tv_names.end())
+    return std::nullopt;
   scheme_table t = build(name);
   check_scheme_table(t);
   if (const auto colon = full.find(':'); colon != std::string_view::npos) return permuted(std::move(t), std::string(full.substr(colon + 1)));

@@ -78,9 +78,30 @@ std::array<int, 3> rs_axes(const scheme_table& t) {
   return {axis_of_letter(t.permutation.at(0)), axis_of_letter(t.permutation.at(1)), axis_of_letter(t.permutation.at(2))};
 }
 
+std::string split_name(split s) {
+  switch (s) {
+    case split::abc: return "ABC";
+    case split::rs: return "RS";
+    case split::tv: return "TV";
+  }
+  return "?";
+}
+
+int force_evaluations(const scheme_table& t) {
+  int kicks = 0;
+  for (const auto& s : t.stages) kicks += s.part == 'V' ? 1 : 0;
+  const bool shared = t.stages.size() > 1 && t.stages.front().part == 'V' && t.stages.back().part == 'V';
+  return shared ? kicks - 1 : kicks;
+}
+
 int cost_in_rotations(const scheme_table& t) {
   const int n = static_cast<int>(t.stages.size());
-  return t.splitting == split::rs ? n + 1 : n;
+  switch (t.splitting) {
+    case split::abc: return n;
+    case split::rs: return n + 1;
+    case split::tv: return force_evaluations(t);
+  }
+  return n;
 }
 
 scheme_table parse_scheme_table(std::string_view text) {
@@ -108,7 +129,8 @@ scheme_table parse_scheme_table(std::string_view text) {
     } else if (key == "split") {
       if (rest == "ABC") t.splitting = split::abc;
       else if (rest == "RS") t.splitting = split::rs;
-      else fail(number, "split must be ABC or RS, got '" + printable_text(rest) + "'");
+      else if (rest == "TV") t.splitting = split::tv;
+      else fail(number, "split must be ABC, RS or TV, got '" + printable_text(rest) + "'");
     } else if (key == "word") {
       t.word = rest;
     } else if (key == "permutation") {
@@ -152,7 +174,7 @@ std::string format_scheme_table(const scheme_table& t) {
   std::ostringstream out;
   out << "format_version 1\n";
   if (!t.name.empty()) out << "name " << t.name << "\n";
-  out << "split " << (t.splitting == split::abc ? "ABC" : "RS") << "\n"
+  out << "split " << split_name(t.splitting) << "\n"
       << "word " << t.word << "\n"
       << "permutation " << t.permutation << "\n"
       << "order " << t.order << "\n"
@@ -165,7 +187,7 @@ std::string format_scheme_table(const scheme_table& t) {
 }
 
 void check_scheme_table(const scheme_table& t) {
-  const std::string letters = t.splitting == split::abc ? "ABC" : "RS";
+  const std::string letters = t.splitting == split::abc ? "ABC" : t.splitting == split::rs ? "RS" : "TV";
   const std::string name = printable_text(t.name);
   if (t.stages.empty()) throw std::invalid_argument("scheme table " + name + ": no stages");
   if (t.word.size() != t.stages.size())
@@ -174,6 +196,9 @@ void check_scheme_table(const scheme_table& t) {
   static const std::vector<std::string> perms = {"ABC", "BCA", "CAB", "ACB", "CBA", "BAC"};
   if (std::find(perms.begin(), perms.end(), t.permutation) == perms.end())
     throw std::invalid_argument("scheme table " + name + ": unknown permutation '" + printable_text(t.permutation) + "'");
+  if (t.splitting == split::tv && t.permutation != "ABC")
+    throw std::invalid_argument("scheme table " + name + ": a TV table (free flight and kick) has no body axes to permute, got '" +
+                                printable_text(t.permutation) + "'");
   std::map<char, long double> sum, size;
   std::map<char, int> count;
   std::vector<long double> value(t.stages.size());

@@ -3,6 +3,7 @@
 // rotations about the (permuted) body axes, RS tables bind R and S to the rotations of eqs. (8)–(9),
 // with the G²/(2I_m) parts of S gathered into one rotation about G per step (section 3.1.2).
 #include <optional>
+#include <stdexcept>
 
 #include "rotlie/models/composition.hpp"
 #include "rotlie/models/sub_flows.hpp"
@@ -23,7 +24,12 @@ class free_rigid_body {
 
   const vec3<T>& moments() const { return I_; }
 
-  void check(const schemes::scheme_table&) const {}  // the loader has checked the letters of the split
+  /// The loader has checked the letters of the split; a TV table is for a body under torques.
+  void check(const schemes::scheme_table& table) const {
+    if (table.splitting == schemes::split::tv)
+      throw std::invalid_argument("scheme table " + schemes::printable_text(table.name) +
+                                  " splits free flight and kick (TV): the free rotation needs an ABC or RS table");
+  }
 
   stage bind(const schemes::stage& s, const schemes::scheme_table& table) const {
     const T c = parse_scalar<T>(s.value);

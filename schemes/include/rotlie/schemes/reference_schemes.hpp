@@ -1,7 +1,8 @@
 #pragma once
 // The reference schemes of the literature as scheme tables (REFERENCE.md §1, LV section 4):
 // leapfrog, Yoshida SS3, Suzuki SS5, McLachlan SS5 (compositions of ABCBA or RSR), and McLachlan's
-// type-S S4 and S5 (RS directly; ABC through the adjoint-composition construction).
+// type-S S4 and S5 (RS directly; ABC through the adjoint-composition construction); and the two
+// splittings of a body under torques into free flight T and kick V (van Zon & Schofield eqs. 7–8).
 #include <optional>
 #include <string>
 #include <string_view>
@@ -11,15 +12,20 @@
 
 namespace rotlie::schemes {
 
-/// All base names: ABCBA2, RSR2, ABCBA4-SS3-Yoshida, …, RS4-S5-McLachlan.
+/// The free-rotation base names (ABC and RS tables): ABCBA2, RSR2, ABCBA4-SS3-Yoshida, …, RS4-S5-McLachlan.
 const std::vector<std::string>& reference_scheme_names();
 
-/// A reference scheme by name, optionally with a permutation suffix (RS4-S5-McLachlan:CBA);
-/// nullopt for an unknown name. Throws std::invalid_argument for an unknown permutation.
+/// The TV base names (free flight T, kick V): Strang-TV, PEFRL-TV.
+const std::vector<std::string>& reference_tv_scheme_names();
+
+/// A reference scheme by name (either list), optionally with a permutation suffix
+/// (RS4-S5-McLachlan:CBA); nullopt for an unknown name. Throws std::invalid_argument for an
+/// unknown permutation, and for any permutation of a TV table.
 std::optional<scheme_table> reference_scheme(std::string_view name);
 
 /// Substitutes the letters of an ABC table (A → perm[0], B → perm[1], C → perm[2]); for an RS
-/// table records which axes play R and S. Throws std::invalid_argument for an unknown permutation.
+/// table records which axes play R and S. Throws std::invalid_argument for an unknown permutation
+/// and for a TV table, whose letters name no body axes.
 scheme_table permuted(scheme_table t, const std::string& permutation);
 
 }  // namespace rotlie::schemes

@@ -9,10 +9,15 @@
 
 namespace rotlie::schemes {
 
-enum class split { abc, rs };
+/// abc, rs: the free rigid body (LV sections 2–3); tv: a body under forces and torques, T = free
+/// flight (translation and free rotation), V = kick by the forces and torques (vZS eqs. 5–6).
+enum class split { abc, rs, tv };
+
+/// The split's name in the table text: ABC, RS or TV.
+std::string split_name(split s);
 
 struct stage {
-  char part = 'A';        ///< A, B, C (ABC splitting, letters already permuted) or R, S
+  char part = 'A';        ///< A, B, C (ABC splitting, letters already permuted), R, S, or T, V
   std::string name;       ///< a1, b1, … (informative)
   std::string value;      ///< decimal text, ≥ 40 digits for solver tables
   friend bool operator==(const stage&, const stage&) = default;
@@ -22,7 +27,7 @@ struct scheme_table {
   std::string name;                  ///< e.g. N2:BAC:2 or RS4-S5-McLachlan:CBA
   split splitting = split::abc;
   std::string word;                  ///< stage letters in time order
-  std::string permutation = "ABC";   ///< RS: which body axes play 1 (R), 2 (subtracted), 3 (S)
+  std::string permutation = "ABC";   ///< RS: which body axes play 1 (R), 2 (subtracted), 3 (S); TV: always ABC
   int order = 2;                     ///< declared order
   bool symmetric = true;
   std::string inertia;               ///< the body a dedicated scheme was solved for ("" for reference schemes)
@@ -39,7 +44,7 @@ scheme_table parse_scheme_table(std::string_view text);
 /// parser skips, such as digits or residual, are not written).
 std::string format_scheme_table(const scheme_table& t);
 
-/// The loader's contract: a known split, letters of that split, every part acting, stage values
+/// The loader's contract: a known split (a TV table keeps the permutation ABC), letters of that split, every part acting, stage values
 /// finite decimals, Σ of each part's n coefficients c = 1 to n·ε·Σ|c| (ε = DBL_EPSILON, in long
 /// double: what a double integrator resolves), and the palindrome to ε·(|c_i| + |c_j|) when the
 /// table says symmetric. Throws std::invalid_argument with a one-line reason.
@@ -55,8 +60,13 @@ int axis_of_letter(char letter);
 /// For an RS table: the body axes playing roles 1 (R), 2 (the moment subtracted) and 3 (S).
 std::array<int, 3> rs_axes(const scheme_table& t);
 
-/// Rotations about principal axes per step (section 4.1): ABC N stages cost N·C0; RS N stages
-/// cost (N + 1)·C0, the rotations about the angular momentum being gathered into one.
+/// Force evaluations f per step of a TV table: its V stages, less one when the first and the last
+/// stage are both V (the last kick's forces are the next step's first: first-same-as-last).
+int force_evaluations(const scheme_table& t);
+
+/// The cost of one step in the split's unit. ABC, RS: rotations about principal axes (LV section
+/// 4.1): ABC N stages cost N·C0; RS N stages cost (N + 1)·C0, the rotations about the angular
+/// momentum being gathered into one. TV: the force evaluations f (force_evaluations).
 int cost_in_rotations(const scheme_table& t);
 
 }  // namespace rotlie::schemes

@@ -1,0 +1,50 @@
+#pragma once
+// The state of N rigid bodies under forces and torques (van Zon & Schofield section III): per body
+// the centre q, momentum p and the rotation (Q body → lab, body angular momentum G = Qᵀ L), plus
+// the forces at the current configuration, cached between one step's last kick and the next
+// step's first (first-same-as-last). Units: real_units.hpp.
+#include <vector>
+
+#include "rotlie/models/rigid_body.hpp"
+
+namespace rotlie::models {
+
+template <class T>
+struct rigid_body_state {
+  vec3<T> q{}, p{};
+  body_state<T> rot;  ///< (Q, G)
+};
+
+template <class T>
+struct rigid_bodies_state {
+  std::vector<rigid_body_state<T>> bodies;
+  // forces at the current configuration (valid while forces_current)
+  std::vector<vec3<T>> force, torque;  ///< lab force (kcal/mol/Å), lab torque about the centre (kcal/mol)
+  T potential{};                       ///< V at the current configuration (kcal/mol)
+  bool forces_current = false;
+  long force_evaluations = 0;
+};
+
+template <class T>
+vec3<T> cross(const vec3<T>& a, const vec3<T>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+/// Lab angular momentum of one body about its centre: L = Q G.
+template <class T>
+vec3<T> lab_spin(const rigid_body_state<T>& b) {
+  return b.rot.Q * b.rot.G;
+}
+
+/// Total lab angular momentum Σ (q × p + Q G).
+template <class T>
+vec3<T> total_angular_momentum(const rigid_bodies_state<T>& s) {
+  vec3<T> L{};
+  for (const auto& b : s.bodies) {
+    const vec3<T> orbit = cross(b.q, b.p), spin = lab_spin(b);
+    for (std::size_t i = 0; i < 3; ++i) L[i] += orbit[i] + spin[i];
+  }
+  return L;
+}
+
+}  // namespace rotlie::models
