@@ -19,6 +19,10 @@
 
 namespace rotlie::models {
 
+/// The command line's defaults (chosen so that the error bars are like the paper's; see the report).
+inline constexpr double dipole_field_default_T_ps = 100;
+inline constexpr long dipole_field_default_runs = 50;
+
 struct dipole_field_result {
   int f = 0;
   long steps = 0;
