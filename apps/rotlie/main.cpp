@@ -179,7 +179,7 @@ int main(int argc, char** argv) {
   report_cmd->add_option("--out", report.out, "Output folder (default: rotlie-report)");
   report_cmd->add_flag("--quick", report.quick, "Smaller sweeps, for a fast look");
   report_cmd->add_option("--sections", report.sections,
-                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow");
+                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs");
 
   // CLI11 would only say "a subcommand is required" for a mistyped one: name it instead.
   std::string names;
