@@ -22,8 +22,8 @@ namespace {
 
 using quad = boost::multiprecision::float128;
 
-// The run sizes of the section (default about 2 minutes on one core with the exact flow as of this
-// writing; --quick about a quarter).
+// The run sizes of the section (default about 65 s of CPU with the exact flow as of this writing,
+// --quick about 10 s).
 struct budget {
   long tau_runs;
   double tau_T_ps;
@@ -349,7 +349,7 @@ report_section vzs_section(const report_options& options) {
         "(ABCBA2:ABC, full step on the slowest axis); SEJ4, a labelled reconstruction (the paper was not seen: "
         "exact elliptic momentum, 2-point Gauss–Legendre Magnus attitude); and SIER2 with the free rotation done by "
         "LV's dedicated compositions and two reference 4th-order schemes. Budget: "
-     << (options.quick ? "`--quick`, about 40 s" : "about 2 minutes on one core (default)")
+     << (options.quick ? "`--quick`, about 10 s of CPU" : "about 65 s of CPU on one core (default; 2.5 min wall on a busy machine)")
      << "; `rotlie report` has no `--full` option: the larger ensembles are a matter of `rotlie md --runs`.\n\n";
   w.progress("solving the dedicated rotors for water");
   const dedicated_rotors dedicated;
