@@ -85,5 +85,11 @@ struct best_options {
   bool json = false;
 };
 int run_best(const best_options& options);
+/// `rotlie md`: empty T and runs take the scene's defaults.
+struct md_options {
+  std::string scene, integrator, h, T, runs, seed = "1", scalar = "double", dipole = "1.84", field = "2.7";
+  bool json = false;
+};
+int run_md(const md_options& options);
 
 }  // namespace rotlie::app

@@ -59,7 +59,7 @@ std::string reworded(const CLI::ParseError& e, const CLI::App* sub) {
     return flag + " takes no value" + (equals == std::string::npos ? "" : ", got '" + what.substr(equals + 3) + "'");
   }
   if (dynamic_cast<const CLI::RequiredError*>(&e) && what.find("subcommand") != std::string::npos)
-    return "a subcommand is required (dims, stages, remainder, solve, integrate, order, exact or report; see rotlie --help)";
+    return "a subcommand is required (dims, stages, remainder, solve, integrate, order, exact, md or report; see rotlie --help)";
   return what;
 }
 
@@ -157,12 +157,29 @@ int main(int argc, char** argv) {
   exact_cmd->add_option("--G0", exact.G0, "Initial body angular momentum (default 1,1,1)");
   exact_cmd->add_flag("--json", exact.json, "Machine-readable output on stdout");
 
+  md_options md;
+  auto* md_cmd = app.add_subcommand("md", "van Zon & Schofield's scenes: free water (orientation error time tau) and a "
+                                          "dipole in a field (Table I), any integrator");
+  md_cmd->add_option("--scene", md.scene, "free-water or dipole-field")->required();
+  md_cmd->add_option("--integrator", md.integrator,
+                     "SIER2, SIER4, MRDL, SEJ4 (a reconstruction), or SIER2/X, SIER4/X with the free rotation by scheme X "
+                     "(RS4-S5-McLachlan:CBA, or SCHEME:PERM:LABEL such as P1:BAC:5 solved for the water molecule)")
+      ->required();
+  md_cmd->add_option("--h", md.h, "The step h in fs (the step itself: SIER4 at h/f = 4.2 fs is --h 16.8)")->required();
+  md_cmd->add_option("--T", md.T, "Simulated time per run in ps, rounded to whole steps (default: 5 for free-water, 100 for dipole-field)");
+  md_cmd->add_option("--runs", md.runs, "Ensemble size (default: 100 for free-water, 50 for dipole-field)");
+  md_cmd->add_option("--seed", md.seed, "Seed of the canonical initial conditions (default 1; the same seed, the same numbers)");
+  md_cmd->add_option("--scalar", md.scalar, "double, long-double or float128 (default double)");
+  md_cmd->add_option("--dipole", md.dipole, "dipole-field: the dipole in debye (default 1.84)");
+  md_cmd->add_option("--field", md.field, "dipole-field: the field along z in MV/m (default 2.7)");
+  md_cmd->add_flag("--json", md.json, "Machine-readable output on stdout");
+
   report_command_options report;
   auto* report_cmd = app.add_subcommand("report", "Regenerate every table and figure into one folder");
   report_cmd->add_option("--out", report.out, "Output folder (default: rotlie-report)");
   report_cmd->add_flag("--quick", report.quick, "Smaller sweeps, for a fast look");
   report_cmd->add_option("--sections", report.sections,
-                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow");
+                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs");
 
   // Body-set maps (LV section 5) and the best integrator for one body.
   map_options map;
@@ -219,6 +236,7 @@ int main(int argc, char** argv) {
       check_numeric_scales(exact.inertia, exact.G0, exact.T);
       return finished(run_exact(exact));
     }
+    if (*md_cmd) return finished(run_md(md));
     if (*report_cmd) return finished(run_report_command(report));  // checks and locks its folder itself
     if (*map_cmd) return finished(run_map(map));  // checks its folder itself (on rank 0 only under MPI)
     if (*best_cmd) return finished(run_best(best));

@@ -7,6 +7,7 @@
 
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report_folder.hpp"
+#include "rotlie/reports/vzs_section.hpp"
 
 namespace rotlie::reports {
 namespace {
@@ -16,7 +17,8 @@ using section_function = report_section (*)(const report_options&);
 const std::vector<std::pair<std::string, section_function>>& all_sections() {
   static const std::vector<std::pair<std::string, section_function>> sections{
       {"lie-algebra", lie_algebra_section}, {"remainders", remainder_section}, {"dedicated", dedicated_section},
-      {"accuracy", accuracy_section},       {"stability", stability_section},  {"exact-flow", exact_flow_section}};
+      {"accuracy", accuracy_section},       {"stability", stability_section},  {"exact-flow", exact_flow_section},
+      {"vzs", vzs_section}};
   return sections;
 }
 
