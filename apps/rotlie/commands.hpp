@@ -70,3 +70,13 @@ struct exact_options {
 int run_exact(const exact_options& options);
 
 }  // namespace rotlie::app
+
+namespace rotlie::app {
+
+struct bch_options {
+  std::string series, degree, threads = "1";
+  bool json = false;
+};
+int run_bch(const bch_options& options);
+
+}  // namespace rotlie::app
