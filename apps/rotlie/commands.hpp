@@ -91,5 +91,10 @@ struct md_options {
   bool json = false;
 };
 int run_md(const md_options& options);
+struct bch_options {
+  std::string series, degree, threads = "1";
+  bool json = false;
+};
+int run_bch(const bch_options& options);
 
 }  // namespace rotlie::app

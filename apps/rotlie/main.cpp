@@ -59,7 +59,7 @@ std::string reworded(const CLI::ParseError& e, const CLI::App* sub) {
     return flag + " takes no value" + (equals == std::string::npos ? "" : ", got '" + what.substr(equals + 3) + "'");
   }
   if (dynamic_cast<const CLI::RequiredError*>(&e) && what.find("subcommand") != std::string::npos)
-    return "a subcommand is required (dims, stages, remainder, solve, integrate, order, exact, md or report; see rotlie --help)";
+    return "a subcommand is required (dims, stages, remainder, solve, integrate, order, exact, md, map, best, bch or report; see rotlie --help)";
   return what;
 }
 
@@ -195,6 +195,14 @@ int main(int argc, char** argv) {
   best_cmd->add_option("--inertia", best.inertia, "I1,I2,I3 as exact numbers, or water")->required();
   best_cmd->add_flag("--json", best.json, "Machine-readable output on stdout");
 
+  bch_options bch;
+  auto* bch_cmd = app.add_subcommand("bch", "A BCH-type series in the free Lie algebra, exact, in the Lyndon basis");
+  bch_cmd->add_option("--series", bch.series, "XY log(e^X e^Y), XYX log(e^X e^Y e^X), SYM log(e^{X/2} e^Y e^{X/2}), XYZ log(e^X e^Y e^Z)")
+      ->required();
+  bch_cmd->add_option("--degree", bch.degree, "Highest degree (1 to 20; 1 to 14 for XYZ)")->required();
+  bch_cmd->add_option("--threads", bch.threads, "Worker threads (1 to 64, default 1)");
+  bch_cmd->add_flag("--json", bch.json, "Machine-readable output on stdout");
+
   // CLI11 would only say "a subcommand is required" for a mistyped one: name it instead.
   std::string names;
   const CLI::App* chosen = nullptr;
@@ -240,6 +248,7 @@ int main(int argc, char** argv) {
     if (*report_cmd) return finished(run_report_command(report));  // checks and locks its folder itself
     if (*map_cmd) return finished(run_map(map));  // checks its folder itself (on rank 0 only under MPI)
     if (*best_cmd) return finished(run_best(best));
+    if (*bch_cmd) return finished(run_bch(bch));
   } catch (const usage_error& e) {
     return fail(e.what(), exit_usage);
   } catch (const std::filesystem::filesystem_error& e) {

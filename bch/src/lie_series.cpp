@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "rotlie/bch/free_bch.hpp"
+
 namespace rotlie::bch {
 
 std::size_t lie_series::nonzero_at_degree(int d) const {
@@ -60,16 +62,18 @@ lie_series lyndon_coordinates(const word_series& z, int letters) {
   return s;
 }
 
-lie_series bch_series(int max_degree) {
-  if (max_degree < 1 || max_degree > max_bch_degree)
-    throw std::invalid_argument("the BCH degree must be between 1 and " + std::to_string(max_bch_degree));
+lie_series bch_series(int max_degree) { return to_lie_series(compute_free_series(free_series::xy, max_degree)); }
+
+lie_series symmetric_bch_series(int max_degree) { return to_lie_series(compute_free_series(free_series::xyx, max_degree)); }
+
+lie_series bch_series_by_words(int max_degree) {
+  if (max_degree < 1) throw std::invalid_argument("the BCH degree must be at least 1");
   const auto product = word_series::exp_of_letter(0, max_degree) * word_series::exp_of_letter(1, max_degree);
   return lyndon_coordinates(log(product), 2);
 }
 
-lie_series symmetric_bch_series(int max_degree) {
-  if (max_degree < 1 || max_degree > max_bch_degree)
-    throw std::invalid_argument("the BCH degree must be between 1 and " + std::to_string(max_bch_degree));
+lie_series symmetric_bch_series_by_words(int max_degree) {
+  if (max_degree < 1) throw std::invalid_argument("the BCH degree must be at least 1");
   const auto ex = word_series::exp_of_letter(0, max_degree);
   const auto product = ex * word_series::exp_of_letter(1, max_degree) * ex;
   return lyndon_coordinates(log(product), 2);

@@ -34,13 +34,18 @@ word_series lyndon_bracket_expansion(const word& w);
 /// if z is not a Lie element (the residual does not vanish), which checks the computation.
 lie_series lyndon_coordinates(const word_series& z, int letters);
 
-/// The degree above which the series take long: 12 for the BCH series (about a second).
-inline constexpr int max_bch_degree = 14;
+/// Highest degree of bch_series and symmetric_bch_series (free_bch.hpp: max_series_degree).
+inline constexpr int max_bch_degree = 20;
 
-/// log(e^X e^Y) with X = letter 0 (A), Y = letter 1 (B), degrees 1 … max_degree.
+/// log(e^X e^Y) with X = letter 0 (A), Y = letter 1 (B), degrees 1 … max_degree (free_bch.hpp).
 lie_series bch_series(int max_degree);
 
-/// log(e^X e^Y e^X), which has only odd degrees.
+/// log(e^X e^Y e^X), which has only odd degrees (free_bch.hpp).
 lie_series symmetric_bch_series(int max_degree);
+
+/// The same two series by the logarithm in the free associative algebra projected with
+/// lyndon_coordinates: slow (degree ≤ 12 or so), kept as an independent second method.
+lie_series bch_series_by_words(int max_degree);
+lie_series symmetric_bch_series_by_words(int max_degree);
 
 }  // namespace rotlie::bch
