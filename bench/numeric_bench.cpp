@@ -1,6 +1,7 @@
 // The numeric core's unit costs in double: one rotation about a principal axis (a stage), one
 // rotation about G, a whole step of the water schemes, the exact flow (construction and
-// evaluation, ordinary and near the separatrix), and the exact flow's special functions from
+// evaluation, ordinary and near the separatrix; its parts one by one; exact_free_rotation::advance
+// against an exact_free_body per step, in stages of this run), and the exact flow's special functions from
 // Boost.Math, GSL and models/complementary_elliptic.hpp, with their accuracy against float128
 // printed before the timings.
 #include <benchmark/benchmark.h>
@@ -8,7 +9,10 @@
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <boost/multiprecision/float128.hpp>
 
+#include <ctime>
 #include <cstdio>
+#include <random>
+#include <vector>
 
 #ifdef ROTLIE_BENCH_GSL
 #include <gsl/gsl_errno.h>
@@ -18,6 +22,7 @@
 
 #include "rotlie/models/composition_stepper.hpp"
 #include "rotlie/models/exact_free_body.hpp"
+#include "rotlie/models/exact_free_rotation.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 
 namespace {
@@ -32,14 +37,59 @@ models::body_state<double> start(double d = -1) {
   return s;
 }
 
+// One rotation stage (rotate_about_axis), the unit of cost of this file: seconds per stage as last
+// measured by rotation_about_principal_axis in this run (or by a short loop when that was filtered out).
+double stage_seconds = 0;
+
+void rotation_stages(models::body_state<double>& s, long count) {
+  int k = 0;
+  for (long i = 0; i < count; ++i) {
+    models::rotate_about_axis(s, k, 1 / water[static_cast<std::size_t>(k)], 1e-3);
+    k = k == 2 ? 0 : k + 1;
+    benchmark::DoNotOptimize(s);
+  }
+}
+
+// CPU time of this thread, as Google Benchmark's rates use (wall time counts other processes' load)
+double thread_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+double seconds_per_stage() {
+  if (stage_seconds == 0) {
+    auto s = start();
+    constexpr long count = 4000000;
+    const double t0 = thread_seconds();
+    rotation_stages(s, count);
+    stage_seconds = (thread_seconds() - t0) / count;
+  }
+  return stage_seconds;
+}
+
+// counter "stages": CPU time per iteration in rotation stages (start it just before the loop)
+class stage_meter {
+ public:
+  stage_meter() : stage_(seconds_per_stage()), start_(thread_seconds()) {}
+  double stages(const benchmark::State& state) const {
+    return (thread_seconds() - start_) / static_cast<double>(state.iterations()) / stage_;
+  }
+
+ private:
+  double stage_, start_;
+};
+
 void rotation_about_principal_axis(benchmark::State& state) {
   auto s = start();
   int k = 0;
+  const double t0 = thread_seconds();
   for (auto _ : state) {
     models::rotate_about_axis(s, k, 1 / water[static_cast<std::size_t>(k)], 1e-3);
     k = k == 2 ? 0 : k + 1;
     benchmark::DoNotOptimize(s);
   }
+  stage_seconds = (thread_seconds() - t0) / static_cast<double>(state.iterations());
   state.counters["ns_per_rotation"] = benchmark::Counter(static_cast<double>(state.iterations()),
                                                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
@@ -91,6 +141,55 @@ void exact_flow_construction_and_evaluation(benchmark::State& state, double d) {
   }
 }
 
+// One free flight as SIER2/SIER4 take it: the same body state advanced step after step by t (here
+// |ω| t ≈ 0.1 rad, about h = 8 fs for water at 297 K), before (an exact_free_body built and evaluated
+// per call) and after (exact_free_rotation::advance, the body's constants kept).
+// d < 0: G = (1, 1, 1); otherwise G = (d, 1, d), near the middle axis.
+void exact_free_rotation_old_path(benchmark::State& state, double d) {
+  auto s = start(d);
+  const double t = 0.02;
+  const stage_meter meter;
+  for (auto _ : state) {
+    s = models::exact_free_body<double>(water, s).evaluate(t).state;
+    benchmark::DoNotOptimize(s);
+  }
+  state.counters["stages"] = meter.stages(state);
+}
+
+void exact_free_rotation_advance(benchmark::State& state, double d) {
+  auto s = start(d);
+  const models::exact_free_rotation<double> rotor(water);
+  const double t = 0.02;
+  const stage_meter meter;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(rotor.advance(s, t));
+    benchmark::DoNotOptimize(s);
+  }
+  state.counters["stages"] = meter.stages(state);
+}
+
+// Canonical momenta of water (components ~ N(0, I_k)): a new state at every call, as after a kick.
+void exact_free_rotation_advance_canonical(benchmark::State& state, bool old_path) {
+  std::mt19937_64 rng(12);
+  std::normal_distribution<double> normal(0, 1);
+  std::vector<models::body_state<double>> states(1024);
+  for (auto& s : states)
+    for (std::size_t k = 0; k < 3; ++k) s.G[k] = std::sqrt(water[k]) * normal(rng);
+  const models::exact_free_rotation<double> rotor(water);
+  const double t = 0.05;  // |ω| t ≈ 0.1 rad on average
+  std::size_t i = 0;
+  const stage_meter meter;
+  for (auto _ : state) {
+    auto& s = states[i++ & 1023];
+    if (old_path)
+      s = models::exact_free_body<double>(water, s).evaluate(t).state;
+    else
+      benchmark::DoNotOptimize(rotor.advance(s, t));
+    benchmark::DoNotOptimize(s);
+  }
+  state.counters["stages"] = meter.stages(state);
+}
+
 // The float128 path: what an evaluation costs when the estimate asks for it (long times).
 void exact_flow_float128_evaluation(benchmark::State& state) {
   const models::exact_free_body<double> exact(water, start());
@@ -98,6 +197,76 @@ void exact_flow_float128_evaluation(benchmark::State& state) {
   for (auto _ : state) {
     benchmark::DoNotOptimize(exact.at(t));
     t += 0.37;
+  }
+}
+
+// ---- the exact flow's parts, one at a time, at the water state G = (1, 1, 1) (where the time goes)
+struct water_flow_point {
+  double m, mc, n, K;
+};
+water_flow_point water_point() {
+  const models::detail::free_body_motion<double> core(water, start().G, models::mat3<double>::identity());
+  return {core.parameter(), core.complementary_parameter(), core.n(), core.quarter_period()};
+}
+void exact_part_energy_difference(benchmark::State& state) {
+  auto G = start().G;
+  bool inexact = false;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(G);
+    benchmark::DoNotOptimize(models::detail::middle_energy_difference<double>(water, G, 0, 1, 2, inexact));
+  }
+}
+void exact_part_complete_first_kind(benchmark::State& state) {
+  double mc = water_point().mc;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(mc);
+    benchmark::DoNotOptimize(models::elliptic::complete_first_kind(mc));
+  }
+}
+void exact_part_complete_third_kind(benchmark::State& state) {  // D(K) = n/3 R_J(0, m_c, 1, 1 − n)
+  const auto p = water_point();
+  double mc = p.mc;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(mc);
+    benchmark::DoNotOptimize(p.n / 3 * boost::math::ellint_rj(0.0, mc, 1.0, 1 - p.n, models::elliptic::policy()));
+  }
+}
+void exact_part_initial_phase(benchmark::State& state) {  // u₀ = s R_F(c², c² + m_c s², 1)
+  const auto p = water_point();
+  double s = 0.6, c = 0.8;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(s);
+    benchmark::DoNotOptimize(s * boost::math::ellint_rf(c * c, c * c + p.mc * s * s, 1.0, models::elliptic::policy()));
+  }
+}
+void exact_part_jacobi(benchmark::State& state, double u) {
+  const auto p = water_point();
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(u);
+    benchmark::DoNotOptimize(models::elliptic::jacobi_functions(u, p.m, p.mc));
+  }
+}
+void exact_part_third_minus_first(benchmark::State& state, double u) {  // Π − F at u: one R_J
+  const auto p = water_point();
+  const auto j = models::elliptic::jacobi_functions(u, p.m, p.mc);
+  auto jj = j;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(jj);
+    benchmark::DoNotOptimize(models::elliptic::third_minus_first(jj, p.n, 1 - p.n * jj.sn * jj.sn));
+  }
+}
+void exact_part_sincos(benchmark::State& state) {
+  double x = 0.3;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(x);
+    benchmark::DoNotOptimize(std::cos(x) + std::sin(x));
+  }
+}
+void exact_part_attitude(benchmark::State& state) {  // three 3×3 products and a transpose, as in at()
+  models::mat3<double> a = models::mat3<double>::identity(), b = a, c = a;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(a);
+    benchmark::DoNotOptimize(transpose(c * (a * b)) * a);
   }
 }
 
@@ -209,6 +378,22 @@ BENCHMARK_CAPTURE(exact_flow_construction, middle_axis_1e_10, 1e-10);
 BENCHMARK_CAPTURE(exact_flow_construction_and_evaluation, water, -1.0);
 BENCHMARK_CAPTURE(exact_flow_construction_and_evaluation, middle_axis_1e_10, 1e-10);
 BENCHMARK(exact_flow_float128_evaluation);
+BENCHMARK_CAPTURE(exact_free_rotation_old_path, water, -1.0);
+BENCHMARK_CAPTURE(exact_free_rotation_advance, water, -1.0);
+BENCHMARK_CAPTURE(exact_free_rotation_old_path, middle_axis_1e_10, 1e-10);
+BENCHMARK_CAPTURE(exact_free_rotation_advance, middle_axis_1e_10, 1e-10);
+BENCHMARK_CAPTURE(exact_free_rotation_advance_canonical, old_path, true);
+BENCHMARK_CAPTURE(exact_free_rotation_advance_canonical, advance, false);
+BENCHMARK(exact_part_energy_difference);
+BENCHMARK(exact_part_complete_first_kind);
+BENCHMARK(exact_part_complete_third_kind);
+BENCHMARK(exact_part_initial_phase);
+BENCHMARK_CAPTURE(exact_part_jacobi, u_0_3, 0.3);
+BENCHMARK_CAPTURE(exact_part_jacobi, u_1_0, 1.0);
+BENCHMARK_CAPTURE(exact_part_third_minus_first, u_0_3, 0.3);
+BENCHMARK_CAPTURE(exact_part_third_minus_first, u_1_0, 1.0);
+BENCHMARK(exact_part_sincos);
+BENCHMARK(exact_part_attitude);
 BENCHMARK_CAPTURE(jacobi_complementary, ordinary, ordinary);
 BENCHMARK_CAPTURE(jacobi_complementary, near_one, near_one);
 BENCHMARK_CAPTURE(jacobi_boost, ordinary, ordinary);

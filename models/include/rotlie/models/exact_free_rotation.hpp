@@ -2,30 +2,243 @@
 // The exact free rotation as a step: advance(state, t) takes a body from its state now to its state
 // a time t later, keeping the body's constants between calls (one call per body per free flight).
 // The free flight of SIER2/SIER4 (van Zon & Schofield eq. 5b) and the reference of the free-water scene.
+//
+// A step does not need what exact_free_body builds for a whole trajectory. The state itself gives
+// sn, cn, dn at the initial phase u₀ (they are L_y/L_ym, L_x/L_xm, L_z/L_zm), so u₀ is never formed
+// (no R_F), nor K, nor the complete integral of the third kind, nor the functions at u₀: the functions
+// at u₀ + v (v = ω_p t) come from those at v by the addition theorem, and the elliptic part of ψ from
+// D(v) plus the addition term of the third kind (complementary_elliptic.hpp). What remains per step:
+// D_y, one sn cn dn and one R_J at v, an atan, sin and cos of ψ, two frames and a 3×3 product.
+// The regimes this step does not take (spherical and steady bodies, the separatrix m_c = 0, a wobble or
+// an energy difference at the underflow threshold, |v| > π/4, an estimate above the accuracy, bad
+// input, times near the 2^60 rad limit) go to exact_free_body unchanged, with its float128 redo.
+#include <boost/math/constants/constants.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "rotlie/models/complementary_elliptic.hpp"
+#include "rotlie/models/exact_energy_difference.hpp"
 #include "rotlie/models/exact_free_body.hpp"
 
 namespace rotlie::models {
 
+namespace detail {
+
+/// The body's constants for a step of the closed form, and the step in the common regime.
+template <class S>
+class free_flight_step {
+ public:
+  explicit free_flight_step(const vec3<S>& I) {
+    using std::ilogb;
+    using std::ldexp;
+    eI_ = static_cast<int>(ilogb(std::max({I[0], I[1], I[2]})));  // I scaled to O(1) as exact_free_body does
+    for (std::size_t i = 0; i < 3; ++i) I_[i] = ldexp(I[i], -eI_);
+    std::array<int, 3> order{0, 1, 2};
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return I_[idx(a)] < I_[idx(b)]; });
+    order_ = order;
+    spherical_ = !(I_[idx(order[0])] < I_[idx(order[2])]);
+    Imin_ = I_[idx(order[0])];
+    frames_[0] = make_frame(order);  // D_y ≥ 0: the momentum circulates about the largest axis
+    std::swap(order[0], order[2]);
+    frames_[1] = make_frame(order);  // D_y < 0: about the smallest
+  }
+
+  /// s ← the motion from s over time t and `estimate` its error, when the state is in the common
+  /// regime and the estimate is within `accuracy`; otherwise false and s untouched.
+  bool advance(body_state<S>& s, const S& t, const S& accuracy, S& estimate) const {
+    using std::abs;
+    using std::ilogb;
+    using std::isfinite;
+    using std::ldexp;
+    using std::sqrt;
+    if (spherical_ || !isfinite(t)) return false;
+    S gmax = 0;
+    for (const S& g : s.G) {
+      if (!isfinite(g)) return false;
+      gmax = std::max(gmax, abs(g));
+    }
+    for (const S& q : s.Q.a)
+      if (!isfinite(q)) return false;
+    if (gmax == 0) return false;
+    // |G| to O(1) by a power of two (exact), as exact_free_body does; a product by 2^±e rounds as ldexp
+    const int eG = static_cast<int>(ilogb(gmax));
+    if (eG < -max_scaling || eG > max_scaling) return false;
+    const S down = ldexp(S(1), -eG), up = ldexp(S(1), eG);
+    const vec3<S> G{s.G[0] * down, s.G[1] * down, s.G[2] * down};
+    bool Dy_inexact = false;
+    const S Dy = middle_energy_difference<S>(I_, G, idx(order_[0]), idx(order_[1]), idx(order_[2]), Dy_inexact);
+    const frame_constants& f = frames_[Dy < 0 ? 1 : 0];
+    if (Dy_inexact || !f.usable) return false;
+    vec3<S> L;
+    for (std::size_t r = 0; r < 3; ++r) L[r] = f.sign[r] * G[f.axis[r]];
+    const S l2 = dot(L, L), length = sqrt(l2);
+    // the regimes exact_free_body sends to the steady rotation or to float128, tested as it tests them
+    const vec3<S> w{L[0] / f.Iw[0], L[1] / f.Iw[1], L[2] / f.Iw[2]};
+    if (L[0] * w[1] - L[1] * w[0] == 0 && L[1] * w[2] - L[2] * w[1] == 0 && L[2] * w[0] - L[0] * w[2] == 0) return false;
+    const S tiny = std::numeric_limits<S>::min() * S(1152921504606846976.0) * l2;
+    for (const S& l : L)
+      if (l != 0 && l * l < tiny) return false;
+    if (L[0] * L[0] + L[1] * L[1] < tiny) return false;
+    S Dx = 0, Dz = 0;  // L² − 2E I_x, 2E I_z − L²: sums of same-sign terms
+    for (std::size_t i = 0; i < 3; ++i) {
+      Dx += L[i] * L[i] * f.to_x[i];
+      Dz += L[i] * L[i] * f.to_z[i];
+    }
+    const S mc = std::max(S(0), f.dzx * Dy / (f.dzy * Dx)), m = std::min(S(1), f.dyx * Dz / (f.dzy * Dx));
+    if (!(mc > 0)) return false;  // the separatrix: tanh, sech and a closed-form ψ there
+    const S sz = L[2] < 0 ? S(-1) : S(1);
+    const S Lxm = sqrt(Dz * f.x_amplitude), Lym = sqrt(Dz * f.y_amplitude), Lzm = sz * sqrt(Dx * f.z_amplitude);
+    const S wp = sz * f.wp_sign * sqrt(Dx * f.wp_square);
+    const S psi_scale = length * f.psi_factor / wp;
+    S sn0 = L[1] * Lxm, cn0 = L[0] * Lym;
+    const S big = std::max(abs(sn0), abs(cn0));
+    if (!(big > 0) || !(wp != 0) || !isfinite(psi_scale)) return false;
+    // the time in the scaled units; far below the 2^60 rad limit of exact_free_body (which refuses beyond)
+    const int e_time = eG - eI_;
+    if (e_time < -max_scaling || e_time > max_scaling) return false;
+    const S tau = t * ldexp(S(1), e_time), v = wp * tau;
+    if (!(abs(tau) * length <= S(576460752303423488.0) * Imin_) || !(abs(v) <= boost::math::constants::half_pi<S>() / 2))
+      return false;
+    sn0 /= big, cn0 /= big;
+    const S norm = sqrt(sn0 * sn0 + cn0 * cn0);
+    sn0 /= norm, cn0 /= norm;
+    const elliptic::jacobi_triple<S> at_u0{sn0, cn0, sqrt(cn0 * cn0 + mc * sn0 * sn0)};
+    // |v| ≤ π/4 ≤ K/2: the functions at v without reduction, then the addition theorems
+    elliptic::jacobi_triple<S> at_v =
+        mc >= S(0.25) ? elliptic::jacobi_functions_gauss(abs(v), m, mc) : elliptic::jacobi_functions(abs(v), m, mc);
+    if (v < 0) at_v.sn = -at_v.sn;
+    const auto at_u = elliptic::jacobi_sum(at_u0, at_v, m);
+    const S D_v = elliptic::third_minus_first(at_v, f.n, 1 - f.n * at_v.sn * at_v.sn);  // odd in v
+    const S D_sum = elliptic::third_kind_sum_term(at_u0, at_v, at_u, f.n, m);
+    // ψ = (L/I_x) t + ψ_s [D(u) − D(u₀)] when |n| ≤ 1, else (L/I_z) t + ψ_s [Π(u) − Π(u₀)] (free_body_motion)
+    const S linear = length * f.rate_factor * tau;
+    const S elliptic_part = psi_scale * (D_v + D_sum + (f.small_n ? S(0) : v));
+    const S psi = linear + elliptic_part;
+    // the estimate of exact_free_body with the phases this evaluation rounds: v, the rate, and each
+    // elliptic term by its own size (no u₀ here)
+    const S phase = abs(v) + abs(linear) + abs(psi_scale) * (abs(D_v) + abs(D_sum) + (f.small_n ? S(0) : abs(v)));
+    estimate = std::numeric_limits<S>::epsilon() * (2 * S(estimate_factor) + S(estimate_factor) * phase * f.amplification);
+    if (!(estimate <= accuracy)) return false;
+    const vec3<S> L1{Lxm * at_u.cn, Lym * at_u.sn, Lzm * at_u.dn};
+    attitude_step(s.Q, f, momentum_frame(L, length), momentum_frame(L1, length), psi);
+    for (std::size_t k = 0; k < 3; ++k) s.G[f.axis[k]] = f.sign[k] * L1[k] * up;
+    return true;
+  }
+
+ private:
+  static constexpr double estimate_factor = exact_free_body<S>::estimate_factor;
+  // scalings beyond 2^±max_scaling (where 2^e itself may not be a normal number of S): exact_free_body
+  static constexpr int max_scaling = std::numeric_limits<S>::max_exponent - 8;
+
+  struct frame_constants {
+    std::array<std::size_t, 3> axis{};  // body axis of the working x, y, z
+    vec3<S> sign{};                     // W(r, axis[r]): the working frame is a proper rotation
+    vec3<S> Iw{}, to_x{}, to_z{};       // moments; (I_i − I_x)/I_i, (I_z − I_i)/I_i
+    S dzx = 0, dzy = 0, dyx = 0, n = 0, amplification = 1;
+    S x_amplitude = 0, y_amplitude = 0, z_amplitude = 0, wp_sign = 1, wp_square = 0, psi_factor = 0, rate_factor = 0;
+    bool small_n = true, usable = false;
+  };
+
+  static std::size_t idx(int i) { return static_cast<std::size_t>(i); }
+
+  // the working frame of free_body_motion for this order of the axes, with its constants
+  frame_constants make_frame(const std::array<int, 3>& order) const {
+    using std::sqrt;
+    frame_constants f;
+    mat3<S> W;
+    for (int r = 0; r < 3; ++r) W(r, order[idx(r)]) = S(1);
+    const S det = W(0, 0) * (W(1, 1) * W(2, 2) - W(1, 2) * W(2, 1)) - W(0, 1) * (W(1, 0) * W(2, 2) - W(1, 2) * W(2, 0)) +
+                  W(0, 2) * (W(1, 0) * W(2, 1) - W(1, 1) * W(2, 0));
+    for (std::size_t r = 0; r < 3; ++r) {
+      f.axis[r] = idx(order[r]);
+      f.sign[r] = r == 1 && det < 0 ? S(-1) : S(1);
+      f.Iw[r] = I_[f.axis[r]];
+    }
+    const S Ix = f.Iw[0], Iy = f.Iw[1], Iz = f.Iw[2];
+    f.dzx = Iz - Ix, f.dzy = Iz - Iy, f.dyx = Iy - Ix;
+    for (std::size_t i = 0; i < 3; ++i) f.to_x[i] = (f.Iw[i] - Ix) / f.Iw[i], f.to_z[i] = (Iz - f.Iw[i]) / f.Iw[i];
+    f.usable = !spherical_ && f.dzy != 0;  // I_y = I_z: the circulation about z is degenerate
+    if (!f.usable) return f;
+    f.x_amplitude = Ix / f.dzx, f.y_amplitude = Iy / f.dzy, f.z_amplitude = Iz / f.dzx;
+    f.wp_sign = f.dzy < 0 ? S(-1) : S(1);
+    f.wp_square = f.dzy / (Ix * Iy * Iz);
+    f.n = -Iz * f.dyx / (Ix * f.dzy);
+    f.small_n = f.n >= -1;
+    f.amplification = sqrt(1 - f.n);
+    f.psi_factor = f.dzx / (Ix * Iz);
+    f.rate_factor = f.small_n ? 1 / Ix : 1 / Iz;
+    return f;
+  }
+
+  // R1(L) of REFERENCE.md §2.3 (free_body_motion's frame): columns (L_x L_z, L_y L_z, −L⊥²)/(L L⊥),
+  // (−L_y, L_x, 0)/L⊥, L/L
+  static mat3<S> momentum_frame(const vec3<S>& L, const S& length) {
+    using std::sqrt;
+    const S perp = sqrt(L[0] * L[0] + L[1] * L[1]), ip = 1 / perp, il = 1 / length, ilp = il * ip;
+    mat3<S> r;
+    r(0, 0) = L[0] * L[2] * ilp, r(1, 0) = L[1] * L[2] * ilp, r(2, 0) = -perp * il;
+    r(0, 1) = -L[1] * ip, r(1, 1) = L[0] * ip, r(2, 1) = 0;
+    r(0, 2) = L[0] * il, r(1, 2) = L[1] * il, r(2, 2) = L[2] * il;
+    return r;
+  }
+
+  // Q ← Q Wᵀ R1(L₀) Z(ψ)ᵀ R1(L)ᵀ W: free_body_motion's A = R1(L) Z(ψ) R1(L₀)ᵀ A₀ with A = (Q Wᵀ)ᵀ
+  static void attitude_step(mat3<S>& Q, const frame_constants& f, const mat3<S>& F0, const mat3<S>& F1, const S& psi) {
+    using std::cos;
+    using std::sin;
+    const S cp = cos(psi), sp = sin(psi);
+    mat3<S> R;  // R1(L₀) Z(ψ)ᵀ R1(L)ᵀ in the working frame
+    for (int i = 0; i < 3; ++i) {
+      const S a = F0(i, 0) * cp + F0(i, 1) * sp, b = F0(i, 1) * cp - F0(i, 0) * sp, c = F0(i, 2);
+      for (int j = 0; j < 3; ++j) R(i, j) = a * F1(j, 0) + b * F1(j, 1) + c * F1(j, 2);
+    }
+    mat3<S> body;  // Wᵀ R W: W is a signed permutation
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j)
+        body(static_cast<int>(f.axis[i]), static_cast<int>(f.axis[j])) = f.sign[i] * f.sign[j] * R(static_cast<int>(i), static_cast<int>(j));
+    Q = Q * body;
+  }
+
+  int eI_ = 0;
+  vec3<S> I_{};
+  S Imin_ = 0;
+  std::array<int, 3> order_{};
+  std::array<frame_constants, 2> frames_{};
+  bool spherical_ = false;
+};
+
+}  // namespace detail
+
 template <class T>
 class exact_free_rotation {
  public:
-  explicit exact_free_rotation(const vec3<T>& I, double accuracy = 1e-12) : I_(I), accuracy_(accuracy) {
-    validate_moments(I_);
-  }
+  explicit exact_free_rotation(const vec3<T>& I, double accuracy = 1e-12)
+      : I_(checked(I)), accuracy_(accuracy), step_(I_) {}
 
   const vec3<T>& moments() const { return I_; }
 
   /// s ← the exact motion from s over time t; returns the evaluation's error estimate
   /// (max abs entry of Q and of G/|G|).
   T advance(body_state<T>& s, const T& t) const {
-    const auto r = exact_free_body<T>(I_, s, accuracy_).evaluate(t);
+    T estimate;
+    if (step_.advance(s, t, T(accuracy_), estimate)) return estimate;
+    const auto r = exact_free_body<T>(I_, s, accuracy_).evaluate(t);  // every other regime, float128 redo included
     s = r.state;
     return r.error_estimate;
   }
 
  private:
+  static const vec3<T>& checked(const vec3<T>& I) {
+    validate_moments(I);
+    return I;
+  }
+
   vec3<T> I_;
   double accuracy_;
+  detail::free_flight_step<T> step_;
 };
 
 }  // namespace rotlie::models

@@ -162,7 +162,8 @@ class free_body_motion {
       FZ(i, 1) = f0 * sp + f1 * cp;
     }
     const mat3<S> A = FZ * B_;
-    return {{transpose(Wt_ * A), Wt_ * L}, abs(wp_ * t) + abs(u0_) + abs(linear) + abs(elliptic_part)};
+    // the elliptic part is a difference of D(u) and D(u₀): each is rounded at its own size
+    return {{transpose(Wt_ * A), Wt_ * L}, abs(wp_ * t) + abs(u0_) + abs(linear) + abs(psi_scale_) * (abs(D) + abs(D0_))};
   }
 
  private:
