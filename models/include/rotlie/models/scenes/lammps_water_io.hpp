@@ -4,10 +4,15 @@
 // v_a = p/m + ω × (Q d_a) with ω = Q I⁻¹ G; and the input lines for the same interaction
 // (lj/cut/coul/dsf, intramolecular pairs excluded, LJ shifted) and for fix rigid/nve/small.
 // Every number is written with 17 significant digits so that LAMMPS reads the same doubles.
+#include <unistd.h>
+
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -91,6 +96,97 @@ inline std::map<long, vec3<double>> read_lammps_dump(const std::filesystem::path
     if (r >> id >> v[0] >> v[1] >> v[2]) rows[id] = v;
   }
   return rows;
+}
+
+struct lammps_run {
+  bool ran = false;
+  double wall_ms = 0, cpu_percent = 0, ratio_percent = 0;
+};
+
+/// LAMMPS `fix rigid/nve/small` on the configuration with the same pair lines, `steps` steps of h
+/// fs on `procs` MPI ranks: per-step wall time from its "Loop time" line, ΔE/ΔV (%) from its thermo
+/// output (every step). ran = false when lmp (or mpirun) is missing or fails.
+inline lammps_run run_lammps_rigid_nve(const liquid_water<double>& w, const std::vector<rigid_body_state<double>>& bodies, long steps, double h, int procs) {
+  lammps_run r;
+  if (std::system("command -v lmp > /dev/null 2>&1") != 0) return r;
+  if (procs > 1 && std::system("command -v mpirun > /dev/null 2>&1") != 0) return r;
+  const auto dir = std::filesystem::temp_directory_path() / ("rotlie_lammps_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  write_lammps_water_data(dir / "water.data", w, bodies);
+  std::ofstream(dir / "in.water") << "units real\natom_style full\nboundary p p p\nread_data water.data\n"
+                                  << lammps_water_pair_lines(w) << "fix r all rigid/nve/small molecule\ntimestep " << h
+                                  << "\nthermo_style custom step pe etotal\nthermo_modify format float %.15g\nthermo 1\nrun " << steps << "\n";
+  const std::string launcher = procs > 1 ? "mpirun --allow-run-as-root -np " + std::to_string(procs) + " " : "";
+  const std::string cmd = "cd '" + dir.string() + "' && OMP_NUM_THREADS=1 " + launcher + "lmp -in in.water -log log.lammps > out.txt 2>&1";
+  if (std::system(cmd.c_str()) != 0) return r;
+  std::ifstream log(dir / "log.lammps");
+  std::string line;
+  bool thermo = false;
+  double es = 0, ess = 0, vs = 0, vss = 0, e0 = 0, v0 = 0;
+  long rows = 0;
+  const std::regex loop(R"(Loop time of ([0-9.eE+-]+) on)"), cpu(R"(([0-9.]+)% CPU use)");
+  std::smatch m;
+  while (std::getline(log, line)) {
+    if (line.find("Step") != std::string::npos && line.find("PotEng") != std::string::npos) {
+      thermo = true;
+      continue;
+    }
+    if (std::regex_search(line, m, loop)) {
+      r.wall_ms = 1000 * std::stod(m[1]) / static_cast<double>(steps);
+      thermo = false;
+    }
+    if (std::regex_search(line, m, cpu)) r.cpu_percent = std::stod(m[1]);
+    if (thermo) {
+      std::istringstream in(line);
+      long step;
+      double pe, et;
+      if (in >> step >> pe >> et) {
+        if (step == 0) {
+          e0 = et;
+          v0 = pe;
+          continue;
+        }
+        es += et - e0;
+        ess += (et - e0) * (et - e0);
+        vs += pe - v0;
+        vss += (pe - v0) * (pe - v0);
+        ++rows;
+      }
+    }
+  }
+  std::filesystem::remove_all(dir);
+  if (rows == 0) return r;
+  const double n = static_cast<double>(rows);
+  r.ratio_percent = 100 * std::sqrt(ess / n - es * es / (n * n)) / std::sqrt(vss / n - vs * vs / (n * n));
+  r.ran = true;
+  return r;
+}
+
+/// LAMMPS's potential energy and site forces (by atom id − 1) of one configuration (`run 0`);
+/// empty forces when lmp is missing or fails.
+inline double lammps_single_point(const liquid_water<double>& w, const std::vector<rigid_body_state<double>>& bodies,
+                                  std::vector<vec3<double>>& site_force) {
+  site_force.clear();
+  if (std::system("command -v lmp > /dev/null 2>&1") != 0) return NAN;
+  const auto dir = std::filesystem::temp_directory_path() / ("rotlie_lammps_point_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  write_lammps_water_data(dir / "water.data", w, bodies);
+  std::ofstream(dir / "in.water") << "units real\natom_style full\nboundary p p p\nread_data water.data\n" << lammps_water_pair_lines(w)
+                                  << "dump f all custom 1 forces.dump id fx fy fz\ndump_modify f format float %.17g sort id\n"
+                                     "thermo_style custom step pe\nrun 0\nprint \"pe $(pe:%.17g)\" file result.txt\n";
+  const std::string cmd = "cd '" + dir.string() + "' && OMP_NUM_THREADS=1 lmp -log none -screen none -in in.water > out.txt 2>&1";
+  double V = NAN;
+  if (std::system(cmd.c_str()) == 0) {
+    std::ifstream in(dir / "result.txt");
+    std::string key;
+    in >> key >> V;
+    for (const auto& [id, f] : read_lammps_dump(dir / "forces.dump")) {
+      if (site_force.size() < static_cast<std::size_t>(id)) site_force.resize(static_cast<std::size_t>(id));
+      site_force[static_cast<std::size_t>(id - 1)] = f;
+    }
+  }
+  std::filesystem::remove_all(dir);
+  return V;
 }
 
 }  // namespace rotlie::models

@@ -116,7 +116,7 @@ inline rigid_bodies_state<double> liquid_water_start(const liquid_water_run_opti
     // the lattice start is far from equilibrium: a shorter step and a tight coupling first
     equilibrate(method, s, o.equilibration_h_fs / 4, 400, o.kelvin, 10.0, [](long, double, double) {});
     equilibrate(method, s, o.equilibration_h_fs, steps, o.kelvin, o.berendsen_tau_fs, [&](long k, double T, double v) {
-      if (progress) progress("equilibration " + std::to_string(k * o.equilibration_h_fs / 1000) + " ps: T = " + std::to_string(T) + " K, V/N = " + std::to_string(v) + " kcal/mol");
+      if (progress) progress("equilibration " + std::to_string(static_cast<double>(k) * o.equilibration_h_fs / 1000) + " ps: T = " + std::to_string(T) + " K, V/N = " + std::to_string(v) + " kcal/mol");
     }, 500);
     return 0;
   });
@@ -188,6 +188,29 @@ inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& 
   r.ratio_mean = mean;
   r.ratio_error = r.runs > 1 ? std::sqrt(var / (r.runs - 1) / r.runs) : 0.0;
   return r;
+}
+
+/// g_OO(r) up to 10 Å (bins of 0.05 Å) over `steps` NVE steps of MRDL at h fs from `start`,
+/// sampled every `every` steps.
+inline std::vector<std::pair<double, double>> sample_oxygen_rdf(const liquid_water_run_options& o, const rigid_bodies_state<double>& start,
+                                                                long steps, double h, long every) {
+  const auto model = tip3p<double>();
+  const auto w = liquid_water_potential(o.molecules, o.density, o.threads);
+  oxygen_rdf rdf(10.0, 0.05);
+  with_md_integrator(md_integrator_named("MRDL"), nullptr, model.mass, model.moments, w, [&](const auto& method) {
+    auto s = start;
+    s.forces_current = false;
+    std::vector<vec3<double>> x, oxygen(s.bodies.size());
+    for (long k = 1; k <= steps; ++k) {
+      method.step(s, h);
+      if (k % every) continue;
+      w.site_positions(s.bodies, x);
+      for (std::size_t i = 0; i < oxygen.size(); ++i) oxygen[i] = x[3 * i];
+      rdf.add(oxygen, w.options().box);
+    }
+    return 0;
+  });
+  return rdf.curve();
 }
 
 }  // namespace rotlie::models
