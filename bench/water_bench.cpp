@@ -4,7 +4,7 @@
 // LAMMPS's NO_SQUISH) and in LAMMPS `fix rigid/nve/small` (skipped where `lmp` is missing), with
 // the energy fluctuation of both runs. Wall and CPU time are both printed: on a shared machine
 // wall time overstates the cost.
-//   water_bench [--quick]
+//   water_bench [--quick | --lammps]   (--quick: up to 4096 molecules, 100 steps side by side; --lammps: only that)
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -91,11 +91,12 @@ cost time_steps(const std::string& integrator, const liquid_water<double>& w, ri
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::string(argv[1]) == "--quick";
+  const std::string mode = argc > 1 ? argv[1] : "";
+  const bool quick = mode == "--quick", lammps_only = mode == "--lammps";
   std::printf("# liquid water, TIP3P, 0.9973 g/cm^3, 11 A molecular switch (9.5-11 A), skin 1 A\n");
   std::printf("%-8s %-6s %-8s %-12s %-12s %-12s\n", "N", "thr", "method", "wall ms/st", "cpu ms/st", "us/mol-step");
   for (long n : {512L, 4096L, 32768L}) {
-    if (quick && n > 4096) break;
+    if ((quick && n > 4096) || lammps_only) break;
     const auto s = start(n, n <= 512 ? 400 : 100);
     const long steps = n <= 512 ? 200 : n <= 4096 ? 20 : 4;
     for (int threads : {1, 2}) {

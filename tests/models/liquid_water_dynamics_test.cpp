@@ -150,3 +150,43 @@ BOOST_AUTO_TEST_CASE(angular_momentum_of_an_isolated_cluster_is_conserved_to_rou
       return 0;
     });
 }
+
+BOOST_AUTO_TEST_CASE(the_pair_list_is_rebuilt_before_a_pair_is_missed) {
+  // 400 steps of 2 fs: molecules move several skins; the running potential (list rebuilt when a
+  // site moved more than skin/2) and a fresh one (list built now) must give the same energy
+  const auto w = small_water(small_box, 6);
+  with_md_integrator(md_integrator_named("SIER2"), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
+    auto s = small_liquid();
+    const long before = w.list_builds();
+    for (int k = 0; k < 400; ++k) m.step(s, 2.0);
+    const auto fresh = small_water(small_box, 6);
+    std::vector<vec3<double>> f(s.bodies.size()), t(s.bodies.size()), f2(s.bodies.size()), t2(s.bodies.size());
+    const double V = w.evaluate(s.bodies, f, t), V2 = fresh.evaluate(s.bodies, f2, t2);
+    BOOST_TEST_MESSAGE("list builds in 400 steps: " << w.list_builds() - before << "; V " << V << " against a fresh list " << V2);
+    BOOST_TEST(w.list_builds() - before >= 2);
+    BOOST_TEST(std::abs(V - V2) < 1e-12 * std::abs(V2));
+    double worst = 0;
+    for (std::size_t i = 0; i < f.size(); ++i)
+      for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(f[i][k] - f2[i][k]));
+    BOOST_TEST(worst < 1e-10);
+    return 0;
+  });
+}
+
+BOOST_AUTO_TEST_CASE(overlapping_molecules_are_refused) {
+  auto s = small_liquid();
+  s.bodies[5].q = s.bodies[3].q;
+  s.bodies[5].q[0] += 0.7;
+  const auto w = small_water(small_box, 6);
+  std::vector<vec3<double>> x, o;
+  w.site_positions(s.bodies, x);
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) o.push_back(x[3 * i]);
+  const auto c = closest_oxygens(o, small_box, 2.0);
+  BOOST_TEST(c.i == 3);
+  BOOST_TEST(c.j == 5);
+  BOOST_TEST(c.distance < 2.0);
+  w.site_positions(small_liquid().bodies, x);
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) o[i] = x[3 * i];
+  const auto ok = closest_oxygens(o, small_box, 2.0);
+  BOOST_TEST(ok.i == -1);  // the liquid itself has no O–O closer than 2 Å
+}

@@ -19,7 +19,8 @@
 //
 // Neighbours: a cell list on the molecules feeds a molecule-pair list of radius r_c + skin
 // (O–O for the molecular cutoff; centres of mass, plus twice the site radius, for DSF), rebuilt
-// when any site has moved more than skin/2 since the last build.
+// when an oxygen (molecular cutoff) or any site (DSF) has moved more than skin/2 since the last
+// build.
 //
 // Threads: the pair list is cut into a fixed number of chunks; each chunk sums into its own
 // buffers and the chunks are added in chunk order, so the result has the same bits for any
@@ -179,7 +180,7 @@ class liquid_water {
     explicit workspace(int threads) : pool(threads) {}
     worker_pool pool;
     molecule_pair_list<T> list;
-    std::vector<vec3<T>> x, offset, x_at_build, reference;
+    std::vector<vec3<T>> x, offset, x_at_build, reference, centre;
     std::vector<std::vector<vec3<T>>> chunk_force = std::vector<std::vector<vec3<T>>>(chunks);
     std::vector<std::vector<vec3<T>>> chunk_torque = std::vector<std::vector<vec3<T>>>(chunks);
     std::vector<T> chunk_energy = std::vector<T>(chunks);
@@ -192,6 +193,8 @@ class liquid_water {
     const std::size_t n = bodies.size();
     w.x.resize(3 * n);
     w.offset.resize(3 * n);
+    w.centre.resize(n);
+    for (std::size_t i = 0; i < n; ++i) w.centre[i] = bodies[i].q;
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t a = 0; a < 3; ++a) {
         const vec3<T> r = bodies[i].rot.Q * model_.site[a];
@@ -200,7 +203,9 @@ class liquid_water {
       }
     bool rebuild = w.x_at_build.size() != w.x.size();
     const T limit = opt_.skin * opt_.skin / 4;
-    for (std::size_t k = 0; !rebuild && k < w.x.size(); ++k) {
+    // the molecular cutoff looks at O–O distances only, so only the oxygens' moves count
+    const std::size_t stride = opt_.interaction == water_interaction::switched_molecular ? 3 : 1;
+    for (std::size_t k = 0; !rebuild && k < w.x.size(); k += stride) {
       T d2 = 0;
       for (int d = 0; d < 3; ++d) d2 += (w.x[k][d] - w.x_at_build[k][d]) * (w.x[k][d] - w.x_at_build[k][d]);
       rebuild = d2 > limit;
@@ -331,11 +336,26 @@ class liquid_water {
     const auto& x = ws_->x;
     E = 0;
     bool any = false;
+    // the image of the centres serves every site pair whose vector stays within half a box;
+    // a site pair beyond it (rare: only when L < 2 r_c + 4 r_site) takes its own minimum image
+    const T L = opt_.box, half = L / 2;
+    const vec3<T>& qi = ws_->centre[static_cast<std::size_t>(i)];
+    const vec3<T>& qj = ws_->centre[static_cast<std::size_t>(j)];
+    vec3<T> shift;
+    T centre2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      const T dk = qi[k] - qj[k];
+      shift[k] = -L * std::nearbyint(dk / L);
+      centre2 += (dk + shift[k]) * (dk + shift[k]);
+    }
+    const T reach = opt_.cutoff + 2 * model_.site_radius;
+    if (!(centre2 < reach * reach)) return false;
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) {
         const vec3<T>& xa = x[static_cast<std::size_t>(3 * i + a)];
         const vec3<T>& xb = x[static_cast<std::size_t>(3 * j + b)];
-        const vec3<T> d = minimum_image(vec3<T>{xa[0] - xb[0], xa[1] - xb[1], xa[2] - xb[2]}, opt_.box);
+        vec3<T> d{xa[0] - xb[0] + shift[0], xa[1] - xb[1] + shift[1], xa[2] - xb[2] + shift[2]};
+        if (std::abs(d[0]) > half || std::abs(d[1]) > half || std::abs(d[2]) > half) d = minimum_image(d, L);
         const T rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         if (!(rsq < rc2)) continue;
         any = true;
