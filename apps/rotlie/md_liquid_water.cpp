@@ -29,7 +29,7 @@ models::liquid_water_run_options checked(const md_liquid_water_options& o) {
   r.molecules = parse_integer_in_range(o.molecules, "--molecules", 2, 10000000);
   r.threads = static_cast<int>(parse_integer_in_range(o.threads, "--threads", 1, 64));
   r.state_file = o.state;
-  if (r.T_ps * 1000 / r.h_fs < 1) throw usage_error("--T must be at least one step --h long");
+  if (r.T_ps * 1000 / r.h_fs < 10) throw usage_error("--T must span at least 10 steps of --h (the fluctuations are rms over a run)");
   if (r.T_ps * 1000 / r.h_fs * r.runs > 1e9) throw usage_error("--T / --h × --runs exceeds 10⁹ steps");
   try {
     models::check_liquid_water_options(r);

@@ -65,6 +65,7 @@ inline void check_liquid_water_options(const liquid_water_run_options& o) {
   auto finite_positive = [](double x) { return std::isfinite(x) && x > 0; };
   if (!finite_positive(o.h_fs)) throw std::invalid_argument("--h must be a positive number of fs");
   if (!finite_positive(o.T_ps)) throw std::invalid_argument("--T must be a positive number of ps");
+  if (o.T_ps * 1000 / o.h_fs < 10) throw std::invalid_argument("--T must span at least 10 steps of --h (the fluctuations are rms over a run)");
   if (o.runs < 1) throw std::invalid_argument("--runs must be at least 1");
   if (o.molecules < 2) throw std::invalid_argument("--molecules must be at least 2");
   if (o.threads < 1 || o.threads > 64) throw std::invalid_argument("--threads must be between 1 and 64");
@@ -157,7 +158,11 @@ inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& 
       double e_sum = 0, e_sq = 0, v_run = 0, v_sq = 0;
       const double e_ref = sys.energy(s), v_ref = sys.potential_energy(s);  // shifts that keep the sums well conditioned
       for (long k = 0; k < steps; ++k) {
-        method.step(s, o.h_fs);
+        try {
+          method.step(s, o.h_fs);
+        } catch (const std::invalid_argument&) {  // a rotor refusing a non-finite momentum: the run blew up
+          throw std::runtime_error("the run diverged (a momentum is not finite) at h = " + std::to_string(o.h_fs) + " fs");
+        }
         const double V = sys.potential_energy(s), K = sys.kinetic_energy(s), E = V + K;
         if (!std::isfinite(E)) throw std::runtime_error("the run diverged (energy not finite) at h = " + std::to_string(o.h_fs) + " fs");
         e_sum += E - e_ref;
@@ -172,7 +177,7 @@ inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& 
       const double n = static_cast<double>(steps);
       const double dE = std::sqrt(std::max(0.0, e_sq / n - (e_sum / n) * (e_sum / n)));
       const double dV = std::sqrt(std::max(0.0, v_sq / n - (v_run / n) * (v_run / n)));
-      r.ratio_percent.push_back(100 * dE / dV);
+      r.ratio_percent.push_back(dV > 0 ? 100 * dE / dV : 0.0);
       if (progress) progress("run " + std::to_string(run + 1) + "/" + std::to_string(o.runs) + ": ΔE/ΔV = " + std::to_string(100 * dE / dV) + " %");
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
