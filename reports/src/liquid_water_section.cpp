@@ -82,6 +82,7 @@ report_section section(const report_options& options, const budget& b) {
     for (double h : sw.h) {
       o.integrator = sw.integrator;
       o.h_fs = h;
+      o.T_ps = std::max(b.run_ps, 10 * h / 1000);  // at least 10 steps per run
       say(sw.integrator + " at h = " + number(h) + " fs");
       try {
         const auto r = models::run_liquid_water(o, start, {});
