@@ -1,0 +1,82 @@
+// `rotlie md --scene liquid-water` (see md_liquid_water.hpp).
+#include "md_liquid_water.hpp"
+
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "arguments.hpp"
+#include "progress.hpp"
+#include "rotlie/models/scenes/liquid_water_experiment.hpp"
+#include "scheme_lookup.hpp"
+
+namespace rotlie::app {
+
+namespace {
+
+models::liquid_water_run_options checked(const md_liquid_water_options& o) {
+  models::liquid_water_run_options r;
+  r.integrator = o.integrator;
+  try {
+    (void)models::md_integrator_named(o.integrator);
+  } catch (const std::invalid_argument& e) {
+    throw usage_error(std::string("--integrator: ") + e.what());
+  }
+  if (o.h.empty()) throw usage_error("--h is required (the step in fs)");
+  r.h_fs = parse_positive(o.h, "--h");
+  r.T_ps = parse_positive(o.T, "--T");
+  r.runs = static_cast<int>(parse_integer_in_range(o.runs, "--runs", 1, 1000));
+  r.molecules = parse_integer_in_range(o.molecules, "--molecules", 2, 10000000);
+  r.threads = static_cast<int>(parse_integer_in_range(o.threads, "--threads", 1, 64));
+  r.state_file = o.state;
+  if (r.T_ps * 1000 / r.h_fs < 10) throw usage_error("--T must span at least 10 steps of --h (the fluctuations are rms over a run)");
+  if (r.T_ps * 1000 / r.h_fs * r.runs > 1e9) throw usage_error("--T / --h × --runs exceeds 10⁹ steps");
+  try {
+    models::check_liquid_water_options(r);
+  } catch (const std::invalid_argument& e) {
+    throw usage_error(e.what());
+  }
+  return r;
+}
+
+}  // namespace
+
+int run_md_liquid_water(const md_liquid_water_options& options) {
+  const auto o = checked(options);
+  progress_line progress;
+  auto show = [&](const std::string& line) { progress.show(line); };
+  models::rigid_bodies_state<double> start;
+  try {
+    start = models::liquid_water_start(o, show);
+  } catch (const std::invalid_argument& e) {  // a state file of another system, overlapping molecules
+    throw usage_error(e.what());
+  }
+  const auto r = models::run_liquid_water(o, start, show);
+  if (options.json) {
+    std::cout << nlohmann::json{{"scene", "liquid-water"},
+                                {"integrator", r.integrator},
+                                {"h_fs", r.h_fs},
+                                {"f", r.f},
+                                {"runs", r.runs},
+                                {"molecules", r.molecules},
+                                {"dE_over_dV_percent", {r.ratio_mean, r.ratio_error}},
+                                {"potential_kcal_per_mol", r.potential_per_molecule},
+                                {"temperature_K", r.temperature},
+                                {"ms_per_step", r.ms_per_step},
+                                {"cpu_ms_per_step", r.cpu_ms_per_step},
+                                {"momentum_drift", r.momentum_drift}}
+                     .dump(2)
+              << "\n";
+  } else {
+    std::printf("liquid water: %ld TIP3P molecules, box %.4f Å, %s, h = %g fs (h/f = %g fs), %d run(s) of %g ps\n", r.molecules, r.box,
+                r.integrator.c_str(), r.h_fs, r.h_fs / r.f, r.runs, o.T_ps);
+    std::printf("  ΔE/ΔV            %.4g ± %.2g %%\n", r.ratio_mean, r.ratio_error);
+    std::printf("  V per molecule   %.4f kcal/mol\n", r.potential_per_molecule);
+    std::printf("  temperature      %.1f K\n", r.temperature);
+    std::printf("  cost             %.3f ms per step wall, %.3f ms CPU (%ld steps)\n", r.ms_per_step, r.cpu_ms_per_step, r.steps);
+    std::printf("  |ΔP| (momentum)  %.2e g/mol·Å/fs\n", r.momentum_drift);
+  }
+  return 0;
+}
+
+}  // namespace rotlie::app
