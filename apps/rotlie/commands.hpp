@@ -21,6 +21,7 @@ int run_stages(const stages_options& options);
 struct report_command_options {
   std::string out = "rotlie-report";
   bool quick = false;
+  bool full = false;  ///< the papers' full statistics (the nine 1-ps liquid-water runs per point: about half an hour)
   std::string sections;  ///< comma-separated section keys; empty: all
 };
 int run_report_command(const report_command_options& options);

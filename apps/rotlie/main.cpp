@@ -13,6 +13,7 @@
 
 #include "arguments.hpp"
 #include "commands.hpp"
+#include "md_liquid_water.hpp"
 #include "scheme_lookup.hpp"
 
 namespace {
@@ -160,7 +161,7 @@ int main(int argc, char** argv) {
   md_options md;
   auto* md_cmd = app.add_subcommand("md", "van Zon & Schofield's scenes: free water (orientation error time tau) and a "
                                           "dipole in a field (Table I), any integrator");
-  md_cmd->add_option("--scene", md.scene, "free-water or dipole-field")->required();
+  md_cmd->add_option("--scene", md.scene, "free-water, dipole-field or liquid-water")->required();
   md_cmd->add_option("--integrator", md.integrator,
                      "SIER2, SIER4, MRDL, SEJ4 (a reconstruction), or SIER2/X, SIER4/X with the free rotation by scheme X "
                      "(RS4-S5-McLachlan:CBA, or SCHEME:PERM:LABEL such as P1:BAC:5 solved for the water molecule)")
@@ -173,11 +174,16 @@ int main(int argc, char** argv) {
   md_cmd->add_option("--dipole", md.dipole, "dipole-field: the dipole in debye (default 1.84)");
   md_cmd->add_option("--field", md.field, "dipole-field: the field along z in MV/m (default 2.7)");
   md_cmd->add_flag("--json", md.json, "Machine-readable output on stdout");
+  md_liquid_water_options liquid;  // liquid-water only: the scene of vZS section V.C
+  md_cmd->add_option("--molecules", liquid.molecules, "liquid-water: molecules in the box (default 512; at least 365)");
+  md_cmd->add_option("--threads", liquid.threads, "liquid-water: threads of the force loop (default 2; results do not depend on it)");
+  md_cmd->add_option("--state", liquid.state, "liquid-water: a state file, read if it exists, else the equilibrated start is written there");
 
   report_command_options report;
   auto* report_cmd = app.add_subcommand("report", "Regenerate every table and figure into one folder");
   report_cmd->add_option("--out", report.out, "Output folder (default: rotlie-report)");
   report_cmd->add_flag("--quick", report.quick, "Smaller sweeps, for a fast look");
+  report_cmd->add_flag("--full", report.full, "The papers' full statistics where a section has them (liquid water: nine 1-ps runs per point, about 30 min)");
   report_cmd->add_option("--sections", report.sections,
                          "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs");
 
@@ -244,7 +250,21 @@ int main(int argc, char** argv) {
       check_numeric_scales(exact.inertia, exact.G0, exact.T);
       return finished(run_exact(exact));
     }
-    if (*md_cmd) return finished(run_md(md));
+    if (*md_cmd) {
+      if (md.scene != "liquid-water") {
+        for (const char* o : {"--molecules", "--threads", "--state"})
+          if (md_cmd->count(o) > 0) throw usage_error(std::string(o) + " applies to the liquid-water scene only");
+        return finished(run_md(md));
+      }
+      for (const char* o : {"--seed", "--scalar", "--dipole", "--field"})
+        if (md_cmd->count(o) > 0) throw usage_error(std::string(o) + " does not apply to the liquid-water scene");
+      liquid.integrator = md.integrator;
+      liquid.h = md.h;
+      if (!md.T.empty()) liquid.T = md.T;
+      if (!md.runs.empty()) liquid.runs = md.runs;
+      liquid.json = md.json;
+      return finished(run_md_liquid_water(liquid));
+    }
     if (*report_cmd) return finished(run_report_command(report));  // checks and locks its folder itself
     if (*map_cmd) return finished(run_map(map));  // checks its folder itself (on rank 0 only under MPI)
     if (*best_cmd) return finished(run_best(best));

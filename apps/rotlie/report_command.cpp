@@ -32,9 +32,11 @@ std::vector<std::string> section_list(const std::string& text) {
 }  // namespace
 
 int run_report_command(const report_command_options& options) {
+  if (options.quick && options.full) throw usage_error("--quick and --full contradict each other: give one");
   reports::report_options report;
   report.out_dir = options.out;
   report.quick = options.quick;
+  report.full = options.full;
   if (!options.sections.empty()) report.sections = section_list(options.sections);
   report.progress = [](std::string_view line) { std::cerr << "rotlie report: " << line << std::endl; };
 

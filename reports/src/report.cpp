@@ -7,6 +7,7 @@
 
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report_folder.hpp"
+#include "rotlie/reports/liquid_water_section.hpp"
 #include "rotlie/reports/vzs_section.hpp"
 
 namespace rotlie::reports {
@@ -14,11 +15,16 @@ namespace {
 
 using section_function = report_section (*)(const report_options&);
 
+report_section liquid_water(const report_options& options) {
+  return options.full ? liquid_water_section_full(options) : liquid_water_section(options);
+}
+
 const std::vector<std::pair<std::string, section_function>>& all_sections() {
   static const std::vector<std::pair<std::string, section_function>> sections{
       {"lie-algebra", lie_algebra_section}, {"remainders", remainder_section}, {"dedicated", dedicated_section},
       {"accuracy", accuracy_section},       {"stability", stability_section},  {"exact-flow", exact_flow_section},
-      {"vzs", vzs_section}};
+      {"vzs", vzs_section},
+      {"liquid-water", liquid_water}};
   return sections;
 }
 
@@ -29,6 +35,7 @@ bool chosen(const report_options& options, const std::string& key) {
 std::string command_line(const report_options& options) {
   std::string line = "rotlie report";
   if (options.quick) line += " --quick";
+  if (options.full) line += " --full";
   if (!options.sections.empty()) {
     line += " --sections ";
     for (std::size_t i = 0; i < options.sections.size(); ++i) line += (i ? "," : "") + options.sections[i];

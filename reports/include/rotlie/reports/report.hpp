@@ -16,6 +16,7 @@ namespace rotlie::reports {
 struct report_options {
   std::filesystem::path out_dir = "rotlie-report";
   bool quick = false;                                   ///< smaller sweeps, for a fast look
+  bool full = false;                                    ///< the papers' full statistics where a section has them (long)
   std::vector<std::string> sections;                    ///< keys of report_section_keys(); empty: all
   std::function<void(std::string_view)> progress;      ///< one line per step, may be empty
 };
