@@ -5,6 +5,7 @@
 #define BOOST_TEST_MODULE md_free_flight
 #include <boost/test/unit_test.hpp>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -70,4 +71,24 @@ BOOST_AUTO_TEST_CASE(sej4_rotor_has_exact_momentum_and_a_fourth_order_attitude) 
   BOOST_TEST_MESSAGE("SEJ4 rotor: attitude error slope " << p << ", e(16 fs) = " << es.front() << ", e(2 fs) = " << es.back());
   BOOST_TEST(std::abs(p - 4) < 0.15);
   BOOST_TEST(es.back() > 1e-10);
+}
+
+BOOST_AUTO_TEST_CASE(momenta_from_one_preparation_are_those_of_advance) {
+  const auto I = test::water_moments_real<double>();
+  const models::exact_free_rotation<double> exact(I);
+  // thermal states, and a state on the largest axis (the steady regime, which the step declines)
+  auto bodies = test::thermal_bodies<double>(4).bodies;
+  bodies.push_back(bodies[0]);
+  bodies.back().rot.G = {0, 0, 0.02};
+  for (const auto& b : bodies)
+    // SEJ4's Gauss nodes, backwards, and a time long enough (|v| > π/4) to be sent to exact_free_body
+    for (const std::array<double, 3> t : {std::array<double, 3>{0.8, 3.2, 4.0}, std::array<double, 3>{-0.8, -3.2, -4.0},
+                                          std::array<double, 3>{1.0, 2000.0, 3.0}}) {
+      const auto G = exact.momenta(b.rot, t);
+      for (std::size_t k = 0; k < 3; ++k) {
+        auto s = b.rot;
+        exact.advance(s, t[k]);
+        BOOST_TEST((G[k] == s.G), "t = " << t[k]);
+      }
+    }
 }

@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "rotlie/models/complementary_elliptic.hpp"
 #include "rotlie/models/exact_energy_difference.hpp"
@@ -50,11 +51,72 @@ class free_flight_step {
   /// regime and the estimate is within `accuracy`; otherwise false and s untouched.
   bool advance(body_state<S>& s, const S& t, const S& accuracy, S& estimate) const {
     using std::abs;
+    momentum_start p;
+    S v;
+    if (!prepare(s, p) || !phase(p, t, v)) return false;
+    const auto [at_v, at_u] = functions_at(p, v);
+    const frame_constants& f = *p.f;
+    const S D_v = elliptic::third_minus_first(at_v, f.n, 1 - f.n * at_v.sn * at_v.sn);  // odd in v
+    const S D_sum = elliptic::third_kind_sum_term(p.at_u0, at_v, at_u, f.n, p.m);
+    // ψ = (L/I_x) t + ψ_s [D(u) − D(u₀)] when |n| ≤ 1, else (L/I_z) t + ψ_s [Π(u) − Π(u₀)] (free_body_motion)
+    const S linear = p.length * f.rate_factor * scaled_time(p, t);
+    const S elliptic_part = p.psi_scale * (D_v + D_sum + (f.small_n ? S(0) : v));
+    const S psi = linear + elliptic_part;
+    // the estimate of exact_free_body with the phases this evaluation rounds: v, the rate, and each
+    // elliptic term by its own size (no u₀ here)
+    const S phase = abs(v) + abs(linear) + abs(p.psi_scale) * (abs(D_v) + abs(D_sum) + (f.small_n ? S(0) : abs(v)));
+    estimate = std::numeric_limits<S>::epsilon() * (2 * S(estimate_factor) + S(estimate_factor) * phase * f.amplification);
+    if (!(estimate <= accuracy)) return false;
+    const vec3<S> L1 = momentum_at(p, at_u);
+    attitude_step(s.Q, f, momentum_frame(p.L, p.length), momentum_frame(L1, p.length), psi);
+    store_momentum(p, L1, s.G);
+    return true;
+  }
+
+  /// G[k] ← the body momentum of the motion from s at time t[k], the attitude not formed (one
+  /// preparation for several times: the Gauss nodes of SEJ4's rotor); false, G untouched, when the
+  /// state or a time is outside the common regime or a momentum's estimate exceeds `accuracy`.
+  /// Each G[k] is the one advance(s, t[k]) gives, to the bit.
+  template <std::size_t N>
+  bool momenta(const body_state<S>& s, const std::array<S, N>& t, std::array<vec3<S>, N>& G, const S& accuracy) const {
+    using std::abs;
+    momentum_start p;
+    if (!prepare(s, p)) return false;
+    std::array<S, N> v{};
+    for (std::size_t k = 0; k < N; ++k) {
+      if (!phase(p, t[k], v[k])) return false;
+      // only the phase v of the elliptic functions rounds here (no ψ)
+      const S estimate = std::numeric_limits<S>::epsilon() * (2 * S(estimate_factor) + S(estimate_factor) * abs(v[k]));
+      if (!(estimate <= accuracy)) return false;
+    }
+    for (std::size_t k = 0; k < N; ++k) store_momentum(p, momentum_at(p, functions_at(p, v[k]).second), G[k]);
+    return true;
+  }
+
+ private:
+  static constexpr double estimate_factor = exact_free_body<S>::estimate_factor;
+  // scalings beyond 2^±max_scaling (where 2^e itself may not be a normal number of S): exact_free_body
+  static constexpr int max_scaling = std::numeric_limits<S>::max_exponent - 8;
+
+  struct frame_constants;
+
+  // What a state fixes for every time: the working frame, the momentum there, the amplitudes, the
+  // parameter and the Jacobi functions at the initial phase u₀.
+  struct momentum_start {
+    const frame_constants* f = nullptr;
+    vec3<S> L{};
+    S length = 0, Lxm = 0, Lym = 0, Lzm = 0, wp = 0, psi_scale = 0, m = 0, mc = 0, up = 0, time_scale = 0;
+    elliptic::jacobi_triple<S> at_u0{};
+  };
+
+  // The state's part of a step; false in the regimes exact_free_body takes.
+  bool prepare(const body_state<S>& s, momentum_start& p) const {
+    using std::abs;
     using std::ilogb;
     using std::isfinite;
     using std::ldexp;
     using std::sqrt;
-    if (spherical_ || !isfinite(t)) return false;
+    if (spherical_) return false;
     S gmax = 0;
     for (const S& g : s.G) {
       if (!isfinite(g)) return false;
@@ -66,15 +128,18 @@ class free_flight_step {
     // |G| to O(1) by a power of two (exact), as exact_free_body does; a product by 2^±e rounds as ldexp
     const int eG = static_cast<int>(ilogb(gmax));
     if (eG < -max_scaling || eG > max_scaling) return false;
-    const S down = ldexp(S(1), -eG), up = ldexp(S(1), eG);
+    const S down = ldexp(S(1), -eG);
+    p.up = ldexp(S(1), eG);
     const vec3<S> G{s.G[0] * down, s.G[1] * down, s.G[2] * down};
     bool Dy_inexact = false;
     const S Dy = middle_energy_difference<S>(I_, G, idx(order_[0]), idx(order_[1]), idx(order_[2]), Dy_inexact);
     const frame_constants& f = frames_[Dy < 0 ? 1 : 0];
     if (Dy_inexact || !f.usable) return false;
-    vec3<S> L;
+    p.f = &f;
+    vec3<S>& L = p.L;
     for (std::size_t r = 0; r < 3; ++r) L[r] = f.sign[r] * G[f.axis[r]];
-    const S l2 = dot(L, L), length = sqrt(l2);
+    const S l2 = dot(L, L);
+    p.length = sqrt(l2);
     // the regimes exact_free_body sends to the steady rotation or to float128, tested as it tests them
     const vec3<S> w{L[0] / f.Iw[0], L[1] / f.Iw[1], L[2] / f.Iw[2]};
     if (L[0] * w[1] - L[1] * w[0] == 0 && L[1] * w[2] - L[2] * w[1] == 0 && L[2] * w[0] - L[0] * w[2] == 0) return false;
@@ -87,51 +152,54 @@ class free_flight_step {
       Dx += L[i] * L[i] * f.to_x[i];
       Dz += L[i] * L[i] * f.to_z[i];
     }
-    const S mc = std::max(S(0), f.dzx * Dy / (f.dzy * Dx)), m = std::min(S(1), f.dyx * Dz / (f.dzy * Dx));
-    if (!(mc > 0)) return false;  // the separatrix: tanh, sech and a closed-form ψ there
+    p.mc = std::max(S(0), f.dzx * Dy / (f.dzy * Dx)), p.m = std::min(S(1), f.dyx * Dz / (f.dzy * Dx));
+    if (!(p.mc > 0)) return false;  // the separatrix: tanh, sech and a closed-form ψ there
     const S sz = L[2] < 0 ? S(-1) : S(1);
-    const S Lxm = sqrt(Dz * f.x_amplitude), Lym = sqrt(Dz * f.y_amplitude), Lzm = sz * sqrt(Dx * f.z_amplitude);
-    const S wp = sz * f.wp_sign * sqrt(Dx * f.wp_square);
-    const S psi_scale = length * f.psi_factor / wp;
-    S sn0 = L[1] * Lxm, cn0 = L[0] * Lym;
+    p.Lxm = sqrt(Dz * f.x_amplitude), p.Lym = sqrt(Dz * f.y_amplitude), p.Lzm = sz * sqrt(Dx * f.z_amplitude);
+    p.wp = sz * f.wp_sign * sqrt(Dx * f.wp_square);
+    p.psi_scale = p.length * f.psi_factor / p.wp;
+    S sn0 = L[1] * p.Lxm, cn0 = L[0] * p.Lym;
     const S big = std::max(abs(sn0), abs(cn0));
-    if (!(big > 0) || !(wp != 0) || !isfinite(psi_scale)) return false;
+    if (!(big > 0) || !(p.wp != 0) || !isfinite(p.psi_scale)) return false;
     // the time in the scaled units; far below the 2^60 rad limit of exact_free_body (which refuses beyond)
     const int e_time = eG - eI_;
     if (e_time < -max_scaling || e_time > max_scaling) return false;
-    const S tau = t * ldexp(S(1), e_time), v = wp * tau;
-    if (!(abs(tau) * length <= S(576460752303423488.0) * Imin_) || !(abs(v) <= boost::math::constants::half_pi<S>() / 2))
-      return false;
+    p.time_scale = ldexp(S(1), e_time);
     sn0 /= big, cn0 /= big;
     const S norm = sqrt(sn0 * sn0 + cn0 * cn0);
     sn0 /= norm, cn0 /= norm;
-    const elliptic::jacobi_triple<S> at_u0{sn0, cn0, sqrt(cn0 * cn0 + mc * sn0 * sn0)};
-    // |v| ≤ π/4 ≤ K/2: the functions at v without reduction, then the addition theorems
-    elliptic::jacobi_triple<S> at_v =
-        mc >= S(0.25) ? elliptic::jacobi_functions_gauss(abs(v), m, mc) : elliptic::jacobi_functions(abs(v), m, mc);
-    if (v < 0) at_v.sn = -at_v.sn;
-    const auto at_u = elliptic::jacobi_sum(at_u0, at_v, m);
-    const S D_v = elliptic::third_minus_first(at_v, f.n, 1 - f.n * at_v.sn * at_v.sn);  // odd in v
-    const S D_sum = elliptic::third_kind_sum_term(at_u0, at_v, at_u, f.n, m);
-    // ψ = (L/I_x) t + ψ_s [D(u) − D(u₀)] when |n| ≤ 1, else (L/I_z) t + ψ_s [Π(u) − Π(u₀)] (free_body_motion)
-    const S linear = length * f.rate_factor * tau;
-    const S elliptic_part = psi_scale * (D_v + D_sum + (f.small_n ? S(0) : v));
-    const S psi = linear + elliptic_part;
-    // the estimate of exact_free_body with the phases this evaluation rounds: v, the rate, and each
-    // elliptic term by its own size (no u₀ here)
-    const S phase = abs(v) + abs(linear) + abs(psi_scale) * (abs(D_v) + abs(D_sum) + (f.small_n ? S(0) : abs(v)));
-    estimate = std::numeric_limits<S>::epsilon() * (2 * S(estimate_factor) + S(estimate_factor) * phase * f.amplification);
-    if (!(estimate <= accuracy)) return false;
-    const vec3<S> L1{Lxm * at_u.cn, Lym * at_u.sn, Lzm * at_u.dn};
-    attitude_step(s.Q, f, momentum_frame(L, length), momentum_frame(L1, length), psi);
-    for (std::size_t k = 0; k < 3; ++k) s.G[f.axis[k]] = f.sign[k] * L1[k] * up;
+    p.at_u0 = {sn0, cn0, sqrt(cn0 * cn0 + p.mc * sn0 * sn0)};
     return true;
   }
 
- private:
-  static constexpr double estimate_factor = exact_free_body<S>::estimate_factor;
-  // scalings beyond 2^±max_scaling (where 2^e itself may not be a normal number of S): exact_free_body
-  static constexpr int max_scaling = std::numeric_limits<S>::max_exponent - 8;
+  static S scaled_time(const momentum_start& p, const S& t) { return t * p.time_scale; }
+
+  // v = ω_p t in the scaled units; false when t is not finite, too long, or |v| > π/4.
+  bool phase(const momentum_start& p, const S& t, S& v) const {
+    using std::abs;
+    using std::isfinite;
+    if (!isfinite(t)) return false;
+    const S tau = scaled_time(p, t);
+    v = p.wp * tau;
+    return abs(tau) * p.length <= S(576460752303423488.0) * Imin_ && abs(v) <= boost::math::constants::half_pi<S>() / 2;
+  }
+
+  // sn cn dn at v (|v| ≤ π/4 ≤ K/2: no reduction) and, by the addition theorems, at u₀ + v
+  static std::pair<elliptic::jacobi_triple<S>, elliptic::jacobi_triple<S>> functions_at(const momentum_start& p, const S& v) {
+    using std::abs;
+    elliptic::jacobi_triple<S> at_v =
+        p.mc >= S(0.25) ? elliptic::jacobi_functions_gauss(abs(v), p.m, p.mc) : elliptic::jacobi_functions(abs(v), p.m, p.mc);
+    if (v < 0) at_v.sn = -at_v.sn;
+    return {at_v, elliptic::jacobi_sum(p.at_u0, at_v, p.m)};
+  }
+
+  static vec3<S> momentum_at(const momentum_start& p, const elliptic::jacobi_triple<S>& at_u) {
+    return {p.Lxm * at_u.cn, p.Lym * at_u.sn, p.Lzm * at_u.dn};
+  }
+
+  static void store_momentum(const momentum_start& p, const vec3<S>& L1, vec3<S>& G) {
+    for (std::size_t k = 0; k < 3; ++k) G[p.f->axis[k]] = p.f->sign[k] * L1[k] * p.up;
+  }
 
   struct frame_constants {
     std::array<std::size_t, 3> axis{};  // body axis of the working x, y, z
@@ -228,6 +296,20 @@ class exact_free_rotation {
     const auto r = exact_free_body<T>(I_, s, accuracy_).evaluate(t);  // every other regime, float128 redo included
     s = r.state;
     return r.error_estimate;
+  }
+
+  /// The exact body momenta of the motion from s at the times t[k] (the attitude is not formed): one
+  /// preparation of the elliptic solution for all of them in the common regime, else advance per time.
+  template <std::size_t N>
+  std::array<vec3<T>, N> momenta(const body_state<T>& s, const std::array<T, N>& t) const {
+    std::array<vec3<T>, N> G;
+    if (step_.momenta(s, t, G, T(accuracy_))) return G;
+    for (std::size_t k = 0; k < N; ++k) {
+      body_state<T> x = s;
+      advance(x, t[k]);
+      G[k] = x.G;
+    }
+    return G;
   }
 
  private:

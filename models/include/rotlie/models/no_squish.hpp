@@ -5,11 +5,14 @@
 // momentum is G_k = π·P_k q / 2, and the flow of G_k²/(2I_k) for time t is
 //     (π, q) ← cos(φt)(π, q) + sin(φt)(P_k π, P_k q),   φ = π·P_k q / (4 I_k),
 // i.e. q ← q ∘ exp(e_k φt): the body turns about its axis k by G_k t/I_k, the planar rotation of
-// the matrix form (sub_flows.hpp). One free step is LAMMPS's sequence k = 3 (t/2), 2 (t/2), 1 (t),
-// 2 (t/2), 3 (t/2): the same map as the table ABCBA2:CBA, the MRDL rotor (md_integrators.hpp).
+// the matrix form (sub_flows.hpp). One free step is the symmetric sequence a (t/2), b (t/2), c (t),
+// b (t/2), a (t/2) for an order of the axes (a, b, c): LAMMPS's 3, 2, 1 is the same map as the table
+// ABCBA2:CBA (MRDL-LAMMPS), Dullweber, Leimkuhler & McLachlan's 1, 2, 3 the table ABCBA2:ABC (MRDL;
+// md_integrators.hpp).
 // A torque kick is π += c h 2 q ∘ (0, τ_body), i.e. G += c h τ_body.
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include "rotlie/models/rigid_body.hpp"
 
@@ -117,19 +120,33 @@ void no_squish_rotate(quaternion_state<T>& s, int k, const T& moment, const T& t
   }
 }
 
-/// The NO_SQUISH free rotor: axes 3, 2, 1, 2, 3 (LAMMPS), the full step on axis 1.
+/// An order of the body axes (0-based) for the sequence a, b, c, b, a; c takes the full step.
+using axis_order = std::array<int, 3>;
+inline constexpr axis_order lammps_axis_order{2, 1, 0};  ///< LAMMPS's NO_SQUISH: 3, 2, 1, 2, 3
+inline constexpr axis_order dlm_axis_order{0, 1, 2};     ///< Dullweber, Leimkuhler & McLachlan: 1, 2, 3, 2, 1
+
+/// The NO_SQUISH free rotor in a given axis order (LAMMPS's by default).
 template <class T>
 class no_squish_rotor {
  public:
-  explicit no_squish_rotor(const vec3<T>& I) : I_(I) { validate_moments(I_); }
+  /// Throws std::invalid_argument unless `axes` is a permutation of 0, 1, 2.
+  explicit no_squish_rotor(const vec3<T>& I, const axis_order& axes = lammps_axis_order) : I_(I), axes_(axes) {
+    validate_moments(I_);
+    bool seen[3] = {false, false, false};
+    for (const int k : axes_) {
+      if (k < 0 || k > 2 || seen[k]) throw std::invalid_argument("no_squish_rotor: the axis order must be a permutation of 0, 1, 2");
+      seen[k] = true;
+    }
+  }
 
   void advance(quaternion_state<T>& s, const T& t) const {
     const T half = t / 2;
-    no_squish_rotate(s, 2, I_[2], half);
-    no_squish_rotate(s, 1, I_[1], half);
-    no_squish_rotate(s, 0, I_[0], t);
-    no_squish_rotate(s, 1, I_[1], half);
-    no_squish_rotate(s, 2, I_[2], half);
+    const auto [a, b, c] = axes_;
+    no_squish_rotate(s, a, moment(a), half);
+    no_squish_rotate(s, b, moment(b), half);
+    no_squish_rotate(s, c, moment(c), t);
+    no_squish_rotate(s, b, moment(b), half);
+    no_squish_rotate(s, a, moment(a), half);
   }
 
   /// A kick by the body torque for time t: π += 2 t q ∘ (0, τ_body).
@@ -139,9 +156,13 @@ class no_squish_rotor {
   }
 
   const vec3<T>& moments() const { return I_; }
+  const axis_order& axes() const { return axes_; }
 
  private:
+  const T& moment(int k) const { return I_[static_cast<std::size_t>(k)]; }
+
   vec3<T> I_;
+  axis_order axes_;
 };
 
 }  // namespace rotlie::models
