@@ -129,7 +129,7 @@ int run_md_in(const md_options& o, const resolved_run& r) {
 
 int run_md(const md_options& o) {
   if (o.scene != "free-water" && o.scene != "dipole-field")
-    throw usage_error("--scene must be free-water or dipole-field, got '" + o.scene + "'");
+    throw usage_error("--scene must be free-water, dipole-field or liquid-water, got '" + o.scene + "'");
   if (o.scalar != "double" && o.scalar != "long-double" && o.scalar != "float128")
     throw usage_error("--scalar must be double, long-double or float128, got '" + o.scalar + "'");
   resolved_run r;

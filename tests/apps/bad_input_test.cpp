@@ -356,7 +356,16 @@ const std::vector<bad_input> cases = {
 
   // md
   {{"md", "--integrator", "SIER2", "--h", "1"}, usage, "--scene is required"},
-  {{"md", "--scene", "liquid", "--integrator", "SIER2", "--h", "1"}, usage, "--scene must be free-water or dipole-field, got 'liquid'"},
+  {{"md", "--scene", "liquid", "--integrator", "SIER2", "--h", "1"}, usage, "--scene must be free-water, dipole-field or liquid-water, got 'liquid'"},
+  {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--molecules", "256"}, usage, "smaller than twice the 11 Å cutoff"},
+  {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "0"}, usage, "--h must be positive"},
+  {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "nan"}, usage, "--h 'nan' is not a finite number"},
+  {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--threads", "0"}, usage, "--threads must be at least 1"},
+  {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--runs", "0"}, usage, "--runs must be at least 1"},
+  {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--T", "-1"}, usage, "--T must be positive"},
+  {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--seed", "3"}, usage, "--seed does not apply to the liquid-water scene"},
+  {{"md", "--scene", "liquid-water", "--integrator", "VERLET", "--h", "1"}, usage, "unknown integrator 'VERLET'"},
+  {{"md", "--scene", "free-water", "--integrator", "SIER2", "--h", "1", "--molecules", "512"}, usage, "--molecules applies to the liquid-water scene only"},
   {{"md", "--scene", "free-water", "--integrator", "VERLET", "--h", "1"}, usage, "unknown integrator 'VERLET'"},
   {{"md", "--scene", "free-water", "--integrator", "SIER2/", "--h", "1"}, usage, "needs a scheme table name"},
   {{"md", "--scene", "free-water", "--integrator", "SIER2/N9:BAC:1", "--h", "1"}, usage, "--integrator SIER2/N9:BAC:1"},
