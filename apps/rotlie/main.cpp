@@ -163,7 +163,8 @@ int main(int argc, char** argv) {
                                           "dipole in a field (Table I), any integrator");
   md_cmd->add_option("--scene", md.scene, "free-water, dipole-field or liquid-water")->required();
   md_cmd->add_option("--integrator", md.integrator,
-                     "SIER2, SIER4, MRDL (DLM's axis order 1-2-3-2-1), MRDL-LAMMPS (NO_SQUISH's 3-2-1-2-3), SEJ4 (a reconstruction), "
+                     "SIER2, SIER4, MRDL (axes 1-2-3-2-1, DLM's order and LAMMPS's NO_SQUISH map), MRDL-reversed (3-2-1-2-3, "
+                     "the full step on the smallest moment), SEJ4 (a reconstruction), "
                      "or SIER2/X, SIER4/X with the free rotation by scheme X "
                      "(RS4-S5-McLachlan:CBA, or SCHEME:PERM:LABEL such as P1:BAC:5 solved for the water molecule)")
       ->required();

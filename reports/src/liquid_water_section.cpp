@@ -179,7 +179,7 @@ report_section section(const report_options& options, const budget& b) {
        << " kcal/mol/Å against forces up to " << number(scale, 3) << ".\n\n"
        << "NVE at h = 1 fs with the same map: LAMMPS `fix rigid/nve/small` (NO_SQUISH; its principal axes in decreasing "
           "moment, planar rotations 3, 2, 1, 2, 3) is rotlie's Strang-TV with the table rotor ABCBA2:ABC in increasing-moment "
-          "axes; 100 steps agree to 3e-13 Å (test liquid_water_lammps_test).\n\n"
+          "axes, i.e. MRDL; 100 steps agree to 3e-13 Å (test liquid_water_lammps_test).\n\n"
        << "| program | threads/ranks | wall ms/step | CPU ms/step | ΔE/ΔV (%) |\n|:--|--:|--:|--:|--:|\n";
     for (int threads : {1, 2}) {
       models::liquid_water_options<double> d1 = dsf;

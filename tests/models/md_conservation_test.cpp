@@ -51,7 +51,7 @@ double allowed(const std::string& name, long steps) {
   return static_cast<double>(steps * flights) * DBL_EPSILON;
 }
 
-const char* const conserving[] = {"SIER2", "SIER4", "MRDL", "MRDL-LAMMPS", "SIER4/RS4-S5-McLachlan:CBA", "SIER2/ABCBA4-SS3-Yoshida:ABC"};
+const char* const conserving[] = {"SIER2", "SIER4", "MRDL", "MRDL-reversed", "SIER4/RS4-S5-McLachlan:CBA", "SIER2/ABCBA4-SS3-Yoshida:ABC"};
 
 }  // namespace
 

@@ -134,7 +134,7 @@ BOOST_AUTO_TEST_CASE(free_water_sier2_is_round_off_and_mrdl_second_order) {
   const auto sier2 = run_free_water(scene, options("SIER2", 8, 2, 4));
   BOOST_TEST(sier2.delta.back() < 1e-11);
   // MRDL (either axis order) is 2nd order: δ at fixed t scales as h², so τ(h/2)/τ(h) = 4
-  for (const char* name : {"MRDL", "MRDL-LAMMPS"}) {
+  for (const char* name : {"MRDL", "MRDL-reversed"}) {
     const auto coarse = run_free_water(scene, options(name, 2, 1, 20));
     const auto fine = run_free_water(scene, options(name, 1, 1, 20));
     BOOST_TEST_CONTEXT(name) BOOST_TEST(std::abs(fine.tau_ps / coarse.tau_ps / 4 - 1) < 0.1);

@@ -31,14 +31,14 @@ std::string refusal_of(const std::string& name) {
 BOOST_AUTO_TEST_CASE(the_registry_names_tables_rotors_and_costs) {
   const auto sier2 = models::md_integrator_named("SIER2"), sier4 = models::md_integrator_named("SIER4");
   const auto mrdl = models::md_integrator_named("MRDL"), sej4 = models::md_integrator_named("SEJ4");
-  const auto lammps = models::md_integrator_named("MRDL-LAMMPS");
+  const auto reversed = models::md_integrator_named("MRDL-reversed");
   BOOST_TEST(sier2.tv_table == "Strang-TV");
   BOOST_TEST(sier4.tv_table == "PEFRL-TV");
   BOOST_TEST((sier2.rotor == models::rotor_kind::exact && sier4.rotor == models::rotor_kind::exact));
   BOOST_TEST((mrdl.rotor == models::rotor_kind::table));
-  BOOST_TEST(mrdl.rotor_table == "ABCBA2:ABC");  // DLM's order 1-2-3-2-1
-  BOOST_TEST((lammps.rotor == models::rotor_kind::table && lammps.tv_table == "Strang-TV" && lammps.f == 1));
-  BOOST_TEST(lammps.rotor_table == "ABCBA2:CBA");  // LAMMPS's NO_SQUISH order 3-2-1-2-3
+  BOOST_TEST(mrdl.rotor_table == "ABCBA2:ABC");  // DLM's order 1-2-3-2-1, LAMMPS's NO_SQUISH map
+  BOOST_TEST((reversed.rotor == models::rotor_kind::table && reversed.tv_table == "Strang-TV" && reversed.f == 1));
+  BOOST_TEST(reversed.rotor_table == "ABCBA2:CBA");  // the reversed order 3-2-1-2-3, full step on the smallest moment
   BOOST_TEST((sej4.rotor == models::rotor_kind::sej4));
   BOOST_TEST(sier2.f == 1);
   BOOST_TEST(sier4.f == 4);
@@ -48,7 +48,7 @@ BOOST_AUTO_TEST_CASE(the_registry_names_tables_rotors_and_costs) {
   BOOST_TEST(x.tv_table == "PEFRL-TV");
   BOOST_TEST(x.rotor_table == "P1:BAC:5");
   BOOST_TEST(x.f == 4);
-  for (const char* bad : {"SIER3", "sier2", "", "SIER2/", "SIER4/a b", "MRDL/ABCBA2", "MRDL-lammps", "MRDL-"})
+  for (const char* bad : {"SIER3", "sier2", "", "SIER2/", "SIER4/a b", "MRDL/ABCBA2", "MRDL-lammps", "MRDL-LAMMPS", "MRDL-Reversed", "MRDL-"})
     BOOST_TEST(!refusal_of(bad).empty(), bad);
   BOOST_TEST(refusal_of("SIER3").find("unknown integrator 'SIER3'") != std::string::npos);
   BOOST_TEST(refusal_of("SIER2\x01").find("\\x01") != std::string::npos);

@@ -3,17 +3,20 @@
 //   SIER2        Strang-TV + the exact free rotation              (vZS eq. 7,  f = 1)
 //   SIER4        PEFRL-TV  + the exact free rotation              (vZS eq. 8 with the corrected h5, f = 4)
 //   MRDL         Strang-TV + the table rotor ABCBA2:ABC           (f = 1)
-//   MRDL-LAMMPS  Strang-TV + the table rotor ABCBA2:CBA           (f = 1)
+//   MRDL-reversed  Strang-TV + the table rotor ABCBA2:CBA         (f = 1)
 //   SEJ4         Strang-TV + sej4_rotor (a RECONSTRUCTION, see sej4_rotor.hpp)   (f = 1)
 //   SIER2/X, SIER4/X   the free rotation by scheme table X (a reference name with its permutation,
 //                      or a dedicated SCHEME:PERM:LABEL the caller resolves for the body)
 // MRDL's rotor: the planar rotations of Dullweber, Leimkuhler & McLachlan (1997) in their order,
 // axes 1, 2, 3, 2, 1 with the full step on axis 3 (ABCBA2, permutation ABC); for water
 // (I1 < I2 < I3) the full step falls on the slowest axis. This is the order with which vZS's τ and
-// Table I are reproduced (the report's vzs section). MRDL-LAMMPS is the same splitting in the order
-// of LAMMPS's NO_SQUISH, axes 3, 2, 1, 2, 3 with the full step on axis 1 (ABCBA2:CBA): also 2nd
-// order, but its leapfrog remainder is larger for water (the full step on the fastest axis), and
-// it is the map that MD runs with LAMMPS's fix rigid/nve make. Both are tested against the
+// Table I are reproduced (the report's vzs section), and it is also the map of LAMMPS's NO_SQUISH
+// (fix rigid/nve, rigid/nve/small): LAMMPS numbers the principal axes by decreasing moment, so its
+// sequence 3, 2, 1, 2, 3 with the full step on its axis 1 is, in rotlie's increasing-moment
+// numbering, 1, 2, 3, 2, 1 with the full step on the largest moment (checked against a LAMMPS run
+// in liquid_water_lammps_test). MRDL-reversed is MRDL with the axis order reversed, 3, 2, 1, 2, 3
+// with the full step on the smallest moment (ABCBA2:CBA): also 2nd order, but for water the full
+// step falls on the fastest axis and its leapfrog remainder is larger. Both are tested against the
 // NO_SQUISH quaternion form in their own axis order (no_squish.hpp).
 #include <optional>
 #include <stdexcept>
@@ -33,7 +36,7 @@ namespace rotlie::models {
 enum class rotor_kind { exact, table, sej4 };
 
 struct md_integrator {
-  std::string name;         ///< SIER2, SIER4, MRDL, MRDL-LAMMPS, SEJ4, SIER2/X, SIER4/X
+  std::string name;         ///< SIER2, SIER4, MRDL, MRDL-reversed, SEJ4, SIER2/X, SIER4/X
   std::string tv_table;     ///< Strang-TV or PEFRL-TV
   rotor_kind rotor = rotor_kind::exact;
   std::string rotor_table;  ///< the free-rotation table's name (rotor_kind::table only)
@@ -42,13 +45,14 @@ struct md_integrator {
 
 /// The named integrators (SIER2/X and SIER4/X take any table name X).
 inline const std::vector<std::string>& md_integrator_names() {
-  static const std::vector<std::string> names = {"SIER2", "SIER4", "MRDL", "MRDL-LAMMPS", "SEJ4"};
+  static const std::vector<std::string> names = {"SIER2", "SIER4", "MRDL", "MRDL-reversed", "SEJ4"};
   return names;
 }
 
-/// MRDL's free rotor, DLM's order 1-2-3-2-1, and MRDL-LAMMPS's, NO_SQUISH's 3-2-1-2-3 (see the header comment).
+/// MRDL's free rotor, axes 1-2-3-2-1 (DLM's order and LAMMPS's map), and MRDL-reversed's, 3-2-1-2-3
+/// (see the header comment).
 inline constexpr const char* mrdl_rotor_table = "ABCBA2:ABC";
-inline constexpr const char* mrdl_lammps_rotor_table = "ABCBA2:CBA";
+inline constexpr const char* mrdl_reversed_rotor_table = "ABCBA2:CBA";
 
 /// An integrator by name; throws std::invalid_argument with a one-line reason for an unknown name.
 inline md_integrator md_integrator_named(std::string_view name) {
@@ -57,7 +61,7 @@ inline md_integrator md_integrator_named(std::string_view name) {
   if (n == "SIER2") return {n, "Strang-TV", rotor_kind::exact, "", f_of("Strang-TV")};
   if (n == "SIER4") return {n, "PEFRL-TV", rotor_kind::exact, "", f_of("PEFRL-TV")};
   if (n == "MRDL") return {n, "Strang-TV", rotor_kind::table, mrdl_rotor_table, f_of("Strang-TV")};
-  if (n == "MRDL-LAMMPS") return {n, "Strang-TV", rotor_kind::table, mrdl_lammps_rotor_table, f_of("Strang-TV")};
+  if (n == "MRDL-reversed") return {n, "Strang-TV", rotor_kind::table, mrdl_reversed_rotor_table, f_of("Strang-TV")};
   if (n == "SEJ4") return {n, "Strang-TV", rotor_kind::sej4, "", f_of("Strang-TV")};
   for (const auto& [prefix, tv] : {std::pair<std::string, std::string>{"SIER2/", "Strang-TV"}, {"SIER4/", "PEFRL-TV"}})
     if (n.rfind(prefix, 0) == 0) {
@@ -68,7 +72,7 @@ inline md_integrator md_integrator_named(std::string_view name) {
       return {n, tv, rotor_kind::table, table, f_of(tv)};
     }
   throw std::invalid_argument("unknown integrator '" + schemes::printable_text(n) +
-                              "' (SIER2, SIER4, MRDL, MRDL-LAMMPS, SEJ4, SIER2/TABLE, SIER4/TABLE)");
+                              "' (SIER2, SIER4, MRDL, MRDL-reversed, SEJ4, SIER2/TABLE, SIER4/TABLE)");
 }
 
 /// The composition of an integrator for bodies of mass m and moments I under `potential`, handed

@@ -6,9 +6,11 @@
 //     (π, q) ← cos(φt)(π, q) + sin(φt)(P_k π, P_k q),   φ = π·P_k q / (4 I_k),
 // i.e. q ← q ∘ exp(e_k φt): the body turns about its axis k by G_k t/I_k, the planar rotation of
 // the matrix form (sub_flows.hpp). One free step is the symmetric sequence a (t/2), b (t/2), c (t),
-// b (t/2), a (t/2) for an order of the axes (a, b, c): LAMMPS's 3, 2, 1 is the same map as the table
-// ABCBA2:CBA (MRDL-LAMMPS), Dullweber, Leimkuhler & McLachlan's 1, 2, 3 the table ABCBA2:ABC (MRDL;
-// md_integrators.hpp).
+// b (t/2), a (t/2) for an order of the axes (a, b, c), numbered by increasing moment as everywhere
+// in rotlie. Dullweber, Leimkuhler & McLachlan's 1, 2, 3 is the table ABCBA2:ABC (MRDL;
+// md_integrators.hpp), and so is LAMMPS's: it numbers the axes by decreasing moment, so its
+// 3, 2, 1 with the full step on its axis 1 is rotlie's 1, 2, 3 with the full step on the largest
+// moment. The reversed order 3, 2, 1 (full step on the smallest moment) is ABCBA2:CBA (MRDL-reversed).
 // A torque kick is π += c h 2 q ∘ (0, τ_body), i.e. G += c h τ_body.
 #include <array>
 #include <cmath>
@@ -122,8 +124,10 @@ void no_squish_rotate(quaternion_state<T>& s, int k, const T& moment, const T& t
 
 /// An order of the body axes (0-based) for the sequence a, b, c, b, a; c takes the full step.
 using axis_order = std::array<int, 3>;
-inline constexpr axis_order lammps_axis_order{2, 1, 0};  ///< LAMMPS's NO_SQUISH: 3, 2, 1, 2, 3
-inline constexpr axis_order dlm_axis_order{0, 1, 2};     ///< Dullweber, Leimkuhler & McLachlan: 1, 2, 3, 2, 1
+inline constexpr axis_order dlm_axis_order{0, 1, 2};  ///< Dullweber, Leimkuhler & McLachlan: 1, 2, 3, 2, 1
+/// LAMMPS's NO_SQUISH (its axes 3, 2, 1, 2, 3 by decreasing moment): DLM's order in rotlie's numbering
+inline constexpr axis_order lammps_axis_order = dlm_axis_order;
+inline constexpr axis_order reversed_axis_order{2, 1, 0};  ///< 3, 2, 1, 2, 3: the full step on the smallest moment
 
 /// The NO_SQUISH free rotor in a given axis order (LAMMPS's by default).
 template <class T>
