@@ -5,44 +5,12 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "rotlie/bch/evaluate.hpp"
-#include "rotlie/bch/lie_series.hpp"
+#include "rotlie/bch/nested_bch.hpp"
 #include "rotlie/lie/poisson_bracket.hpp"
 #include "rotlie/lie/theorems.hpp"
 
 namespace rotlie::bch {
 namespace {
-
-// The Lie–Poisson algebra truncated at a maximal order: terms of order > max_order
-// (polynomial degree > max_order + 1) are dropped as soon as they appear.
-template <class R>
-struct truncated_poisson_algebra {
-  int max_order;
-  lie::polynomial<R> bracket(const lie::polynomial<R>& a, const lie::polynomial<R>& b) const {
-    lie::polynomial<R> out;
-    const auto max_degree = static_cast<std::uint32_t>(max_order + 1);
-    for (const auto& [ma, ca] : a.terms())
-      for (const auto& [mb, cb] : b.terms()) {
-        if (ma.degree() + mb.degree() - 1 > max_degree) continue;  // {deg p, deg q} has degree p + q − 1
-        const R product = ca * cb;
-        lie::bracket_of_monomials(ma, mb, [&](const lie::monomial& m, long c) { out.add_term(m, R(c) * product); });
-      }
-    return out;
-  }
-  void add_scaled(lie::polynomial<R>& acc, const cln::cl_RA& c, const lie::polynomial<R>& x) const {
-    const R factor = scalar(c);
-    for (const auto& [m, v] : x.terms()) acc.add_term(m, factor * v);
-  }
-  static R scalar(const cln::cl_RA& c) {
-    if constexpr (std::is_same_v<R, GiNaC::ex>)
-      return GiNaC::numeric(cln::cl_N(c));
-    else if constexpr (std::is_same_v<R, double>)
-      return cln::double_approx(c);
-    else
-      return R(c);
-  }
-  lie::polynomial<R> zero() const { return {}; }
-};
 
 bool is_palindrome(const std::vector<stage_element>& s) {
   for (std::size_t i = 0; i < s.size() / 2; ++i) {
@@ -108,8 +76,10 @@ void check_order(int max_order) {
     throw std::invalid_argument("the order must be between 1 and " + std::to_string(max_remainder_order));
 }
 
+}  // namespace
+
 // The series depend only on the order: computed once per order for the whole program.
-const lie_series& cached_series(int max_order, bool symmetric) {
+const lie_series& cached_bch_series(int max_order, bool symmetric) {
   static std::mutex guard;
   static std::map<std::pair<int, bool>, lie_series> cache;
   const std::lock_guard<std::mutex> lock(guard);
@@ -119,29 +89,6 @@ const lie_series& cached_series(int max_order, bool symmetric) {
                        symmetric ? symmetric_bch_series(max_order) : bch_series(max_order)).first;
   return it->second;
 }
-
-// x_i = c_i X_i for each stage; palindromes by nested symmetric BCH from the middle outwards
-// (log(e^x e^Z e^x)), others by nested BCH from the left.
-template <class R>
-std::vector<lie::polynomial<R>> nested_bch(const std::vector<lie::polynomial<R>>& x, bool palindrome, int max_order) {
-  const truncated_poisson_algebra<R> algebra{max_order};
-  lie::polynomial<R> z;
-  if (palindrome) {
-    const auto& series = cached_series(max_order, true);
-    const std::size_t n = x.size();
-    z = x[n / 2];
-    for (std::size_t i = n / 2; i-- > 0;) z = evaluate(series, std::vector<lie::polynomial<R>>{x[i], z}, algebra, max_order);
-  } else {
-    const auto& series = cached_series(max_order, false);
-    z = x.front();
-    for (std::size_t i = 1; i < x.size(); ++i) z = evaluate(series, std::vector<lie::polynomial<R>>{z, x[i]}, algebra, max_order);
-  }
-  std::vector<lie::polynomial<R>> by_order(static_cast<std::size_t>(max_order) + 1);
-  for (const auto& [m, c] : z.terms()) by_order[m.degree() - 1].add_term(m, c);
-  return by_order;
-}
-
-}  // namespace
 
 modified_hamiltonian compute_modified_hamiltonian(const std::vector<stage_element>& stages, int max_order) {
   check_order(max_order);

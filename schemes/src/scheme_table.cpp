@@ -136,8 +136,8 @@ scheme_table parse_scheme_table(std::string_view text) {
     } else if (key == "permutation") {
       t.permutation = rest;
     } else if (key == "order") {
-      if (rest != "2" && rest != "4") fail(number, "order must be 2 or 4, got '" + printable_text(rest) + "'");
-      t.order = rest == "2" ? 2 : 4;
+      if (rest != "2" && rest != "4" && rest != "6") fail(number, "order must be 2, 4 or 6, got '" + printable_text(rest) + "'");
+      t.order = rest[0] - '0';
     } else if (key == "symmetric") {
       if (rest != "true" && rest != "false") fail(number, "symmetric must be true or false");
       t.symmetric = rest == "true";

@@ -32,7 +32,7 @@ class polynomial {
   /// Adds c·m, normalising the coefficient and dropping it if it cancels to zero.
   void add_term(const monomial& m, R c) {
     auto [it, inserted] = terms_.try_emplace(m, std::move(c));
-    if (!inserted) it->second = it->second + c;
+    if (!inserted) it->second += c;
     traits::normalize(it->second);
     if (traits::is_zero(it->second)) terms_.erase(it);
   }
