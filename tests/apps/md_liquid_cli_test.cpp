@@ -1,0 +1,96 @@
+// `rotlie md --scene liquid-water` end to end: the JSON contract of the issue, a state file written on
+// the first run and reloaded by the next (which then gives the same numbers with another thread count),
+// and a state file of another system refused with one line, the file left as it was.
+// One equilibration of 365 molecules (about 30 s of CPU): labelled cli, not fast.
+#define BOOST_TEST_MODULE md_liquid_cli
+#include <boost/test/unit_test.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct run_result {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+const fs::path& scratch() {
+  static const fs::path dir = [] {
+    const fs::path d = fs::temp_directory_path() / ("rotlie-md-liquid-" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+run_result run(const std::string& args) {
+  const std::string cmd = std::string(ROTLIE_BINARY) + " " + args + " >" + (scratch() / "out").string() + " 2>" +
+                          (scratch() / "err").string() + " </dev/null";
+  const int raw = std::system(cmd.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), slurp(scratch() / "out"), slurp(scratch() / "err")};
+}
+
+std::string liquid(const std::string& extra) {
+  return "md --scene liquid-water --integrator MRDL --h 2 --T 0.02 --runs 1 --molecules 365 --state " +
+         (scratch() / "w.state").string() + " " + extra;
+}
+
+struct cleanup {
+  ~cleanup() { fs::remove_all(scratch()); }
+};
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(liquid_water_runs_saves_reloads_and_refuses_another_system) {
+  const cleanup at_exit;
+  // first run: equilibrates, writes the state, answers in JSON with the contract's fields
+  const auto first = run(liquid("--threads 2 --json"));
+  BOOST_TEST_REQUIRE(first.status == 0, first.err);
+  const auto j = nlohmann::json::parse(first.out);
+  for (const char* key : {"scene", "integrator", "h_fs", "f", "runs", "dE_over_dV_percent", "potential_kcal_per_mol", "ms_per_step"})
+    BOOST_TEST(j.contains(key), key);
+  BOOST_TEST(j["scene"] == "liquid-water");
+  BOOST_TEST(j["integrator"] == "MRDL");
+  BOOST_TEST(j["h_fs"].get<double>() == 2.0);
+  BOOST_TEST(j["f"].get<int>() == 1);
+  BOOST_TEST(j["runs"].get<int>() == 1);
+  BOOST_TEST(j["dE_over_dV_percent"].size() == 2u);
+  BOOST_TEST(j["dE_over_dV_percent"][0].get<double>() > 0);
+  // TIP3P near 298 K: about −9.9 kcal/mol per molecule (Jorgensen et al. 1983: −9.86)
+  BOOST_TEST(j["potential_kcal_per_mol"].get<double>() > -11.0);
+  BOOST_TEST(j["potential_kcal_per_mol"].get<double>() < -8.5);
+  BOOST_TEST(j["ms_per_step"].get<double>() > 0);
+  BOOST_TEST_REQUIRE(fs::exists(scratch() / "w.state"));
+
+  // second run from the saved state with one thread: the same numbers (no equilibration, thread-independent forces)
+  const auto second = run(liquid("--threads 1 --json"));
+  BOOST_TEST_REQUIRE(second.status == 0, second.err);
+  const auto k = nlohmann::json::parse(second.out);
+  BOOST_TEST(k["dE_over_dV_percent"][0].get<double>() == j["dE_over_dV_percent"][0].get<double>());
+  BOOST_TEST(k["potential_kcal_per_mol"].get<double>() == j["potential_kcal_per_mol"].get<double>());
+
+  // the state of 365 molecules for a run of 400: one line, status 2, nothing on stdout, the file unchanged
+  const std::string before = slurp(scratch() / "w.state");
+  const auto other = run("md --scene liquid-water --integrator MRDL --h 2 --T 0.02 --runs 1 --molecules 400 --state " +
+                         (scratch() / "w.state").string());
+  BOOST_TEST(other.status == 2);
+  BOOST_TEST(other.out.empty());
+  BOOST_TEST(other.err.rfind("rotlie: error: ", 0) == 0u, other.err);
+  BOOST_TEST(std::count(other.err.begin(), other.err.end(), '\n') == 1);
+  BOOST_TEST(slurp(scratch() / "w.state") == before);
+}
