@@ -4,10 +4,12 @@
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "arguments.hpp"
 #include "progress.hpp"
 #include "rotlie/models/scenes/liquid_water_experiment.hpp"
+#include "rotlie/models/scenes/water_model.hpp"
 #include "scheme_lookup.hpp"
 
 namespace rotlie::app {
@@ -39,10 +41,30 @@ models::liquid_water_run_options checked(const md_liquid_water_options& o) {
   return r;
 }
 
+// The rotor table of SIER2/X or SIER4/X (a reference name, or SCHEME:PERM:LABEL solved for the
+// TIP3P body); empty for the integrators with their own rotor. A table file solved for another
+// body is refused by the lookup.
+std::optional<schemes::scheme_table> rotor_of(const std::string& integrator) {
+  const auto spec = models::md_integrator_named(integrator);
+  if (spec.rotor != models::rotor_kind::table) return std::nullopt;
+  try {
+    return lookup_scheme(spec.rotor_table, parse_inertia_option(models::tip3p_body_text()));
+  } catch (const usage_error& e) {
+    std::string why = e.what();
+    if (why.rfind("--scheme: ", 0) == 0) why = why.substr(10);
+    const std::string force_hint = " (pass --force to use it anyway)";  // md has no --force
+    if (why.size() > force_hint.size() && why.compare(why.size() - force_hint.size(), force_hint.size(), force_hint) == 0)
+      why.erase(why.size() - force_hint.size());
+    throw usage_error("--integrator " + integrator + ": " + why);
+  }
+}
+
 }  // namespace
 
 int run_md_liquid_water(const md_liquid_water_options& options) {
-  const auto o = checked(options);
+  auto o = checked(options);
+  const auto rotor = rotor_of(o.integrator);  // before the equilibration: a bad name costs nothing
+  o.rotor_table = rotor ? &*rotor : nullptr;
   progress_line progress;
   auto show = [&](const std::string& line) { progress.show(line); };
   models::rigid_bodies_state<double> start;

@@ -365,6 +365,7 @@ const std::vector<bad_input> cases = {
   {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--T", "-1"}, usage, "--T must be positive"},
   {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--seed", "3"}, usage, "--seed does not apply to the liquid-water scene"},
   {{"md", "--scene", "liquid-water", "--integrator", "VERLET", "--h", "1"}, usage, "unknown integrator 'VERLET'"},
+  {{"md", "--scene", "liquid-water", "--integrator", "SIER2/N9:BAC:1", "--h", "1"}, usage, "unknown dedicated scheme 'N9'"},
   {{"md", "--scene", "free-water", "--integrator", "SIER2", "--h", "1", "--molecules", "512"}, usage, "--molecules applies to the liquid-water scene only"},
   {{"md", "--scene", "free-water", "--integrator", "VERLET", "--h", "1"}, usage, "unknown integrator 'VERLET'"},
   {{"md", "--scene", "free-water", "--integrator", "SIER2/", "--h", "1"}, usage, "needs a scheme table name"},

@@ -1,6 +1,7 @@
 // `rotlie md --scene liquid-water` end to end: the JSON contract of the issue, a state file written on
 // the first run and reloaded by the next (which then gives the same numbers with another thread count),
-// and a state file of another system refused with one line, the file left as it was.
+// a dedicated rotor solved for the TIP3P body run from the saved state (a table solved for another
+// body refused), and a state file of another system refused with one line, the file left as it was.
 // One equilibration of 365 molecules (about 30 s of CPU): labelled cli, not fast.
 #define BOOST_TEST_MODULE md_liquid_cli
 #include <boost/test/unit_test.hpp>
@@ -8,6 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -45,8 +47,8 @@ run_result run(const std::string& args) {
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), slurp(scratch() / "out"), slurp(scratch() / "err")};
 }
 
-std::string liquid(const std::string& extra) {
-  return "md --scene liquid-water --integrator MRDL --h 2 --T 0.02 --runs 1 --molecules 365 --state " +
+std::string liquid(const std::string& extra, const std::string& integrator = "MRDL") {
+  return "md --scene liquid-water --integrator " + integrator + " --h 2 --T 0.02 --runs 1 --molecules 365 --state " +
          (scratch() / "w.state").string() + " " + extra;
 }
 
@@ -83,6 +85,28 @@ BOOST_AUTO_TEST_CASE(liquid_water_runs_saves_reloads_and_refuses_another_system)
   const auto k = nlohmann::json::parse(second.out);
   BOOST_TEST(k["dE_over_dV_percent"][0].get<double>() == j["dE_over_dV_percent"][0].get<double>());
   BOOST_TEST(k["potential_kcal_per_mol"].get<double>() == j["potential_kcal_per_mol"].get<double>());
+
+  // SIER2 with the dedicated rotor N2 BAC (2) solved for TIP3P, from the saved state (no second equilibration)
+  const auto dedicated = run(liquid("--json", "SIER2/N2:BAC:2"));
+  BOOST_TEST_REQUIRE(dedicated.status == 0, dedicated.err);
+  const auto d = nlohmann::json::parse(dedicated.out);
+  BOOST_TEST(d["integrator"] == "SIER2/N2:BAC:2");
+  BOOST_TEST(d["f"].get<int>() == 1);
+  BOOST_TEST_REQUIRE(d["dE_over_dV_percent"][0].is_number());
+  const double ratio = d["dE_over_dV_percent"][0].get<double>();
+  BOOST_TEST((std::isfinite(ratio) && ratio > 0), ratio);
+
+  // the same scheme solved for the free-water body (another body): refused before any run
+  const auto tables = scratch() / "tables";
+  BOOST_TEST_REQUIRE(run("solve --family N --scheme N2 --perm BAC --inertia water --out " + tables.string()).status == 0);
+  BOOST_TEST_REQUIRE(fs::exists(tables / "N2_BAC_2.scheme"));
+  const std::string in_tables = "cd " + tables.string() + " && " + ROTLIE_BINARY + " " +
+                                liquid("", "SIER2/N2_BAC_2.scheme") + " >" + (scratch() / "out").string() + " 2>" + (scratch() / "err").string();
+  const int raw = std::system(in_tables.c_str());
+  BOOST_TEST((WIFEXITED(raw) && WEXITSTATUS(raw) == 2));
+  const std::string refused = slurp(scratch() / "err");
+  BOOST_TEST(refused.find("was solved for the body") != std::string::npos, refused);
+  BOOST_TEST(std::count(refused.begin(), refused.end(), '\n') == 1);
 
   // the state of 365 molecules for a run of 400: one line, status 2, nothing on stdout, the file unchanged
   const std::string before = slurp(scratch() / "w.state");

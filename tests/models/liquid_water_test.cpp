@@ -1,8 +1,10 @@
 // Liquid water's potential (TIP3P, smooth molecular cutoff): forces and torques are minus the
 // gradient of the energy (central differences in long double, every term, the switch included),
 // Newton's third law, invariance under a rigid motion of the whole configuration, the cell list
-// against all pairs, the same bits for one and two threads, and the state file.
+// against all pairs, the same bits for one and two threads, the state file, and the moments' text
+// that dedicated rotors are solved for.
 #define BOOST_TEST_MODULE liquid_water
+#include <boost/multiprecision/float128.hpp>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
@@ -15,6 +17,7 @@
 #include "rotlie/models/scenes/water_observables.hpp"
 #include "rotlie/models/scenes/water_setup.hpp"
 #include "rotlie/models/scenes/water_state_io.hpp"
+#include "rotlie/models/scenes/water_model.hpp"
 
 using namespace rotlie::models;
 
@@ -292,4 +295,19 @@ BOOST_AUTO_TEST_CASE(a_state_file_round_trips_and_refuses_another_system) {
 BOOST_AUTO_TEST_CASE(a_box_smaller_than_twice_the_cutoff_is_refused) {
   BOOST_CHECK_THROW(water_in_box<double>(21.9), std::invalid_argument);
   BOOST_CHECK_NO_THROW(water_in_box<double>(22.1));
+}
+
+BOOST_AUTO_TEST_CASE(the_moments_text_is_the_geometry_to_18_digits_and_planar) {
+  // the same geometry evaluated in float128 (34 digits): the text is it to 18 significant digits
+  using quad = boost::multiprecision::float128;
+  const auto geometry = tip3p<quad>().moments;
+  for (int a = 0; a < 3; ++a) {
+    const quad text = parse_scalar<quad>(tip3p_moments_text[a]);
+    BOOST_TEST(static_cast<double>(abs(text - geometry[a]) / geometry[a]) < 1e-17, "axis " << a);
+  }
+  // I3 is the exact sum of the decimals I1 + I2 (18 decimals fit float128 exactly as integers)
+  const quad unit = parse_scalar<quad>("1e-18");
+  const quad I1 = round(parse_scalar<quad>(tip3p_moments_text[0]) / unit), I2 = round(parse_scalar<quad>(tip3p_moments_text[1]) / unit),
+             I3 = round(parse_scalar<quad>(tip3p_moments_text[2]) / unit);
+  BOOST_TEST((I3 == I1 + I2));
 }

@@ -23,6 +23,9 @@ namespace rotlie::models {
 
 struct liquid_water_run_options {
   std::string integrator = "SIER2";
+  /// SIER2/X and SIER4/X with a dedicated X: the table solved for TIP3P (tip3p_body_text); nullptr
+  /// looks X up among the reference schemes.
+  const schemes::scheme_table* rotor_table = nullptr;
   double h_fs = 1;          ///< the step h itself (SIER4 at h/f = 1 fs is h = 4 fs)
   double T_ps = 1;          ///< length of one run
   int runs = 9;
@@ -145,7 +148,7 @@ inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& 
   r.molecules = o.molecules;
   r.box = w.options().box;
   const long steps = std::max(1L, std::lround(o.T_ps * 1000 / o.h_fs));
-  with_md_integrator(spec, nullptr, model.mass, model.moments, w, [&](const auto& method) {
+  with_md_integrator(spec, o.rotor_table, model.mass, model.moments, w, [&](const auto& method) {
     const auto& sys = method.system();
     auto s = start;
     s.forces_current = false;
