@@ -15,6 +15,7 @@ symbolic=(
   libgsl-dev                     # bench/ only: GSL against Boost.Math for the exact flow (the libraries do not use it)
   libcli11-dev nlohmann-json3-dev # apps/rotlie, reports/
   libopenmpi-dev openmpi-bin     # rotlie map over MPI ranks (optional: without them it runs as one process)
+  lammps                         # liquid water side by side with LAMMPS (optional: the comparison is skipped without lmp)
   libbenchmark-dev               # bench/
   gnuplot-nox                    # report figures
 )
