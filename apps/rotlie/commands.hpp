@@ -77,6 +77,7 @@ namespace rotlie::app {
 struct map_options {
   std::string family, grid, out;
   bool resume = false, json = false;
+  bool exact = false;  ///< every body by the exact solver (default: continuation along rows, confirmed by it)
 };
 int run_map(const map_options& options);
 

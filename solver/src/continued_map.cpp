@@ -1,0 +1,248 @@
+#include "rotlie/solver/continued_map.hpp"
+
+#include <cln/float.h>
+#include <cln/real.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+
+#include "rotlie/solver/continuation.hpp"
+#include "rotlie/solver/family_systems.hpp"
+
+namespace rotlie::solver {
+namespace {
+
+using body_point = std::array<long double, 2>;  ///< (w1, w2) = (1/I1, 1/I2) at I3 = 1
+
+body_point inverse_moments(const grid_body& g) {
+  const auto unit = scaled_to_unit_I3(g.body);
+  return {1.0L / static_cast<long double>(cln::double_approx(unit.I[0])),
+          1.0L / static_cast<long double>(cln::double_approx(unit.I[1]))};
+}
+
+bool by_first_coefficient(const point3& a, const point3& b) { return a[0] < b[0]; }
+
+// One system at one body: its real solutions from the exact solver, or carried along a confirmed chain.
+struct system_state {
+  std::vector<point3> x;  ///< exact: sorted by x_0; carried: in the order of the chain's start
+  bool exact = false;
+  bool can_seed = false;  ///< regular, every root kept: a start for continuation
+  std::vector<dedicated_solution> solutions;  ///< exact only: the exact solver's, with their remainders
+  system_report report;                       ///< exact only
+};
+
+system_state solve_system_exactly(const body_system& sys, const grid_body& g) {
+  const auto r = solve_dedicated(g.body, {sys.scheme}, {sys.permutation}, map_digits);
+  system_state out;
+  out.exact = true;
+  out.report = r.systems.at(0);
+  out.can_seed = !out.report.degenerate && out.report.discarded == 0 && out.report.uncertified == 0;
+  out.solutions = r.solutions;
+  std::sort(out.solutions.begin(), out.solutions.end(), [](const auto& a, const auto& b) { return a.label < b.label; });
+  for (const auto& s : out.solutions) {
+    point3 x{0, 0, 0};
+    for (std::size_t k = 0; k < s.free.size(); ++k)
+      for (const auto& [name, value] : s.coefficients)
+        if (name == s.free[k]) x[k] = static_cast<long double>(cln::double_approx(value));
+    out.x.push_back(x);
+  }
+  return out;
+}
+
+// The solutions of one system carried from w_from to w_to along the segment between them in
+// (w1, w2): in one step, else in 2, 4, …, 64 equal steps (the first that holds at every step). The
+// first step starts from a linear extrapolation of the chain (`before`: the solutions one grid step
+// earlier) when there is one. nullopt when no subdivision holds: a real solution is born or dies, or
+// runs off, near this step; the exact solver decides there.
+std::optional<std::vector<point3>> carry(const body_system& system, const std::vector<point3>& from,
+                                         const std::vector<point3>* before, body_point w_from, body_point w_to) {
+  constexpr int finest = 6;
+  for (int level = 0; level <= finest; ++level) {
+    const int steps = 1 << level;
+    std::vector<point3> x = from, predicted;
+    if (before && before->size() == from.size()) {
+      predicted.resize(from.size());
+      for (std::size_t i = 0; i < from.size(); ++i)
+        for (int c = 0; c < 3; ++c) predicted[i][c] = from[i][c] + (from[i][c] - (*before)[i][c]) / steps;
+    }
+    bool held = true;
+    for (int step = 1; step <= steps; ++step) {
+      const long double f = static_cast<long double>(step) / steps;
+      const auto numeric =
+          evaluate_system(system, w_from[0] + f * (w_to[0] - w_from[0]), w_from[1] + f * (w_to[1] - w_from[1]));
+      auto moved = continue_solutions(numeric, x, predicted);
+      if (!moved) {
+        held = false;
+        break;
+      }
+      predicted.resize(x.size());
+      for (std::size_t i = 0; i < x.size(); ++i)
+        for (int c = 0; c < 3; ++c) predicted[i][c] = 2 * (*moved)[i][c] - x[i][c];
+      x = std::move(*moved);
+    }
+    if (held) return x;
+  }
+  return std::nullopt;
+}
+
+// The carried solutions are the exact ones: as many, each within 1e-8.
+bool same_solutions(std::vector<point3> carried, const std::vector<point3>& exact) {
+  if (carried.size() != exact.size()) return false;
+  std::sort(carried.begin(), carried.end(), by_first_coefficient);
+  for (std::size_t i = 0; i < exact.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      if (std::fabs(carried[i][c] - exact[i][c]) > 1e-8L * (1 + std::fabs(exact[i][c]))) return false;
+  return true;
+}
+
+// One system along one row. The exact solver runs at both ends. A chain from an exact body that
+// stops at a body (a solution born, dying or running off there) is confirmed at the body before by
+// the exact solver, which also solves the body where it stopped; a chain that reaches an exact body
+// with other solutions than the exact ones (a solution born on the way, unseen) is cut at the middle.
+class system_row {
+ public:
+  system_row(const body_system& system, const std::vector<grid_body>& row, const std::vector<body_point>& w)
+      : system_(system), row_(row), w_(w), state_(row.size()) {}
+
+  const std::vector<std::optional<system_state>>& solve(continuation_counts& counts) {
+    counts_ = &counts;
+    exact(0);
+    exact(row_.size() - 1);
+    between(0, row_.size() - 1);
+    return state_;
+  }
+
+ private:
+  void exact(std::size_t k) {
+    if (state_[k] && state_[k]->exact) return;
+    state_[k] = solve_system_exactly(system_, row_[k]);
+    ++counts_->system_solves;
+  }
+
+  // Bodies a < k < b from exact ends a and b.
+  void between(std::size_t a, std::size_t b) {
+    if (b <= a + 1) return;
+    std::vector<std::vector<point3>> chain;  // chain[k − a − 1]: the solutions at body k
+    if (state_[a]->can_seed)
+      for (std::size_t k = a + 1; k <= b; ++k) {
+        const auto& from = k == a + 1 ? state_[a]->x : chain.back();
+        const auto* before = k == a + 2 ? &state_[a]->x : k > a + 2 ? &chain[chain.size() - 2] : nullptr;
+        auto next = carry(system_, from, before, w_[k - 1], w_[k]);
+        if (!next) break;
+        chain.push_back(std::move(*next));
+      }
+    const std::size_t reached = a + chain.size();
+    if (reached == b) {
+      if (same_solutions(chain.back(), state_[b]->x)) return accept(a, b, chain);
+      return halve(a, b);
+    }
+    // The chain stopped entering reached + 1: confirm it at `reached`, go on from reached + 1.
+    if (reached > a) {
+      exact(reached);
+      if (same_solutions(chain[reached - a - 1], state_[reached]->x)) accept(a, reached, chain);
+      else halve(a, reached);
+    }
+    exact(reached + 1);
+    between(reached + 1, b);
+  }
+
+  void accept(std::size_t a, std::size_t b, std::vector<std::vector<point3>>& chain) {
+    for (std::size_t k = a + 1; k < b; ++k) {
+      system_state s;
+      s.x = std::move(chain[k - a - 1]);
+      s.can_seed = true;
+      state_[k] = std::move(s);
+    }
+  }
+
+  void halve(std::size_t a, std::size_t b) {
+    const std::size_t m = a + (b - a) / 2;
+    exact(m);
+    between(a, m);
+    between(m, b);
+  }
+
+  const body_system& system_;
+  const std::vector<grid_body>& row_;
+  const std::vector<body_point>& w_;
+  std::vector<std::optional<system_state>> state_;
+  continuation_counts* counts_ = nullptr;
+};
+
+// The map point of one body from the states of its systems, as solve_dedicated + summarize_family
+// build it: solutions in system order, each system's by label, then a stable sort by ‖H_R5‖.
+map_point assemble(const grid_body& g, body_point w, const std::string& family, const std::vector<body_system>& systems,
+                   const std::vector<const system_state*>& states) {
+  family_result result;
+  for (std::size_t k = 0; k < systems.size(); ++k) {
+    const auto& sys = systems[k];
+    const auto& st = *states[k];
+    if (st.exact) {
+      result.systems.push_back(st.report);
+      for (const auto& s : st.solutions) result.solutions.push_back(s);
+      continue;
+    }
+    system_report report;
+    report.scheme = sys.scheme;
+    report.permutation = sys.permutation;
+    report.real_solutions = static_cast<int>(st.x.size());
+    result.systems.push_back(report);
+    const auto numeric = evaluate_system(sys, w[0], w[1]);
+    std::vector<point3> labelled = st.x;
+    std::sort(labelled.begin(), labelled.end(), by_first_coefficient);
+    int label = 0;
+    for (const auto& x : labelled) {
+      dedicated_solution s;
+      s.scheme = sys.scheme;
+      s.permutation = sys.permutation;
+      s.label = ++label;
+      s.layout = sys.layout;
+      s.free = sys.layout.free_coefficients;
+      for (std::size_t c = 0; c < s.free.size(); ++c)  // the free coefficients only, to double precision
+        s.coefficients.emplace_back(s.free[c], cln::rational(cln::cl_DF(static_cast<double>(x[c]))));
+      s.analytic_remainder = static_cast<double>(remainder_norm(numeric, x));
+      result.solutions.push_back(std::move(s));
+    }
+  }
+  std::stable_sort(result.solutions.begin(), result.solutions.end(),
+                   [](const auto& a, const auto& b) { return a.analytic_remainder < b.analytic_remainder; });
+  return summarize_family(g.body, family, result);
+}
+
+}  // namespace
+
+std::vector<map_point> continued_map_points(const std::vector<grid_body>& row, const std::string& family,
+                                            continuation_counts* counts) {
+  for (std::size_t k = 1; k < row.size(); ++k)
+    if (row[k].i != row[0].i || row[k].j != row[k - 1].j + 1)
+      throw std::invalid_argument("continued_map_points needs consecutive bodies of one grid row");
+  if (row.empty()) return {};
+  const auto& systems = family_systems(family);
+  std::vector<body_point> w;
+  for (const auto& g : row) w.push_back(inverse_moments(g));
+  continuation_counts local;
+  std::vector<std::vector<std::optional<system_state>>> states;  // [system][body]
+  for (const auto& sys : systems) states.push_back(system_row(sys, row, w).solve(local));
+  std::vector<map_point> out;
+  int exact_bodies = 0;
+  for (std::size_t j = 0; j < row.size(); ++j) {
+    std::vector<const system_state*> at;
+    bool all_exact = true;
+    for (const auto& s : states) {
+      at.push_back(&*s[j]);
+      all_exact = all_exact && s[j]->exact;
+    }
+    exact_bodies += all_exact ? 1 : 0;
+    out.push_back(assemble(row[j], w[j], family, systems, at));
+  }
+  if (counts) {
+    counts->system_solves += local.system_solves;
+    counts->exact += exact_bodies;
+    counts->continued += static_cast<int>(row.size()) - exact_bodies;
+  }
+  return out;
+}
+
+}  // namespace rotlie::solver
