@@ -28,7 +28,7 @@ bool by_first_coefficient(const point3& a, const point3& b) { return a[0] < b[0]
 struct system_state {
   std::vector<point3> x;  ///< exact: sorted by x_0; carried: in the order of the chain's start
   bool exact = false;
-  bool can_seed = false;  ///< regular, every root kept: a start for continuation
+  bool can_seed = false;  ///< not singular: a start for continuation
   std::vector<dedicated_solution> solutions;  ///< exact only: the exact solver's, with their remainders
   system_report report;                       ///< exact only
 };
@@ -38,7 +38,10 @@ system_state solve_system_exactly(const body_system& sys, const grid_body& g) {
   system_state out;
   out.exact = true;
   out.report = r.systems.at(0);
-  out.can_seed = !out.report.degenerate && out.report.discarded == 0 && out.report.uncertified == 0;
+  // A singular system has no isolated solutions to carry. Roots the exact solver sets aside (a
+  // reduced-system root where the linear solve fails, a root that does not certify order 4) are
+  // not carried either: should one become a solution further on, the chain's exact end differs.
+  out.can_seed = !out.report.degenerate;
   out.solutions = r.solutions;
   std::sort(out.solutions.begin(), out.solutions.end(), [](const auto& a, const auto& b) { return a.label < b.label; });
   for (const auto& s : out.solutions) {
@@ -98,9 +101,11 @@ bool same_solutions(std::vector<point3> carried, const std::vector<point3>& exac
 }
 
 // One system along one row. The exact solver runs at both ends. A chain from an exact body that
-// stops at a body (a solution born, dying or running off there) is confirmed at the body before by
-// the exact solver, which also solves the body where it stopped; a chain that reaches an exact body
-// with other solutions than the exact ones (a solution born on the way, unseen) is cut at the middle.
+// stops at a body (a solution dying or running off there) is confirmed at the body before by the
+// exact solver, which also solves the body where it stopped. A chain that reaches the exact end with
+// other solutions than the exact ones (a solution born on the way, which Newton cannot see) is run
+// backwards from that end, where the newborn dies and stops it: the exact solver confirms both
+// chains next to that stop. What remains unconfirmed is cut at the middle, down to neighbours.
 class system_row {
  public:
   system_row(const body_system& system, const std::vector<grid_body>& row, const std::vector<body_point>& w)
@@ -121,37 +126,62 @@ class system_row {
     ++counts_->system_solves;
   }
 
+  // The chain from exact body `from` towards `to` (either direction), as far as it holds:
+  // chain[n] is the solutions at from ± (n + 1).
+  std::vector<std::vector<point3>> chain(std::size_t from, std::size_t to) {
+    std::vector<std::vector<point3>> out;
+    if (!state_[from]->can_seed) return out;
+    const long step = to > from ? 1 : -1;
+    const std::size_t length = to > from ? to - from : from - to;
+    for (std::size_t n = 0; n < length; ++n) {
+      const auto& last = n == 0 ? state_[from]->x : out.back();
+      const auto* before = n == 1 ? &state_[from]->x : n > 1 ? &out[n - 2] : nullptr;
+      const std::size_t here = from + static_cast<std::size_t>(step * static_cast<long>(n));
+      auto next = carry(system_, last, before, w_[here], w_[here + static_cast<std::size_t>(step)]);
+      if (!next) break;
+      out.push_back(std::move(*next));
+    }
+    return out;
+  }
+
   // Bodies a < k < b from exact ends a and b.
   void between(std::size_t a, std::size_t b) {
     if (b <= a + 1) return;
-    std::vector<std::vector<point3>> chain;  // chain[k − a − 1]: the solutions at body k
-    if (state_[a]->can_seed)
-      for (std::size_t k = a + 1; k <= b; ++k) {
-        const auto& from = k == a + 1 ? state_[a]->x : chain.back();
-        const auto* before = k == a + 2 ? &state_[a]->x : k > a + 2 ? &chain[chain.size() - 2] : nullptr;
-        auto next = carry(system_, from, before, w_[k - 1], w_[k]);
-        if (!next) break;
-        chain.push_back(std::move(*next));
+    auto forward = chain(a, b);
+    const std::size_t reached = a + forward.size();
+    if (reached == b && same_solutions(forward.back(), state_[b]->x)) return accept(a, b, forward, false);
+    if (reached < b) {
+      // The chain stopped entering reached + 1: confirm it at `reached`, go on from reached + 1.
+      if (reached > a) {
+        exact(reached);
+        if (same_solutions(forward[reached - a - 1], state_[reached]->x)) accept(a, reached, forward, false);
+        else halve(a, reached);
       }
-    const std::size_t reached = a + chain.size();
-    if (reached == b) {
-      if (same_solutions(chain.back(), state_[b]->x)) return accept(a, b, chain);
-      return halve(a, b);
+      exact(reached + 1);
+      return between(reached + 1, b);
     }
-    // The chain stopped entering reached + 1: confirm it at `reached`, go on from reached + 1.
-    if (reached > a) {
-      exact(reached);
-      if (same_solutions(chain[reached - a - 1], state_[reached]->x)) accept(a, reached, chain);
-      else halve(a, reached);
+    // At b the chain lacks solutions born on the way. Seen from b they die going back: the chain
+    // from b stops entering the body before their birth.
+    auto backward = chain(b, a);
+    const std::size_t lowest = b - backward.size();
+    if (lowest == a) return halve(a, b);
+    if (lowest < b) {
+      exact(lowest);
+      if (same_solutions(backward[b - lowest - 1], state_[lowest]->x)) accept(lowest, b, backward, true);
+      else halve(lowest, b);
     }
-    exact(reached + 1);
-    between(reached + 1, b);
+    exact(lowest - 1);
+    if (lowest - 1 > a && same_solutions(forward[lowest - 1 - a - 1], state_[lowest - 1]->x))
+      accept(a, lowest - 1, forward, false);
+    else
+      between(a, lowest - 1);
   }
 
-  void accept(std::size_t a, std::size_t b, std::vector<std::vector<point3>>& chain) {
+  // Bodies a < k < b from a chain that starts at a (or at b when `backward`).
+  void accept(std::size_t a, std::size_t b, std::vector<std::vector<point3>>& chain, bool backward) {
     for (std::size_t k = a + 1; k < b; ++k) {
       system_state s;
-      s.x = std::move(chain[k - a - 1]);
+      s.x = backward ? chain[b - k - 1] : chain[k - a - 1];
       s.can_seed = true;
       state_[k] = std::move(s);
     }

@@ -6,8 +6,7 @@
 // dying or running off) is confirmed by the exact solver at its last body and restarted from the
 // exact solution where it stopped; a chain whose solutions differ at its exact end from the exact
 // ones (a solution born on the way) is cut in two at an exact body and each half checked the same
-// way, down to neighbours. A system is never continued from a body where it is singular or has a
-// discarded or uncertified root. So every solution comes from the exact solver or from a chain
+// way, down to neighbours. A system is never continued from a body where it is singular. So every solution comes from the exact solver or from a chain
 // whose two ends the exact solver confirms.
 #include <string>
 #include <vector>
