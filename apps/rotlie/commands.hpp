@@ -22,6 +22,8 @@ struct report_command_options {
   std::string out = "rotlie-report";
   bool quick = false;
   std::string sections;  ///< comma-separated section keys; empty: all
+  bool full = false;     ///< maps at the paper's grid
+  std::string maps;      ///< folder of map-N.jsonl / map-P.jsonl to draw
 };
 int run_report_command(const report_command_options& options);
 

@@ -179,7 +179,9 @@ int main(int argc, char** argv) {
   report_cmd->add_option("--out", report.out, "Output folder (default: rotlie-report)");
   report_cmd->add_flag("--quick", report.quick, "Smaller sweeps, for a fast look");
   report_cmd->add_option("--sections", report.sections,
-                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs");
+                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs, maps");
+  report_cmd->add_flag("--full", report.full, "Maps over all bodies at the paper's grid (--grid 200; hours for the P family)");
+  report_cmd->add_option("--maps", report.maps, "Folder of map-N.jsonl / map-P.jsonl written by rotlie map, drawn instead of computed");
 
   // Body-set maps (LV section 5) and the best integrator for one body.
   map_options map;

@@ -18,7 +18,7 @@ const std::vector<std::pair<std::string, section_function>>& all_sections() {
   static const std::vector<std::pair<std::string, section_function>> sections{
       {"lie-algebra", lie_algebra_section}, {"remainders", remainder_section}, {"dedicated", dedicated_section},
       {"accuracy", accuracy_section},       {"stability", stability_section},  {"exact-flow", exact_flow_section},
-      {"vzs", vzs_section}};
+      {"vzs", vzs_section},         {"maps", maps_section}};
   return sections;
 }
 

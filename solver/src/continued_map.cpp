@@ -10,6 +10,7 @@
 
 #include "rotlie/solver/continuation.hpp"
 #include "rotlie/solver/family_systems.hpp"
+#include "rotlie/solver/resultant.hpp"
 
 namespace rotlie::solver {
 namespace {
@@ -109,7 +110,7 @@ bool same_solutions(std::vector<point3> carried, const std::vector<point3>& exac
 class system_row {
  public:
   system_row(const body_system& system, const std::vector<grid_body>& row, const std::vector<body_point>& w)
-      : system_(system), row_(row), w_(w), state_(row.size()) {}
+      : system_(system), row_(row), w_(w), state_(row.size()), count_(row.size()) {}
 
   const std::vector<std::optional<system_state>>& solve(continuation_counts& counts) {
     counts_ = &counts;
@@ -137,7 +138,9 @@ class system_row {
       const auto& last = n == 0 ? state_[from]->x : out.back();
       const auto* before = n == 1 ? &state_[from]->x : n > 1 ? &out[n - 2] : nullptr;
       const std::size_t here = from + static_cast<std::size_t>(step * static_cast<long>(n));
-      auto next = carry(system_, last, before, w_[here], w_[here + static_cast<std::size_t>(step)]);
+      const std::size_t there = here + static_cast<std::size_t>(step);
+      if (!same_count(here, there)) break;
+      auto next = carry(system_, last, before, w_[here], w_[there]);
       if (!next) break;
       out.push_back(std::move(*next));
     }
@@ -194,10 +197,29 @@ class system_row {
     between(m, b);
   }
 
+  // Two unknowns (N): the number of distinct real roots of the eliminant Res_v(P1, P2)(u) at body k,
+  // exactly (the conditions at the exact body, Descartes' rule); −1 when it vanishes identically. A
+  // chain may only step between bodies where it is the same: a pair of real solutions born and dying
+  // again between the chain's confirmed ends changes it at the bodies where the pair exists.
+  // (Three unknowns: this eliminant is the costly part of the exact solver; no count is kept.)
+  int eliminant_count(std::size_t k) {
+    if (!count_[k]) {
+      const auto unit = scaled_to_unit_I3(row_[k].body);
+      const cln::cl_RA w1 = cln::recip(unit.I[0]), w2 = cln::recip(unit.I[1]);
+      const auto r = resultant_in(system_.p1.at(w1, w2), system_.p2.at(w1, w2), 1, 0);
+      count_[k] = r.is_zero() ? -1 : static_cast<int>(isolate_real_roots(r).size());
+    }
+    return *count_[k];
+  }
+  bool same_count(std::size_t k, std::size_t next) {
+    return system_.unknowns != 2 || (eliminant_count(k) >= 0 && eliminant_count(k) == eliminant_count(next));
+  }
+
   const body_system& system_;
   const std::vector<grid_body>& row_;
   const std::vector<body_point>& w_;
   std::vector<std::optional<system_state>> state_;
+  std::vector<std::optional<int>> count_;
   continuation_counts* counts_ = nullptr;
 };
 

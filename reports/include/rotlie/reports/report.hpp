@@ -18,6 +18,8 @@ struct report_options {
   bool quick = false;                                   ///< smaller sweeps, for a fast look
   std::vector<std::string> sections;                    ///< keys of report_section_keys(); empty: all
   std::function<void(std::string_view)> progress;      ///< one line per step, may be empty
+  bool full = false;                                    ///< the maps at the paper's grid (hours for P)
+  std::filesystem::path maps_dir;                       ///< map-N.jsonl, map-P.jsonl of `rotlie map` to draw
 };
 
 /// What one section of the report produced: its markdown for index.md and the files it wrote.
@@ -59,5 +61,8 @@ report_section stability_section(const report_options& options);
 
 /// Section "Exact free-body flow near the unstable axis": conditioning of the double exact flow.
 report_section exact_flow_section(const report_options& options);
+
+/// Section "Comparison over all rigid bodies": LV section 5, Figs. 6–10, from the maps.
+report_section maps_section(const report_options& options);
 
 }  // namespace rotlie::reports
