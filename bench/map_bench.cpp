@@ -3,11 +3,14 @@
 // hands to the exact solver. Not Google Benchmark: one timed pass over chosen rows of the grid.
 //   map_bench FAMILY K ROWS...   (rows are the grid index i of s = i/K, 1 ≤ i ≤ K − 1)
 //   map_bench FAMILY K ROWS... --exact-every M   (also times the exact solver at every M-th body)
+//   map_bench FAMILY K ROWS... --out FILE        (also writes those rows as a map file, for map_check)
 #include <ctime>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
 
+#include "rotlie/reports/map_io.hpp"
 #include "rotlie/solver/body_grid.hpp"
 #include "rotlie/solver/body_map.hpp"
 #include "rotlie/solver/continued_map.hpp"
@@ -26,14 +29,21 @@ int main(int argc, char** argv) {
   const int K = std::stoi(argv[2]);
   std::vector<int> rows;
   int exact_every = 0;
+  std::string out_file;
   for (int a = 3; a < argc; ++a) {
     if (std::string(argv[a]) == "--exact-every" && a + 1 < argc) exact_every = std::stoi(argv[++a]);
+    else if (std::string(argv[a]) == "--out" && a + 1 < argc) out_file = argv[++a];
     else rows.push_back(std::stoi(argv[a]));
   }
   double t = cpu_seconds();
   rotlie::solver::family_systems(family);
   const double setup = cpu_seconds() - t;
   std::cout << "family " << family << ": systems interpolated in " << setup << " s CPU (once per process)\n" << std::flush;
+  std::ofstream out;
+  if (!out_file.empty()) {
+    out.open(out_file);
+    out << rotlie::reports::map_header(family, K, rows.size() * static_cast<std::size_t>(K), "fast").dump() << "\n";
+  }
   rotlie::solver::continuation_counts counts;
   double fast = 0, exact = 0;
   int bodies = 0, exact_bodies = 0;
@@ -42,7 +52,9 @@ int main(int argc, char** argv) {
     for (int j = 0; j < K; ++j) row.push_back(rotlie::solver::grid_point(K, i, j));
     t = cpu_seconds();
     rotlie::solver::continuation_counts c;
-    rotlie::solver::continued_map_points(row, family, &c);
+    const auto points = rotlie::solver::continued_map_points(row, family, &c);
+    if (out)
+      for (std::size_t k = 0; k < row.size(); ++k) out << rotlie::reports::map_line(row[k], points[k]).dump() << "\n" << std::flush;
     const double dt = cpu_seconds() - t;
     fast += dt;
     bodies += static_cast<int>(row.size());

@@ -71,3 +71,10 @@ BOOST_AUTO_TEST_CASE(a_continued_row_of_the_N_map_is_the_exact_one) {
   // the row is cut until the chains hold.
   expect_row_equals_exact("N", 200, 190, 0, 24);
 }
+
+// R and P (three unknowns, the Lagrange system): a minute of exact solves, run by the slow test.
+// Disabled by default (so not in the fast ctest run): continued_map_slow_test names it.
+BOOST_AUTO_TEST_CASE(continued_rows_of_the_R_and_P_maps_are_the_exact_ones, *boost::unit_test::disabled()) {
+  expect_row_equals_exact("R", 200, 60, 150, 162);
+  expect_row_equals_exact("P", 200, 100, 60, 66);
+}
