@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace rotlie::solver {
 namespace {
 
 using vec3 = std::array<long double, 3>;
+constexpr int max_power = 32;
 using mat3 = std::array<vec3, 3>;
 
 struct jet {
@@ -18,9 +20,10 @@ struct jet {
 // Value, gradient and (when asked) Hessian of a polynomial in up to three unknowns.
 jet evaluate_jet(const numeric_polynomial& p, const point3& x, bool hessian) {
   const int d = p.max_degree;
-  std::array<std::vector<long double>, 3> power;
+  if (d >= max_power) throw std::invalid_argument("a condition of degree above 31 in one coefficient");
+  std::array<std::array<long double, max_power>, 3> power;  // no allocation: this is the inner loop
   for (int k = 0; k < 3; ++k) {
-    power[k].assign(static_cast<std::size_t>(d + 1), 1.0L);
+    power[k][0] = 1.0L;
     for (int e = 1; e <= d; ++e) power[k][e] = power[k][e - 1] * x[k];
   }
   // x^e, its first and second derivative factors (e x^(e−1), e(e−1) x^(e−2))

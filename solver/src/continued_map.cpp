@@ -141,10 +141,61 @@ class system_row {
       const std::size_t there = here + static_cast<std::size_t>(step);
       if (!same_count(here, there)) break;
       auto next = carry(system_, last, before, w_[here], w_[there]);
+      if (!next && system_.unknowns == 3) next = carry_past_fold(last, before, here, there);
       if (!next) break;
       out.push_back(std::move(*next));
     }
     return out;
+  }
+
+  // Three unknowns (R, P), where no cheap count exists: when a step fails, the closest two solutions
+  // may be a pair meeting and leaving the reals (a fold): they must be closer to each other than to
+  // any other solution by a factor 2, have come closer since the body before, and every other
+  // solution must step on without them. They are dropped. A pair dropped wrongly reaches the exact
+  // end of the chain missing, and `between` then looks for it from that end.
+  std::optional<std::vector<point3>> carry_past_fold(const std::vector<point3>& last, const std::vector<point3>* before,
+                                                     std::size_t here, std::size_t there) {
+    if (last.size() < 2) return std::nullopt;
+    std::size_t p = 0, q = 1;
+    long double closest = -1, second = -1;
+    for (std::size_t i = 0; i < last.size(); ++i)
+      for (std::size_t j = i + 1; j < last.size(); ++j) {
+        long double d = 0;
+        for (int c = 0; c < 3; ++c) d = std::max(d, std::fabs(last[i][c] - last[j][c]));
+        if (closest < 0 || d < closest) {
+          second = closest;
+          closest = d, p = i, q = j;
+        } else if (second < 0 || d < second) {
+          second = d;
+        }
+      }
+    // `second` is the closest distance among the other pairs (pairs sharing p or q included)
+    if (second >= 0 && closest > second / 2) return std::nullopt;
+    const bool with_before = before && before->size() == last.size();
+    if (with_before) {
+      long double earlier = 0;
+      for (int c = 0; c < 3; ++c) earlier = std::max(earlier, std::fabs((*before)[p][c] - (*before)[q][c]));
+      if (earlier <= closest) return std::nullopt;
+    }
+    std::vector<point3> rest, rest_before;
+    for (std::size_t i = 0; i < last.size(); ++i)
+      if (i != p && i != q) {
+        rest.push_back(last[i]);
+        if (with_before) rest_before.push_back((*before)[i]);
+      }
+    return carry(system_, rest, with_before ? &rest_before : nullptr, w_[here], w_[there]);
+  }
+
+  // Every solution of `part` is one of `all`.
+  static bool within(const std::vector<point3>& part, const std::vector<point3>& all) {
+    for (const auto& x : part)
+      if (std::none_of(all.begin(), all.end(), [&](const point3& y) { return close(x, y); })) return false;
+    return true;
+  }
+  static bool close(const point3& x, const point3& y) {
+    for (int c = 0; c < 3; ++c)
+      if (std::fabs(x[c] - y[c]) > 1e-8L * (1 + std::fabs(y[c]))) return false;
+    return true;
   }
 
   // Bodies a < k < b from exact ends a and b.
@@ -167,7 +218,24 @@ class system_row {
     // from b stops entering the body before their birth.
     auto backward = chain(b, a);
     const std::size_t lowest = b - backward.size();
-    if (lowest == a) return halve(a, b);
+    if (lowest == a) {
+      // Both chains cross the whole stretch (R, P: folds dropped on the way). The forward chain holds
+      // what lives since a, the backward one what lives until b; when each ends inside the exact
+      // solutions of its far end, their union at a body is its solutions (a pair born and dying
+      // again strictly between a and b is in neither).
+      if (system_.unknowns == 3 && within(forward.back(), state_[b]->x) && within(backward.back(), state_[a]->x)) {
+        for (std::size_t k = a + 1; k < b; ++k) {
+          system_state s;
+          s.x = forward[k - a - 1];
+          for (const auto& y : backward[b - k - 1])
+            if (std::none_of(s.x.begin(), s.x.end(), [&](const point3& x) { return close(x, y); })) s.x.push_back(y);
+          s.can_seed = true;
+          state_[k] = std::move(s);
+        }
+        return;
+      }
+      return halve(a, b);
+    }
     if (lowest < b) {
       exact(lowest);
       if (same_solutions(backward[b - lowest - 1], state_[lowest]->x)) accept(lowest, b, backward, true);
