@@ -77,9 +77,15 @@ std::string gnuplot_script(const chart& c) {
   if (c.equal_axes) g << "set size ratio -1\n";
   if (c.x_range) g << "set xrange [" << c.x_range->first << ":" << c.x_range->second << "]\n";
   if (c.y_range) g << "set yrange [" << c.y_range->first << ":" << c.y_range->second << "]\n";
-  if (coloured)
-    g << "set palette defined (0 '#313695', 1 '#74add1', 2 '#e0f3f8', 3 '#fee090', 4 '#f46d43', 5 '#a50026')\n"
-      << "set cblabel " << gnuplot_text(c.colour_label) << " noenhanced\nset colorbox\n";
+  if (coloured && c.colour_range && c.colour_range->first < 0 && c.colour_range->second > 0) {
+    const auto [lo, hi] = *c.colour_range;  // palette positions in data units: 0 is white
+    g << "set cbrange [" << lo << ":" << hi << "]\nset palette defined (" << lo << " '#313695', " << lo / 2 << " '#74add1', 0 "
+      << "'#f7f7f7', " << hi / 2 << " '#f46d43', " << hi << " '#a50026')\n";
+  } else if (coloured) {
+    if (c.colour_range) g << "set cbrange [" << c.colour_range->first << ":" << c.colour_range->second << "]\n";
+    g << "set palette defined (0 '#313695', 1 '#74add1', 2 '#e0f3f8', 3 '#fee090', 4 '#f46d43', 5 '#a50026')\n";
+  }
+  if (coloured) g << "set cblabel " << gnuplot_text(c.colour_label) << " noenhanced\nset colorbox\n";
   g << "plot ";
   bool first = true;
   for (std::size_t k = 0; k < c.series.size(); ++k) {

@@ -210,6 +210,10 @@ std::string ratio_chart(const report_options& options, const family_map& m, cons
       s.y.push_back(b.I2);
       s.z.push_back(std::log10(*b.ratio));
     }
+  if (!s.z.empty()) {
+    const auto [lo, hi] = std::minmax_element(s.z.begin(), s.z.end());
+    c.colour_range = std::pair(std::min(*lo, -0.1), std::max(*hi, 0.1));  // ratio = 1 is white
+  }
   c.series.push_back(std::move(s));
   auto contour = ratio_one_contour(m);
   if (!contour.x.empty()) c.series.push_back(std::move(contour));

@@ -148,42 +148,47 @@ class system_row {
     return out;
   }
 
-  // Three unknowns (R, P), where no cheap count exists: when a step fails, the closest two solutions
-  // may be a pair meeting and leaving the reals (a fold): they must be closer to each other than to
-  // any other solution by a factor 2, have come closer since the body before, and every other
-  // solution must step on without them. They are dropped. A pair dropped wrongly reaches the exact
+  // Three unknowns (R, P), where no cheap count exists: when a step fails, it may be that two
+  // solutions meet and leave the reals (a fold). Candidates are pairs of mutual nearest solutions
+  // that have come closer since the body before, closest first (at most three); the first whose
+  // removal lets every other solution step on is dropped. A pair dropped wrongly reaches the exact
   // end of the chain missing, and `between` then looks for it from that end.
   std::optional<std::vector<point3>> carry_past_fold(const std::vector<point3>& last, const std::vector<point3>* before,
                                                      std::size_t here, std::size_t there) {
-    if (last.size() < 2) return std::nullopt;
-    std::size_t p = 0, q = 1;
-    long double closest = -1, second = -1;
-    for (std::size_t i = 0; i < last.size(); ++i)
-      for (std::size_t j = i + 1; j < last.size(); ++j) {
-        long double d = 0;
-        for (int c = 0; c < 3; ++c) d = std::max(d, std::fabs(last[i][c] - last[j][c]));
-        if (closest < 0 || d < closest) {
-          second = closest;
-          closest = d, p = i, q = j;
-        } else if (second < 0 || d < second) {
-          second = d;
-        }
-      }
-    // `second` is the closest distance among the other pairs (pairs sharing p or q included)
-    if (second >= 0 && closest > second / 2) return std::nullopt;
-    const bool with_before = before && before->size() == last.size();
-    if (with_before) {
-      long double earlier = 0;
-      for (int c = 0; c < 3; ++c) earlier = std::max(earlier, std::fabs((*before)[p][c] - (*before)[q][c]));
-      if (earlier <= closest) return std::nullopt;
+    const std::size_t n = last.size();
+    if (n < 2) return std::nullopt;
+    const auto gap = [](const point3& x, const point3& y) {
+      long double d = 0;
+      for (int c = 0; c < 3; ++c) d = std::max(d, std::fabs(x[c] - y[c]));
+      return d;
+    };
+    std::vector<std::size_t> nearest(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      nearest[i] = i == 0 ? 1 : 0;
+      for (std::size_t j = 0; j < n; ++j)
+        if (j != i && gap(last[i], last[j]) < gap(last[i], last[nearest[i]])) nearest[i] = j;
     }
-    std::vector<point3> rest, rest_before;
-    for (std::size_t i = 0; i < last.size(); ++i)
-      if (i != p && i != q) {
-        rest.push_back(last[i]);
-        if (with_before) rest_before.push_back((*before)[i]);
-      }
-    return carry(system_, rest, with_before ? &rest_before : nullptr, w_[here], w_[there]);
+    const bool with_before = before && before->size() == n;
+    std::vector<std::pair<long double, std::pair<std::size_t, std::size_t>>> pairs;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t j = nearest[i];
+      if (j <= i || nearest[j] != i) continue;
+      const long double d = gap(last[i], last[j]);
+      if (with_before && gap((*before)[i], (*before)[j]) <= d) continue;  // not approaching
+      pairs.push_back({d, {i, j}});
+    }
+    std::sort(pairs.begin(), pairs.end());
+    for (std::size_t k = 0; k < std::min<std::size_t>(pairs.size(), 3); ++k) {
+      const auto [p, q] = pairs[k].second;
+      std::vector<point3> rest, rest_before;
+      for (std::size_t i = 0; i < n; ++i)
+        if (i != p && i != q) {
+          rest.push_back(last[i]);
+          if (with_before) rest_before.push_back((*before)[i]);
+        }
+      if (auto moved = carry(system_, rest, with_before ? &rest_before : nullptr, w_[here], w_[there])) return moved;
+    }
+    return std::nullopt;
   }
 
   // Every solution of `part` is one of `all`.

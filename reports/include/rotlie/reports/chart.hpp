@@ -34,6 +34,8 @@ struct chart {
   std::string horizontal_label;
   bool diagonal = false;                   ///< draw y = x (analytic vs numeric comparisons)
   std::string colour_label;                ///< the colour scale's title (series with z)
+  /// The colour scale's range; when it holds 0 inside, 0 is white, below blue, above red.
+  std::optional<std::pair<double, double>> colour_range;
   bool equal_axes = false;                 ///< one unit is as long on both axes (maps of bodies)
   std::optional<std::pair<double, double>> x_range, y_range;
 };
