@@ -374,14 +374,15 @@ report_section maps_section(const report_options& options) {
         "5.3) the integrators P are better \"only for very asymmetric bodies\".\n\n";
   md << "### Isolated singular points (Fig. 9)\n\n";
   for (const auto& m : maps) md << singular_bodies(m);
-  md << "\nThe only singular body rotlie finds on the grid is the flat body (1/4, 3/4, 1) (s = 1/2, t = 0; on any grid "
-        "with K even). There I1 + I2 = I3 and I2 − I1 = I3/2, and Fassò (2003) observed (as the paper recalls in section "
-        "3.2) that a leapfrog scheme is of order 4 there: its H_R3 vanishes identically at this body. The N and P words "
-        "contain that leapfrog as a member of their families (some stage coefficients zero), so on the curve of those "
-        "members H_R3 = 0 holds for every value of the remaining coefficient: the two conditions P1, P2 share a factor, "
-        "the solutions form a curve instead of isolated points, and the automatic resolution (a resultant that vanishes "
-        "identically) stops there. These are the paper's \"isolated points where a singularity occurs during the "
-        "automatic resolution\".\n\n";
+  md << "\nOn every grid computed so far the only body with singular systems is the flat body (1/4, 3/4, 1) (s = 1/2, "
+        "t = 0, on any grid with K even), where I1 + I2 = I3 and I2 − I1 = I3/2. Fassò (2003) observed (the paper recalls "
+        "it in section 3.2) that a leapfrog is of order 4 there, and rotlie confirms it: `rotlie remainder --scheme ABCBA "
+        "--inertia 1/4,3/4,1 --order 3` prints H_R3 = 0 (permutation ABC; the other five permutations do not vanish). At "
+        "this body the two conditions P1, P2 of the singular systems share a factor, so their solutions form a curve "
+        "instead of isolated points and the automatic resolution stops (the eliminant vanishes identically). The likely "
+        "reason, not checked system by system: those words reduce to that leapfrog when some of their stages are zero, "
+        "so H_R3 = 0 along a whole curve of their coefficients. These are the paper's isolated points \"where a "
+        "singularity occurs during the automatic resolution\" (Fig. 9).\n\n";
   sec.markdown = md.str();
   return sec;
 }
