@@ -21,8 +21,9 @@ int run_stages(const stages_options& options);
 struct report_command_options {
   std::string out = "rotlie-report";
   bool quick = false;
-  bool full = false;  ///< the papers' full statistics (the nine 1-ps liquid-water runs per point: about half an hour)
+  bool full = false;  ///< the papers' full statistics: nine 1-ps liquid-water runs per point, maps at the paper's grid
   std::string sections;  ///< comma-separated section keys; empty: all
+  std::string maps;      ///< folder of map-N.jsonl / map-P.jsonl to draw
 };
 int run_report_command(const report_command_options& options);
 
@@ -78,6 +79,7 @@ namespace rotlie::app {
 struct map_options {
   std::string family, grid, out;
   bool resume = false, json = false;
+  bool exact = false;  ///< every body by the exact solver (default: continuation along rows, confirmed by it)
 };
 int run_map(const map_options& options);
 

@@ -185,9 +185,12 @@ int main(int argc, char** argv) {
   auto* report_cmd = app.add_subcommand("report", "Regenerate every table and figure into one folder");
   report_cmd->add_option("--out", report.out, "Output folder (default: rotlie-report)");
   report_cmd->add_flag("--quick", report.quick, "Smaller sweeps, for a fast look");
-  report_cmd->add_flag("--full", report.full, "The papers' full statistics where a section has them (liquid water: nine 1-ps runs per point, about 30 min)");
   report_cmd->add_option("--sections", report.sections,
-                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs");
+                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs, liquid-water, maps");
+  report_cmd->add_flag("--full", report.full,
+                       "The papers' full statistics: liquid water's nine 1-ps runs per point (about 30 min), maps over all bodies at "
+                       "the paper's grid (--grid 200; hours for the P family)");
+  report_cmd->add_option("--maps", report.maps, "Folder of map-N.jsonl / map-P.jsonl written by rotlie map, drawn instead of computed");
 
   // Body-set maps (LV section 5) and the best integrator for one body.
   map_options map;
@@ -197,6 +200,10 @@ int main(int argc, char** argv) {
   map_cmd->add_option("--out", map.out, "Folder of the map file map-<family>.jsonl (default rotlie-map; none with --json alone)");
   map_cmd->add_flag("--resume", map.resume, "Continue the map file in --out where a killed run stopped");
   map_cmd->add_flag("--json", map.json, "The body lines on stdout");
+  auto* map_exact = map_cmd->add_flag("--exact", map.exact, "Every body by the exact solver (slow; the check of the default)");
+  static bool map_fast = false;  // the default; the flag only states it
+  map_cmd->add_flag("--fast", map_fast, "Continuation along each row, both ends and every doubtful chain by the exact solver (default)")
+      ->excludes(map_exact);
   map_cmd->footer("Under mpirun (mpirun -n 4 rotlie map ...) the bodies are shared among the processes; the file is the same.");
   best_options best;
   auto* best_cmd = app.add_subcommand("best", "Best N, R and P integrators for one body, the best reference and the predicted gain");

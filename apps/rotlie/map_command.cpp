@@ -1,10 +1,13 @@
 // rotlie map: the body-set maps of LV section 5 (Figs. 7–10), one JSON line per body, resumable,
 // distributed over MPI ranks when started by mpirun.
 //
-// Every rank computes the bodies of a fixed schedule (blocks of consecutive grid bodies dealt out in
+// Every rank computes the bodies of a fixed schedule (the rows of the grid, s fixed, dealt out in
 // turn) and sends each line to rank 0, which writes the lines in the grid's order: the file of a run
 // on any number of processes, killed and resumed or not, is the file of one uninterrupted process.
 // A line is appended with one write and is whole or absent; a resume drops a torn last line.
+// By default (--fast) a row is computed as a whole by continuation (solver/continued_map.hpp), so a
+// resume recomputes a row it finds incomplete and writes only its missing lines: the result of a
+// body never depends on where a run stopped or on the number of processes.
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -25,16 +28,20 @@
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/solver/body_grid.hpp"
 #include "rotlie/solver/body_map.hpp"
+#include "rotlie/solver/continued_map.hpp"
 
 namespace rotlie::app {
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int schedule_block = 16;  // consecutive bodies per turn: neighbours stay on one rank
 constexpr const char* default_folder = "rotlie-map";
 
-int owner_of(std::size_t index, int ranks) { return static_cast<int>((index / schedule_block) % static_cast<std::size_t>(ranks)); }
+// The asymmetric grid is K rows (1 ≤ i ≤ K − 1) of K bodies (0 ≤ j ≤ K − 1): row r holds the
+// indices r K … r K + K − 1. Rows are dealt out to the ranks in turn.
+int owner_of_row(std::size_t row, int ranks) { return static_cast<int>(row % static_cast<std::size_t>(ranks)); }
+
+std::string method_name(bool exact) { return exact ? "exact" : "fast"; }
 
 std::string checked_family(const std::string& family) {
   if (family != "N" && family != "R" && family != "P") throw usage_error("--family must be N, R or P, got '" + family + "'");
@@ -55,7 +62,7 @@ struct existing_map {
   bool has_header = false;
 };
 
-existing_map read_existing(const fs::path& path, const std::string& family, int K,
+existing_map read_existing(const fs::path& path, const std::string& family, int K, const std::string& method,
                            const std::vector<solver::grid_body>& bodies) {
   existing_map out;
   out.done.assign(bodies.size(), 0);
@@ -80,6 +87,9 @@ existing_map read_existing(const fs::path& path, const std::string& family, int 
           j.value("grid", 0) != K)
         throw usage_error(refusal + "holds the map of family " + j.value("family", "?") + " at --grid " +
                           std::to_string(j.value("grid", 0)) + ", not " + family + " at --grid " + std::to_string(K) +
+                          "; it is left as it is");
+      if (j.value("method", "exact") != method)
+        throw usage_error(refusal + "was computed with --" + j.value("method", "exact") + ", not --" + method +
                           "; it is left as it is");
       out.has_header = true;
     } else {
@@ -136,10 +146,37 @@ class map_output {
 
 std::string body_line(const solver::grid_body& g, const std::string& family) {
   try {
-    return reports::map_line(g, solver::compute_map_point(g.body, family)).dump();
+    return reports::map_line(g, solver::compute_map_point(g.body, family, solver::map_digits)).dump();
   } catch (const std::exception& e) {
     return reports::map_failure_line(g, family, one_line(e.what())).dump();
   }
+}
+
+// The lines of the bodies [first, first + count) of one row that are still to do (done[k] == 0).
+// --fast continues along the whole row whatever is done, so that every line is the same in any run;
+// if the row fails as a whole, each body is solved on its own and a failure stays on its line.
+std::vector<std::pair<std::size_t, std::string>> row_lines(const std::vector<solver::grid_body>& bodies, std::size_t first,
+                                                           std::size_t count, const std::vector<char>& done,
+                                                           const std::string& family, bool exact) {
+  std::vector<std::pair<std::size_t, std::string>> out;
+  bool any = false;
+  for (std::size_t k = first; k < first + count; ++k) any = any || done[k] == 0;
+  if (!any) return out;
+  if (!exact) {
+    try {
+      const std::vector<solver::grid_body> row(bodies.begin() + static_cast<std::ptrdiff_t>(first),
+                                               bodies.begin() + static_cast<std::ptrdiff_t>(first + count));
+      const auto points = solver::continued_map_points(row, family);
+      for (std::size_t k = 0; k < count; ++k)
+        if (done[first + k] == 0) out.emplace_back(first + k, reports::map_line(row[k], points[k]).dump());
+      return out;
+    } catch (const std::exception&) {
+      // falls through: body by body, each failure on its own line
+    }
+  }
+  for (std::size_t k = first; k < first + count; ++k)
+    if (done[k] == 0) out.emplace_back(k, body_line(bodies[k], family));
+  return out;
 }
 
 // Rank 0's writer: lines arrive in any order and leave in the grid's order.
@@ -201,7 +238,7 @@ prepared_map prepare(const map_options& o) {
   if (exists && !o.resume)
     throw usage_error("--out: " + reports::printable_path(p.path) +
                       " exists: continue it with --resume, or choose another folder; it is left as it is");
-  if (exists) p.existing = read_existing(p.path, p.family, p.K, p.bodies);
+  if (exists) p.existing = read_existing(p.path, p.family, p.K, method_name(o.exact), p.bodies);
   fs::create_directories(folder);
   return p;
 }
@@ -249,7 +286,7 @@ int run_rank0(const map_options& o, process_group& group) {
 
   std::optional<map_output> file;
   if (!p.path.empty())
-    file.emplace(p.path, p.existing, reports::map_header(p.family, p.K, p.bodies.size()).dump());
+    file.emplace(p.path, p.existing, reports::map_header(p.family, p.K, p.bodies.size(), method_name(o.exact)).dump());
   if (o.json)
     for (const auto& line : p.existing.lines) std::cout << line << "\n";
   std::vector<std::size_t> todo;
@@ -280,9 +317,10 @@ int run_rank0(const map_options& o, process_group& group) {
     }
   };
   int workers_left = group.size() - 1;
-  for (const auto k : todo) {
-    if (owner_of(k, group.size()) != 0) continue;
-    writer.add(k, body_line(p.bodies[k], p.family));
+  const std::size_t K = static_cast<std::size_t>(p.K);
+  for (std::size_t row = 0; row * K < p.bodies.size(); ++row) {
+    if (owner_of_row(row, group.size()) != 0) continue;
+    for (auto& [k, line] : row_lines(p.bodies, row * K, K, p.existing.done, p.family, o.exact)) writer.add(k, std::move(line));
     drain(false, workers_left);
     show();
   }
@@ -301,10 +339,14 @@ int run_worker(const map_options& o, process_group& group) {
   const std::string verdict = group.broadcast("");
   if (verdict.empty() || verdict[0] != '0') return verdict.empty() ? exit_failure : verdict[0] - '0';  // rank 0 says why
   const std::string family = checked_family(o.family);
-  const auto bodies = solver::asymmetric_grid(checked_grid(o.grid));
-  for (std::size_t k = 0; k < bodies.size(); ++k)
-    if (verdict[k + 1] == 0 && owner_of(k, group.size()) == group.rank())
-      group.send_result(static_cast<int>(k), body_line(bodies[k], family));
+  const int K = checked_grid(o.grid);
+  const auto bodies = solver::asymmetric_grid(K);
+  const std::vector<char> done(verdict.begin() + 1, verdict.end());
+  const std::size_t n = static_cast<std::size_t>(K);
+  for (std::size_t row = 0; row * n < bodies.size(); ++row)
+    if (owner_of_row(row, group.size()) == group.rank())
+      for (auto& [k, line] : row_lines(bodies, row * n, n, done, family, o.exact))
+        group.send_result(static_cast<int>(k), line);
   group.send_done();
   return 0;
 }

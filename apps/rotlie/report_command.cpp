@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 
 #include "arguments.hpp"
@@ -37,6 +38,11 @@ int run_report_command(const report_command_options& options) {
   report.out_dir = options.out;
   report.quick = options.quick;
   report.full = options.full;
+  if (!options.maps.empty()) {
+    if (!std::filesystem::is_directory(options.maps))
+      throw usage_error("--maps: '" + options.maps + "' is not a folder (expected the --out folder of rotlie map)");
+    report.maps_dir = options.maps;
+  }
   if (!options.sections.empty()) report.sections = section_list(options.sections);
   report.progress = [](std::string_view line) { std::cerr << "rotlie report: " << line << std::endl; };
 

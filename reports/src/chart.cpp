@@ -52,11 +52,19 @@ bool drawable(const chart& c, double x, double y) {
 std::string gnuplot_script(const chart& c) {
   std::ostringstream g;
   g << std::setprecision(17);
+  bool coloured = false;
   for (std::size_t k = 0; k < c.series.size(); ++k) {
     g << "$s" << k << " << EOD\n";
     const auto& s = c.series[k];
-    for (std::size_t i = 0; i < s.x.size(); ++i)
-      if (drawable(c, s.x[i], s.y[i])) g << s.x[i] << " " << s.y[i] << "\n";
+    const bool with_z = s.z.size() == s.x.size() && !s.z.empty();
+    coloured = coloured || with_z;
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      if (!drawable(c, s.x[i], s.y[i]) || (with_z && !std::isfinite(s.z[i]))) continue;
+      g << s.x[i] << " " << s.y[i];
+      if (with_z) g << " " << s.z[i];
+      g << "\n";
+      if (s.segments && i % 2 == 1) g << "\n";  // a blank line ends a segment
+    }
     g << "EOD\n";
   }
   g << "set terminal pngcairo size 1000,700 enhanced font 'Sans,10'\n"
@@ -66,13 +74,36 @@ std::string gnuplot_script(const chart& c) {
     << (c.log_x ? "set logscale x\nset format x '10^{%L}'\n" : "")
     << (c.log_y ? "set logscale y\nset format y '10^{%L}'\n" : "")
     << "set grid\nset key outside right top noenhanced\n";
+  if (c.equal_axes) g << "set size ratio -1\n";
+  if (c.x_range) g << "set xrange [" << c.x_range->first << ":" << c.x_range->second << "]\n";
+  if (c.y_range) g << "set yrange [" << c.y_range->first << ":" << c.y_range->second << "]\n";
+  if (coloured && c.colour_range && c.colour_range->first < 0 && c.colour_range->second > 0) {
+    const auto [lo, hi] = *c.colour_range;  // palette positions in data units: 0 is white
+    g << "set cbrange [" << lo << ":" << hi << "]\nset palette defined (" << lo << " '#313695', " << lo / 2 << " '#74add1', 0 "
+      << "'#f7f7f7', " << hi / 2 << " '#f46d43', " << hi << " '#a50026')\n";
+  } else if (coloured) {
+    if (c.colour_range) g << "set cbrange [" << c.colour_range->first << ":" << c.colour_range->second << "]\n";
+    g << "set palette defined (0 '#313695', 1 '#74add1', 2 '#e0f3f8', 3 '#fee090', 4 '#f46d43', 5 '#a50026')\n";
+  }
+  if (coloured) g << "set cblabel " << gnuplot_text(c.colour_label) << " noenhanced\nset colorbox\n";
   g << "plot ";
   bool first = true;
   for (std::size_t k = 0; k < c.series.size(); ++k) {
-    g << (first ? "" : ", \\\n     ") << "$s" << k << " using 1:2 with "
-      << (c.series[k].points_only ? "points pt " + std::to_string(7 + 2 * k) : "linespoints pt 7 ps 0.6")
+    const auto& s = c.series[k];
+    g << (first ? "" : ", \\\n     ") << "$s" << k;
+    if (!s.z.empty()) {
+      g << " using 1:2:3 with points pt 5 ps " << (s.point_size > 0 ? s.point_size : 0.5) << " lc palette notitle";
+    } else if (s.segments) {
+      g << " using 1:2 with lines lw 2 lc rgb 'black' title " << gnuplot_text(s.name);
+    } else {
+      g << " using 1:2 with "
+        << (s.points_only ? "points pt " + (s.colour.empty() ? std::to_string(7 + 2 * k) : std::string("5"))
+                          : std::string("linespoints pt 7 ps 0.6"));
+      if (s.point_size > 0) g << " ps " << s.point_size;
+      if (!s.colour.empty()) g << " lc rgb " << gnuplot_text(s.colour);
       // gnuplot's palette has 8 colours: the next eight series are dashed, then dotted
-      << " dt " << 1 + k / 8 << " lw " << (k >= 8 ? 1.5 : 1.0) << " title " << gnuplot_text(c.series[k].name);
+      g << " dt " << 1 + k / 8 << " lw " << (k >= 8 ? 1.5 : 1.0) << " title " << gnuplot_text(s.name);
+    }
     first = false;
   }
   if (c.horizontal_line)
@@ -146,9 +177,15 @@ chart_files write_chart(const std::filesystem::path& dir, const std::string& nam
   if (!plain_file_name(name)) throw std::invalid_argument("chart name '" + name + "' is not a plain file name");
   chart_files out;
   std::ostringstream csv;
-  csv << std::setprecision(17) << "series,x,y\n";
+  bool with_z = false;
+  for (const auto& s : c.series) with_z = with_z || !s.z.empty();
+  csv << std::setprecision(17) << (with_z ? "series,x,y,z\n" : "series,x,y\n");
   for (const auto& s : c.series)
-    for (std::size_t i = 0; i < s.x.size(); ++i) csv << csv_text(s.name) << "," << s.x[i] << "," << s.y[i] << "\n";
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      csv << csv_text(s.name) << "," << s.x[i] << "," << s.y[i];
+      if (with_z) csv << "," << (i < s.z.size() ? std::to_string(s.z[i]) : std::string());
+      csv << "\n";
+    }
   write_file_atomically(dir / (name + ".csv"), csv.str());
   out.written.push_back(dir / (name + ".csv"));
 

@@ -30,13 +30,14 @@ nlohmann::ordered_json body_fields(const solver::grid_body& g, const std::string
 
 }  // namespace
 
-nlohmann::ordered_json map_header(const std::string& family, int K, std::size_t bodies) {
+nlohmann::ordered_json map_header(const std::string& family, int K, std::size_t bodies, const std::string& method) {
   nlohmann::ordered_json j;
   j["rotlie_map"] = map_format_version;
   j["family"] = family;
   j["grid"] = K;
   j["bodies"] = bodies;
   j["reference"] = solver::map_reference_scheme;
+  j["method"] = method;
   return j;
 }
 

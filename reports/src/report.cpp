@@ -24,7 +24,8 @@ const std::vector<std::pair<std::string, section_function>>& all_sections() {
       {"lie-algebra", lie_algebra_section}, {"remainders", remainder_section}, {"dedicated", dedicated_section},
       {"accuracy", accuracy_section},       {"stability", stability_section},  {"exact-flow", exact_flow_section},
       {"vzs", vzs_section},
-      {"liquid-water", liquid_water}};
+      {"liquid-water", liquid_water},
+      {"maps", maps_section}};
   return sections;
 }
 

@@ -18,6 +18,12 @@ struct chart_series {
   std::string name;
   std::vector<double> x, y;
   bool points_only = false;  ///< scatter instead of lines with points
+  /// Maps: a value per point, drawn as the point's colour on the chart's colour scale (and a
+  /// fourth CSV column); the series then needs no legend entry.
+  std::vector<double> z{};
+  bool segments = false;     ///< points 2k, 2k + 1 are one line segment (a contour), black
+  std::string colour{};      ///< "#rrggbb" for this series, else gnuplot's own
+  double point_size = 0;     ///< 0: gnuplot's default
 };
 
 struct chart {
@@ -27,6 +33,11 @@ struct chart {
   std::optional<double> horizontal_line;  ///< e.g. a failure threshold
   std::string horizontal_label;
   bool diagonal = false;                   ///< draw y = x (analytic vs numeric comparisons)
+  std::string colour_label;                ///< the colour scale's title (series with z)
+  /// The colour scale's range; when it holds 0 inside, 0 is white, below blue, above red.
+  std::optional<std::pair<double, double>> colour_range;
+  bool equal_axes = false;                 ///< one unit is as long on both axes (maps of bodies)
+  std::optional<std::pair<double, double>> x_range, y_range;
 };
 
 struct chart_files {

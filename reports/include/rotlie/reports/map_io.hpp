@@ -14,8 +14,9 @@ namespace rotlie::reports {
 
 inline constexpr int map_format_version = 1;
 
-/// {"rotlie_map":1,"family":"N","grid":200,"bodies":39800,"reference":"RS4-S5-McLachlan"}
-nlohmann::ordered_json map_header(const std::string& family, int K, std::size_t bodies);
+/// {"rotlie_map":1,"family":"N","grid":200,"bodies":39800,"reference":"RS4-S5-McLachlan","method":"fast"}
+/// method: "fast" (continuation confirmed by the exact solver) or "exact" (a header without it: exact).
+nlohmann::ordered_json map_header(const std::string& family, int K, std::size_t bodies, const std::string& method);
 
 /// One body: s, t and I as exact fractions, the best integrator as SCHEME:PERM:LABEL, its ‖H_R5‖,
 /// the reference at its best permutation, the equal-cost ratio, the singular systems (SCHEME:PERM),

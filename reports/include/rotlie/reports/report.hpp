@@ -16,9 +16,10 @@ namespace rotlie::reports {
 struct report_options {
   std::filesystem::path out_dir = "rotlie-report";
   bool quick = false;                                   ///< smaller sweeps, for a fast look
-  bool full = false;                                    ///< the papers' full statistics where a section has them (long)
+  bool full = false;                                    ///< the papers' full statistics: liquid water's nine 1-ps runs, maps at the paper's grid (long)
   std::vector<std::string> sections;                    ///< keys of report_section_keys(); empty: all
   std::function<void(std::string_view)> progress;      ///< one line per step, may be empty
+  std::filesystem::path maps_dir;                       ///< map-N.jsonl, map-P.jsonl of `rotlie map` to draw
 };
 
 /// What one section of the report produced: its markdown for index.md and the files it wrote.
@@ -60,5 +61,8 @@ report_section stability_section(const report_options& options);
 
 /// Section "Exact free-body flow near the unstable axis": conditioning of the double exact flow.
 report_section exact_flow_section(const report_options& options);
+
+/// Section "Comparison over all rigid bodies": LV section 5, Figs. 6–10, from the maps.
+report_section maps_section(const report_options& options);
 
 }  // namespace rotlie::reports

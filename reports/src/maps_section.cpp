@@ -1,0 +1,390 @@
+// Report section "Comparison over all rigid bodies" (LV section 5, Figs. 6–10): the best N and P
+// integrators and their gain over RS4 S5 McLachlan at every body of a grid over the triangle of
+// bodies, at a resolution the default report affords, or from map files of `rotlie map`.
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "rotlie/reports/map_io.hpp"
+#include "rotlie/reports/output_file.hpp"
+#include "rotlie/reports/report.hpp"
+#include "rotlie/solver/body_grid.hpp"
+#include "rotlie/solver/continued_map.hpp"
+
+namespace rotlie::reports {
+namespace {
+
+// Grids of the default report: every row costs two exact solves at its ends (section time budget
+// about two minutes on one core); --full and map files give the paper's K = 200.
+constexpr int default_grid_N = 40, default_grid_P = 6, quick_grid_N = 10, quick_grid_P = 2, full_grid = 200;
+
+struct body_result {
+  int i = 0, j = 0;
+  double I1 = 0, I2 = 0, s = 0, t = 0;
+  std::string best, permutation;  // best: "N2:BAC:2", permutation: "BAC"
+  std::optional<double> ratio;
+  std::vector<std::string> singular;
+};
+
+struct family_map {
+  std::string family, source;
+  int K = 0;
+  double seconds = 0;
+  std::vector<body_result> bodies;
+};
+
+body_result from_line(const nlohmann::json& j, int K) {
+  body_result b;
+  const auto ij = map_line_indices(j, K);
+  if (!ij) throw std::runtime_error("a map line is not a body of its grid");
+  b.i = ij->first;
+  b.j = ij->second;
+  const auto g = solver::grid_point(K, b.i, b.j);
+  b.I1 = cln::double_approx(g.body.I[0]);
+  b.I2 = cln::double_approx(g.body.I[1]);
+  b.s = static_cast<double>(b.i) / K;
+  b.t = static_cast<double>(b.j) / K;
+  if (j.contains("best") && j["best"].is_string()) {
+    b.best = j["best"].get<std::string>();
+    const auto first = b.best.find(':');
+    b.permutation = b.best.substr(first + 1, b.best.find(':', first + 1) - first - 1);
+  }
+  if (j.contains("ratio") && j["ratio"].is_number()) b.ratio = j["ratio"].get<double>();
+  if (j.contains("singular"))
+    for (const auto& s : j["singular"]) b.singular.push_back(s.get<std::string>());
+  return b;
+}
+
+family_map compute_map(const report_options& options, const std::string& family, int K) {
+  family_map m;
+  m.family = family;
+  m.K = K;
+  m.source = "computed here (fast path, --grid " + std::to_string(K) + ")";
+  const auto start = std::chrono::steady_clock::now();
+  const auto grid = solver::asymmetric_grid(K);
+  std::ostringstream jsonl;
+  jsonl << map_header(family, K, grid.size(), "fast").dump() << "\n";
+  for (std::size_t first = 0; first < grid.size(); first += static_cast<std::size_t>(K)) {
+    if (options.progress)
+      options.progress("Maps: family " + family + " at --grid " + std::to_string(K) + ", row " +
+                       std::to_string(first / K + 1) + " of " + std::to_string(K - 1));
+    const std::vector<solver::grid_body> row(grid.begin() + static_cast<std::ptrdiff_t>(first),
+                                             grid.begin() + static_cast<std::ptrdiff_t>(first + K));
+    const auto points = solver::continued_map_points(row, family);
+    for (std::size_t k = 0; k < row.size(); ++k) {
+      const auto line = map_line(row[k], points[k]);
+      jsonl << line.dump() << "\n";
+      m.bodies.push_back(from_line(nlohmann::json::parse(line.dump()), K));
+    }
+  }
+  m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  write_file_atomically(options.out_dir / ("map-" + family + ".jsonl"), jsonl.str());
+  return m;
+}
+
+family_map read_map(const std::filesystem::path& file, const std::string& family) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read the map file " + printable_path(file));
+  std::string line;
+  std::getline(in, line);
+  const auto header = nlohmann::json::parse(line, nullptr, false);
+  if (header.is_discarded() || header.value("family", "") != family || !header.contains("grid"))
+    throw std::runtime_error(printable_path(file) + " is not a map of family " + family);
+  family_map m;
+  m.family = family;
+  m.K = header["grid"].get<int>();
+  m.source = "read from " + file.filename().string() + " (--grid " + std::to_string(m.K) + ", " +
+             header.value("method", std::string("exact")) + ")";
+  while (std::getline(in, line)) {
+    const auto j = nlohmann::json::parse(line, nullptr, false);
+    if (!j.is_discarded() && !j.contains("failed")) m.bodies.push_back(from_line(j, m.K));
+  }
+  return m;
+}
+
+// 15 colours that stay apart (categorical maps; one per integrator or permutation).
+const std::array<const char*, 15> palette = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+                                              "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf",
+                                              "#393b79", "#e7ba52", "#637939", "#ad494a", "#000000"};
+
+double point_size(int K) { return std::clamp(60.0 / K, 0.25, 3.0); }
+
+chart triangle_chart(const std::string& title) {
+  chart c;
+  c.title = title;
+  c.x_label = "I1 / I3";
+  c.y_label = "I2 / I3";
+  c.log_x = c.log_y = false;
+  c.equal_axes = true;
+  c.x_range = std::pair(0.0, 1.0);
+  c.y_range = std::pair(0.48, 1.02);
+  return c;
+}
+
+std::string categories_chart(const report_options& options, const family_map& m, bool by_permutation,
+                             const std::string& name, const std::string& caption, std::vector<std::filesystem::path>& files) {
+  std::map<std::string, chart_series> by;
+  for (const auto& b : m.bodies) {
+    if (b.best.empty()) continue;
+    const std::string key = by_permutation ? b.permutation : b.best.substr(0, b.best.find(':'));
+    auto& s = by[key];
+    s.x.push_back(b.I1);
+    s.y.push_back(b.I2);
+  }
+  auto c = triangle_chart("Best " + m.family + std::string(by_permutation ? " permutation" : " integrator") +
+                          " by ‖H_R5‖, --grid " + std::to_string(m.K));
+  std::vector<std::string> keys;
+  for (const auto& [k, s] : by) keys.push_back(k);
+  if (!by_permutation)  // N1 … N15 in numeric order
+    std::sort(keys.begin(), keys.end(), [](const std::string& a, const std::string& b) {
+      return a.size() != b.size() ? a.size() < b.size() : a < b;
+    });
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    auto s = by[keys[k]];
+    s.name = keys[k] + " (" + std::to_string(s.x.size()) + ")";
+    s.points_only = true;
+    s.colour = palette[k % palette.size()];
+    s.point_size = point_size(m.K);
+    c.series.push_back(std::move(s));
+  }
+  const auto f = write_chart(options.out_dir, name, c);
+  files.insert(files.end(), f.written.begin(), f.written.end());
+  return chart_markdown(f, name, caption);
+}
+
+// The level log10(ratio) = 0 by marching squares on the (s, t) grid, drawn in (I1, I2).
+chart_series ratio_one_contour(const family_map& m) {
+  std::map<std::pair<int, int>, double> level;
+  for (const auto& b : m.bodies)
+    if (b.ratio && *b.ratio > 0) level[{b.i, b.j}] = std::log10(*b.ratio);
+  const auto body_at = [&](double s, double t) {
+    const double I2 = 0.5 + s / 2, I1 = (1 - I2) + t * (2 * I2 - 1);
+    return std::pair(I1, I2);
+  };
+  chart_series c;
+  c.name = "ratio = 1";
+  c.segments = true;
+  const double K = m.K;
+  for (const auto& [ij, v00] : level) {
+    const auto [i, j] = ij;
+    const auto a = level.find({i + 1, j}), b = level.find({i, j + 1}), d = level.find({i + 1, j + 1});
+    if (a == level.end() || b == level.end() || d == level.end()) continue;
+    // corners in order around the cell, with their (s, t)
+    const std::array<std::tuple<double, double, double>, 4> corner = {
+        std::tuple(i / K, j / K, v00), std::tuple((i + 1) / K, j / K, a->second),
+        std::tuple((i + 1) / K, (j + 1) / K, d->second), std::tuple(i / K, (j + 1) / K, b->second)};
+    std::vector<std::pair<double, double>> crossings;
+    for (int e = 0; e < 4; ++e) {
+      const auto [s0, t0, z0] = corner[static_cast<std::size_t>(e)];
+      const auto [s1, t1, z1] = corner[static_cast<std::size_t>((e + 1) % 4)];
+      if ((z0 < 0) == (z1 < 0)) continue;
+      const double f = z0 / (z0 - z1);
+      crossings.push_back(body_at(s0 + f * (s1 - s0), t0 + f * (t1 - t0)));
+    }
+    for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
+      c.x.push_back(crossings[k].first);
+      c.y.push_back(crossings[k].second);
+      c.x.push_back(crossings[k + 1].first);
+      c.y.push_back(crossings[k + 1].second);
+    }
+  }
+  return c;
+}
+
+std::string ratio_chart(const report_options& options, const family_map& m, const std::string& name,
+                        const std::string& caption, std::vector<std::filesystem::path>& files) {
+  auto c = triangle_chart("log10(R_M / R_" + m.family + ") at equal cost, --grid " + std::to_string(m.K));
+  c.colour_label = "log10 ratio";
+  chart_series s;
+  s.name = "log10 ratio";
+  s.point_size = point_size(m.K);
+  for (const auto& b : m.bodies)
+    if (b.ratio && *b.ratio > 0) {
+      s.x.push_back(b.I1);
+      s.y.push_back(b.I2);
+      s.z.push_back(std::log10(*b.ratio));
+    }
+  if (!s.z.empty()) {
+    const auto [lo, hi] = std::minmax_element(s.z.begin(), s.z.end());
+    c.colour_range = std::pair(std::min(*lo, -0.1), std::max(*hi, 0.1));  // ratio = 1 is white
+  }
+  c.series.push_back(std::move(s));
+  auto contour = ratio_one_contour(m);
+  if (!contour.x.empty()) c.series.push_back(std::move(contour));
+  const auto f = write_chart(options.out_dir, name, c);
+  files.insert(files.end(), f.written.begin(), f.written.end());
+  return chart_markdown(f, name, caption);
+}
+
+// Fig. 6: the set E of eq. (77) in the (I1, I2) plane, its symmetric tops and flat bodies, the
+// triangle ESA, and the six images of water (one per permutation).
+std::string bodies_chart(const report_options& options, std::vector<std::filesystem::path>& files) {
+  chart c;
+  c.title = "The set of rigid bodies (I1, I2, 1), eq. (77), and the six images of water";
+  c.x_label = "I1";
+  c.y_label = "I2";
+  c.log_x = c.log_y = false;
+  c.equal_axes = true;
+  c.x_range = std::pair(0.0, 3.0);
+  c.y_range = std::pair(0.0, 3.0);
+  const auto line = [](const std::string& name, const std::string& colour, std::vector<double> x, std::vector<double> y) {
+    chart_series s;
+    s.name = name;
+    s.colour = colour;
+    s.x = std::move(x);
+    s.y = std::move(y);
+    return s;
+  };
+  // symmetric tops: I1 = I2, I2 = 1, I1 = 1 (red); flat bodies: I1 + I2 = 1, I2 = 1 + I1, I1 = 1 + I2 (blue)
+  c.series.push_back(line("symmetric tops I1 = I2", "#d62728", {0.5, 3}, {0.5, 3}));
+  c.series.push_back(line("symmetric tops I2 = 1", "#ff9896", {0, 3}, {1, 1}));
+  c.series.push_back(line("symmetric tops I1 = 1", "#e377c2", {1, 1}, {0, 3}));
+  c.series.push_back(line("flat I1 + I2 = 1", "#1f77b4", {0, 1}, {1, 0}));
+  c.series.push_back(line("flat I2 = 1 + I1", "#aec7e8", {0, 2}, {1, 3}));
+  c.series.push_back(line("flat I1 = 1 + I2", "#17becf", {1, 3}, {0, 2}));
+  c.series.push_back(line("triangle ESA (the maps)", "#000000", {0, 0.5, 1, 0}, {1, 0.5, 1, 1}));
+  const double I1 = 10220.0 / 29376, I2 = 19187.0 / 29376;  // water (section 4.3)
+  const std::array<std::pair<std::string, std::pair<double, double>>, 6> images = {
+      std::pair("ABC", std::pair(I1, I2)),          std::pair("BCA", std::pair(I2 / I1, 1 / I1)),
+      std::pair("CAB", std::pair(1 / I2, I1 / I2)), std::pair("ACB", std::pair(I1 / I2, 1 / I2)),
+      std::pair("CBA", std::pair(1 / I1, I2 / I1)), std::pair("BAC", std::pair(I2, I1))};
+  for (std::size_t k = 0; k < images.size(); ++k) {
+    chart_series s;
+    s.name = "water " + images[k].first;
+    s.points_only = true;
+    s.colour = palette[k];
+    s.point_size = 1.5;
+    s.x = {images[k].second.first};
+    s.y = {images[k].second.second};
+    c.series.push_back(std::move(s));
+  }
+  const auto f = write_chart(options.out_dir, "maps_fig6_bodies", c);
+  files.insert(files.end(), f.written.begin(), f.written.end());
+  return chart_markdown(f, "maps_fig6_bodies",
+                        "Fig. 6: the set of bodies (I1, I2, 1) of eq. (77): symmetric tops in red, flat bodies in blue; the "
+                        "triangle ESA (I1 ≤ I2 ≤ 1) holds one image of every body, and the six points are water under the six "
+                        "permutations (section 5.1).");
+}
+
+// Distance of a body (I1, I2, 1) to the symmetric tops: min(I2 − I1, 1 − I2), at most 1/3 (at (1/3, 2/3)).
+double asymmetry(const body_result& b) { return std::min(b.I2 - b.I1, 1 - b.I2); }
+
+std::string fractions_table(const std::vector<family_map>& maps) {
+  std::ostringstream md;
+  md << "| family | grid | bodies | better than RS4 S5 McLachlan (ratio > 1) | near symmetric tops (δ < 1/9) | "
+        "middle (1/9 ≤ δ < 2/9) | very asymmetric (δ ≥ 2/9) | largest ratio, at (I1, I2) |\n"
+        "|:--|--:|--:|--:|--:|--:|--:|:--|\n";
+  for (const auto& m : maps) {
+    std::array<int, 3> all{}, better{};
+    int n = 0, wins = 0;
+    double best = 0;
+    std::pair<double, double> where{};
+    for (const auto& b : m.bodies) {
+      if (!b.ratio) continue;
+      const double d = asymmetry(b);
+      const std::size_t band = d < 1.0 / 9 ? 0 : d < 2.0 / 9 ? 1 : 2;
+      ++n;
+      ++all[band];
+      if (*b.ratio > 1) ++wins, ++better[band];
+      if (*b.ratio > best) best = *b.ratio, where = {b.I1, b.I2};
+    }
+    const auto percent = [](int a, int b) {
+      std::ostringstream s;
+      s << std::fixed << std::setprecision(1) << (b > 0 ? 100.0 * a / b : 0.0) << " % (" << a << "/" << b << ")";
+      return s.str();
+    };
+    md << "| " << m.family << " | " << m.K << " | " << n << " | " << percent(wins, n) << " | " << percent(better[0], all[0])
+       << " | " << percent(better[1], all[1]) << " | " << percent(better[2], all[2]) << " | " << std::setprecision(3)
+       << best << " at (" << where.first << ", " << where.second << ") |\n";
+  }
+  return md.str();
+}
+
+std::string singular_bodies(const family_map& m) {
+  std::ostringstream md;
+  std::vector<const body_result*> found;
+  for (const auto& b : m.bodies)
+    if (!b.singular.empty()) found.push_back(&b);
+  md << "- " << m.family << ": ";
+  if (found.empty()) return md.str() + "no body of the grid has a singular system.\n";
+  md << found.size() << " bod" << (found.size() == 1 ? "y" : "ies") << " with singular systems:";
+  for (const auto* b : found) {
+    md << " (I1, I2) = (" << b->I1 << ", " << b->I2 << "): " << b->singular.size() << " systems (";
+    for (std::size_t k = 0; k < std::min<std::size_t>(b->singular.size(), 6); ++k) md << (k ? ", " : "") << b->singular[k];
+    md << (b->singular.size() > 6 ? ", …" : "") << ");";
+  }
+  return md.str() + "\n";
+}
+
+}  // namespace
+
+report_section maps_section(const report_options& options) {
+  report_section sec;
+  sec.title = "Comparison over all rigid bodies";
+  std::ostringstream md;
+  md << "## Comparison over all rigid bodies (LV section 5, Figs. 6–10)\n\n";
+  md << bodies_chart(options, sec.files);
+  std::vector<family_map> maps;
+  for (const std::string family : {"N", "P"}) {
+    const auto file = options.maps_dir.empty() ? std::filesystem::path() : options.maps_dir / ("map-" + family + ".jsonl");
+    if (!file.empty() && std::filesystem::exists(file)) {
+      maps.push_back(read_map(file, family));
+      continue;
+    }
+    const int K = options.full ? full_grid
+                  : options.quick ? (family == "N" ? quick_grid_N : quick_grid_P)
+                                  : (family == "N" ? default_grid_N : default_grid_P);
+    maps.push_back(compute_map(options, family, K));
+  }
+  md << "The maps: ";
+  for (const auto& m : maps) {
+    md << m.family << " " << m.source << " (" << m.bodies.size() << " bodies";
+    if (m.seconds > 0) md << ", " << std::fixed << std::setprecision(0) << m.seconds << " s";
+    md << std::defaultfloat << "); ";
+  }
+  md << "the paper's grid is --grid 200 (40,401 points). The default report computes coarse grids (a row costs two exact "
+        "solves at its ends, about 20 s for P); `rotlie report --full` computes --grid 200 here (hours for P), and "
+        "`--maps DIR` draws the files `map-N.jsonl`, `map-P.jsonl` of `rotlie map --out DIR` instead. Each body is "
+        "placed at (I1, I2) of its image in the triangle; the map files are in this folder.\n\n";
+  const std::array<std::array<std::string, 2>, 2> figures = {{{"7", "8"}, {"9", "10"}}};
+  for (std::size_t k = 0; k < maps.size(); ++k) {
+    const auto& m = maps[k];
+    const std::string f = m.family;
+    md << "### Family " << f << "\n\n";
+    md << categories_chart(options, m, false, "maps_fig" + figures[k][0] + "a_best_" + f,
+                           "Fig. " + figures[k][0] + "a: the best " + f + " integrator by analytic remainder ‖H_R5‖.", sec.files);
+    md << categories_chart(options, m, true, "maps_fig" + figures[k][0] + "b_permutation_" + f,
+                           "Fig. " + figures[k][0] + "b: the permutation of that best integrator.", sec.files);
+    md << ratio_chart(options, m, "maps_fig" + figures[k][1] + "_ratio_" + f,
+                      "Fig. " + figures[k][1] + ": log10 of R_M / R_" + f + " × (12/" + (f == "N" ? "9" : "11") +
+                          ")^4, RS4 S5 McLachlan at its best permutation against the best " + f +
+                          "; above 0 (right of the black contour ratio = 1) " + f + " wins at equal cost.",
+                      sec.files);
+  }
+  md << "### Where the dedicated integrators beat RS4 S5 McLachlan\n\n" << fractions_table(maps) << "\n";
+  md << "δ = min(I2 − I1, I3 − I2) / I3 measures the distance to the symmetric tops (δ = 0 on them, at most 1/3, at "
+        "(1/3, 2/3, 1)). The paper (section 5.2): the integrators N are better than RS4 S5 McLachlan \"only for some "
+        "bodies\", RS4 S5 McLachlan being \"especially more accurate for the ones close to the symmetric tops\"; (section "
+        "5.3) the integrators P are better \"only for very asymmetric bodies\".\n\n";
+  md << "### Isolated singular points (Fig. 9)\n\n";
+  for (const auto& m : maps) md << singular_bodies(m);
+  md << "\nOn every grid computed so far the only body with singular systems is the flat body (1/4, 3/4, 1) (s = 1/2, "
+        "t = 0, on any grid with K even), where I1 + I2 = I3 and I2 − I1 = I3/2. Fassò (2003) observed (the paper recalls "
+        "it in section 3.2) that a leapfrog is of order 4 there, and rotlie confirms it: `rotlie remainder --scheme ABCBA "
+        "--inertia 1/4,3/4,1 --order 3` prints H_R3 = 0 (permutation ABC; the other five permutations do not vanish). At "
+        "this body the two conditions P1, P2 of the singular systems share a factor, so their solutions form a curve "
+        "instead of isolated points and the automatic resolution stops (the eliminant vanishes identically). The likely "
+        "reason, not checked system by system: those words reduce to that leapfrog when some of their stages are zero, "
+        "so H_R3 = 0 along a whole curve of their coefficients. These are the paper's isolated points \"where a "
+        "singularity occurs during the automatic resolution\" (Fig. 9).\n\n";
+  sec.markdown = md.str();
+  return sec;
+}
+
+}  // namespace rotlie::reports

@@ -1,0 +1,148 @@
+#include "rotlie/solver/family_systems.hpp"
+
+#include <cln/real.h>
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+
+#include "rotlie/bch/modified_hamiltonian.hpp"
+#include "rotlie/solver/body_map.hpp"
+
+namespace rotlie::solver {
+namespace {
+
+constexpr int n = interpolation_nodes;
+using node_values = std::array<cln::cl_RA, n * n>;  // [a * n + b]: the value at w1 = a + 1, w2 = b + 1
+
+// Divided differences on the nodes 1, 2, …, n (consecutive integers: the k-th difference divides by k),
+// first along w2 for each w1, then along w1: the tensor Newton coefficients.
+void to_newton_form(node_values& y) {
+  for (int a = 0; a < n; ++a)
+    for (int k = 1; k < n; ++k)
+      for (int i = n - 1; i >= k; --i) y[a * n + i] = (y[a * n + i] - y[a * n + i - 1]) / k;
+  for (int b = 0; b < n; ++b)
+    for (int k = 1; k < n; ++k)
+      for (int i = n - 1; i >= k; --i) y[i * n + b] = (y[i * n + b] - y[(i - 1) * n + b]) / k;
+}
+
+template <class T>
+std::array<T, n> newton_basis(const T& w) {
+  std::array<T, n> out;
+  out[0] = T(1);
+  for (int k = 1; k < n; ++k) out[k] = out[k - 1] * (w - T(k));
+  return out;
+}
+
+// x-exponents → values at the nodes, for one polynomial of the system
+using sampled_polynomial = std::map<std::uint32_t, node_values>;
+
+void sample(sampled_polynomial& into, const lie::coefficient_polynomial& p, int node) {
+  for (const auto& t : p.terms()) {
+    auto [at, inserted] = into.try_emplace(t.key);
+    if (inserted) at->second.fill(cln::cl_RA(0));
+    at->second[static_cast<std::size_t>(node)] = t.c;
+  }
+}
+
+body_polynomial interpolate(sampled_polynomial sampled) {
+  body_polynomial out;
+  for (auto& [key, values] : sampled) {
+    to_newton_form(values);
+    body_polynomial::term t;
+    const auto e = lie::coefficient_polynomial::unpack(key);
+    t.x = {e[0], e[1], e[2]};
+    t.exact = values;
+    for (std::size_t k = 0; k < values.size(); ++k) t.approx[k] = static_cast<long double>(cln::double_approx(values[k]));
+    out.terms.push_back(std::move(t));
+  }
+  return out;
+}
+
+}  // namespace
+
+body_system interpolate_system(const std::string& scheme, const std::string& perm) {
+  const auto named = bch::find_named_scheme(scheme);
+  if (!named) throw std::invalid_argument("unknown scheme '" + scheme + "'");
+  body_system s;
+  s.scheme = scheme;
+  s.permutation = perm;
+  s.layout = bch::layout_scheme(named->word, named->split, perm);
+  s.unknowns = static_cast<int>(s.layout.free_coefficients.size());
+  sampled_polynomial p1, p2;
+  std::map<lie::monomial, sampled_polynomial> h5;
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      const std::array<cln::cl_RA, 3> w{cln::cl_RA(a + 1), cln::cl_RA(b + 1), cln::cl_RA(1)};
+      const auto k = bch::compute_exact_modified_hamiltonian(s.layout, w, 5);
+      const int node = a * n + b;
+      sample(p1, k.remainder[3].coefficient(lie::monomial(2, 2, 0)), node);
+      sample(p2, k.remainder[3].coefficient(lie::monomial(2, 0, 2)), node);
+      for (const auto& [m, q] : k.remainder[5].terms()) sample(h5[m], q, node);
+    }
+  s.p1 = interpolate(std::move(p1));
+  s.p2 = interpolate(std::move(p2));
+  for (auto& [m, q] : h5) s.h5.push_back(interpolate(std::move(q)));
+  return s;
+}
+
+lie::coefficient_polynomial body_polynomial::at(const cln::cl_RA& w1, const cln::cl_RA& w2) const {
+  const auto n1 = newton_basis(w1), n2 = newton_basis(w2);
+  lie::coefficient_polynomial out;
+  for (const auto& t : terms) {
+    cln::cl_RA c = 0;
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) c = c + t.exact[static_cast<std::size_t>(a * n + b)] * n1[a] * n2[b];
+    out += lie::coefficient_polynomial::monomial({t.x[0], t.x[1], t.x[2], 0}, c);
+  }
+  return out;
+}
+
+const std::vector<body_system>& family_systems(const std::string& family) {
+  static std::mutex guard;
+  static std::map<std::string, std::unique_ptr<std::vector<body_system>>> cache;
+  const std::lock_guard lock(guard);
+  auto& slot = cache[family];
+  if (!slot) {
+    auto systems = std::make_unique<std::vector<body_system>>();
+    for (const auto& scheme : family_schemes(family))
+      for (const auto& perm : bch::permutation_names()) systems->push_back(interpolate_system(scheme, perm));
+    slot = std::move(systems);
+  }
+  return *slot;
+}
+
+namespace {
+
+numeric_polynomial evaluate(const body_polynomial& p, const std::array<long double, n>& n1,
+                            const std::array<long double, n>& n2) {
+  numeric_polynomial out;
+  out.terms.reserve(p.terms.size());
+  for (const auto& t : p.terms) {
+    long double c = 0;
+    for (int a = 0; a < n; ++a) {
+      long double inner = 0;
+      for (int b = 0; b < n; ++b) inner += t.approx[static_cast<std::size_t>(a * n + b)] * n2[b];
+      c += inner * n1[a];
+    }
+    if (c == 0) continue;
+    out.terms.push_back({t.x, c});
+    out.max_degree = std::max({out.max_degree, t.x[0], t.x[1], t.x[2]});
+  }
+  return out;
+}
+
+}  // namespace
+
+numeric_system evaluate_system(const body_system& system, long double w1, long double w2) {
+  const auto n1 = newton_basis(w1), n2 = newton_basis(w2);
+  numeric_system out;
+  out.unknowns = system.unknowns;
+  out.p1 = evaluate(system.p1, n1, n2);
+  out.p2 = evaluate(system.p2, n1, n2);
+  for (const auto& q : system.h5) out.h5.push_back(evaluate(q, n1, n2));
+  return out;
+}
+
+}  // namespace rotlie::solver
