@@ -142,7 +142,7 @@ int run_md(const md_options& o) {
   if (spec.rotor == models::rotor_kind::table) {
     // a reference name or a dedicated SCHEME:PERM:LABEL, solved for the scene's water molecule
     try {
-      r.rotor = lookup_scheme(spec.rotor_table, parse_inertia_option(water_body_text()));
+      r.rotor = lookup_scheme(spec.rotor_table, parse_inertia_option(water_body_text()), foreign_table::refuse);
     } catch (const usage_error& e) {
       std::string why = e.what();
       if (why.rfind("--scheme: ", 0) == 0) why = why.substr(10);

@@ -48,13 +48,10 @@ std::optional<schemes::scheme_table> rotor_of(const std::string& integrator) {
   const auto spec = models::md_integrator_named(integrator);
   if (spec.rotor != models::rotor_kind::table) return std::nullopt;
   try {
-    return lookup_scheme(spec.rotor_table, parse_inertia_option(models::tip3p_body_text()));
+    return lookup_scheme(spec.rotor_table, parse_inertia_option(models::tip3p_body_text()), foreign_table::refuse);
   } catch (const usage_error& e) {
     std::string why = e.what();
     if (why.rfind("--scheme: ", 0) == 0) why = why.substr(10);
-    const std::string force_hint = " (pass --force to use it anyway)";  // md has no --force
-    if (why.size() > force_hint.size() && why.compare(why.size() - force_hint.size(), force_hint.size(), force_hint) == 0)
-      why.erase(why.size() - force_hint.size());
     throw usage_error("--integrator " + integrator + ": " + why);
   }
 }

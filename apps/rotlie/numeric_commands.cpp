@@ -64,7 +64,7 @@ struct free_body_input {
 
 free_body_input free_body_of(const std::string& scheme, const std::string& inertia, bool force) {
   const auto body = parse_inertia_option(inertia);
-  return {lookup_scheme(scheme, body, force), lie::inertia_text(body)};
+  return {lookup_scheme(scheme, body, force ? foreign_table::use_with_warning : foreign_table::refuse_unless_forced), lie::inertia_text(body)};
 }
 
 template <class T>

@@ -51,7 +51,7 @@ std::string body_text(const lie::moments_of_inertia& m) {
 }
 
 void check_body_of(const schemes::scheme_table& t, const std::string& file, const lie::moments_of_inertia& body,
-                   bool force) {
+                   foreign_table policy) {
   std::array<std::string, 3> exact;  // p/q text, compared as rationals by the table's own rule
   for (std::size_t i = 0; i < 3; ++i) {
     std::ostringstream text;
@@ -66,7 +66,8 @@ void check_body_of(const schemes::scheme_table& t, const std::string& file, cons
   } catch (const std::invalid_argument& e) {
     why = file + ": its inertia line '" + t.inertia + "' is not three positive exact numbers";
   }
-  if (!force) throw usage_error(why + " (pass --force to use it anyway)");
+  if (policy == foreign_table::refuse) throw usage_error(why);
+  if (policy == foreign_table::refuse_unless_forced) throw usage_error(why + " (pass --force to use it anyway)");
   std::cerr << "rotlie: warning: " << one_line(why) << " (used anyway: --force)\n";
 }
 
@@ -191,7 +192,7 @@ void check_numeric_scales(const std::string& inertia, const std::string& g0, con
                       " radians, outside the range " + range_text);
 }
 
-schemes::scheme_table lookup_scheme(const std::string& name, const lie::moments_of_inertia& body, bool force) {
+schemes::scheme_table lookup_scheme(const std::string& name, const lie::moments_of_inertia& body, foreign_table policy) {
   if (name.empty()) throw usage_error("--scheme must not be empty");
   try {
     if (auto t = schemes::reference_scheme(name)) return *t;
@@ -207,7 +208,7 @@ schemes::scheme_table lookup_scheme(const std::string& name, const lie::moments_
     } catch (const std::invalid_argument& e) {
       throw usage_error(name + ": " + e.what());
     }
-    check_body_of(t, name, body, force);
+    check_body_of(t, name, body, policy);
     return t;
   }
   // SCHEME:PERM:LABEL

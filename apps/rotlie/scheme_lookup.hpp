@@ -14,10 +14,14 @@ namespace rotlie::app {
 /// rate |G0|/I): inside it no product or quotient of two of them leaves double precision.
 inline constexpr int max_decimal_exponent = 150;
 
-/// Throws usage_error for an unknown name, a bad label or a file that fails its checks. A table
-/// solved for another body (its `inertia` line, compared up to a common factor) is refused unless
-/// `force`, in which case a warning goes to stderr.
-schemes::scheme_table lookup_scheme(const std::string& name, const lie::moments_of_inertia& body, bool force = false);
+/// What to do with a scheme-table file solved for another body (its `inertia` line, compared up
+/// to a common factor): refuse it and name --force (integrate, order), refuse it where the command
+/// has no such option (md), or use it with a warning on stderr (--force given).
+enum class foreign_table { refuse_unless_forced, refuse, use_with_warning };
+
+/// Throws usage_error for an unknown name, a bad label or a file that fails its checks.
+schemes::scheme_table lookup_scheme(const std::string& name, const lie::moments_of_inertia& body,
+                                    foreign_table policy = foreign_table::refuse_unless_forced);
 
 /// --inertia as exact moments (water, sphere, I1,I2,I3), validated (eq. 77): any size, for the
 /// exact subcommands (remainder).

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -86,4 +87,18 @@ BOOST_AUTO_TEST_CASE(a_dedicated_rotor_is_solved_for_the_water_molecule) {
   const auto j = md_json("--scene free-water --integrator SIER2/P1:BAC:5 --h 8 --T 1 --runs 4");
   BOOST_TEST(j["integrator"] == "SIER2/P1:BAC:5");
   BOOST_TEST(j["tau_ps"].get<double>() > 1000);  // a 4th-order rotor: far beyond MRDL's picoseconds
+}
+
+BOOST_AUTO_TEST_CASE(a_rotor_table_solved_for_another_body_is_refused_without_an_override_hint) {
+  // md has no --force: the refusal must not suggest one
+  const fs::path dir = fs::temp_directory_path() / ("rotlie-md-foreign-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  BOOST_TEST_REQUIRE(run("solve --family N --scheme N2 --perm BAC --inertia 1/2,4/5,1 --out " + dir.string()).status == 0);
+  const auto r = run("md --scene free-water --integrator SIER2/" + (dir / "N2_BAC_2.scheme").string() + " --h 8 --T 1 --runs 2");
+  fs::remove_all(dir);
+  BOOST_TEST(r.status == 2, r.err);
+  BOOST_TEST(r.err.find("was solved for the body") != std::string::npos, r.err);
+  BOOST_TEST(r.err.find("--force") == std::string::npos, r.err);
+  BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  BOOST_TEST(r.out.empty());
 }

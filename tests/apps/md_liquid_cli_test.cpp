@@ -106,6 +106,7 @@ BOOST_AUTO_TEST_CASE(liquid_water_runs_saves_reloads_and_refuses_another_system)
   BOOST_TEST((WIFEXITED(raw) && WEXITSTATUS(raw) == 2));
   const std::string refused = slurp(scratch() / "err");
   BOOST_TEST(refused.find("was solved for the body") != std::string::npos, refused);
+  BOOST_TEST(refused.find("--force") == std::string::npos, refused);  // md has no --force
   BOOST_TEST(std::count(refused.begin(), refused.end(), '\n') == 1);
 
   // the state of 365 molecules for a run of 400: one line, status 2, nothing on stdout, the file unchanged
