@@ -168,3 +168,26 @@ BOOST_AUTO_TEST_CASE(real_units_are_lammps_constants) {
   s.bodies[0].rot.G = {1, 2, 3};
   BOOST_TEST(sys.kinetic_energy(s) == models::real_units::mvv2e<double>() * (1.0 + 1.5 + 1.5), boost::test_tools::tolerance(1e-15));
 }
+
+BOOST_AUTO_TEST_CASE(a_state_handed_to_another_potential_does_not_keep_the_old_forces) {
+  using system = models::torqued_rigid_bodies<double, models::dipole_in_field<double>, models::exact_free_rotation<double>>;
+  const auto I = test::water_moments_real<double>();
+  const auto strong = test::dipole_scene<double>(test::strong_field<double>());
+  const auto weak = test::dipole_scene<double>(test::strong_field<double>() / 10);
+  const system a(test::water_mass<double>(), I, strong, models::exact_free_rotation<double>(I));
+  const system b(test::water_mass<double>(), I, weak, models::exact_free_rotation<double>(I));
+  auto s = test::thermal_bodies<double>(3);
+  a.ensure_forces(s);
+  BOOST_TEST_REQUIRE(s.forces_current);
+  std::vector<vec3<double>> f(s.bodies.size()), tau(s.bodies.size());
+  const double V_weak = weak.evaluate(s.bodies, f, tau);
+  BOOST_TEST_REQUIRE(V_weak != s.potential);  // the two potentials differ here
+  BOOST_TEST(b.potential_energy(s) == V_weak);
+  b.ensure_forces(s);
+  BOOST_TEST((s.potential == V_weak && s.force == f && s.torque == tau));
+  // a copy of a system shares its potential, and so its cache
+  const system b_copy = b;
+  const long before = s.force_evaluations;
+  b_copy.ensure_forces(s);
+  BOOST_TEST(s.force_evaluations == before);
+}

@@ -67,7 +67,7 @@ inline md_integrator md_integrator_named(std::string_view name) {
     if (n.rfind(prefix, 0) == 0) {
       const std::string table = n.substr(prefix.size());
       // the table: a reference name, SCHEME:PERM:LABEL or a scheme-table file (a path may hold '/')
-      if (table.empty() || table.find_first_of("\t\r\n") != std::string::npos)
+      if (table.empty() || table.find_first_of(" \t\r\n") != std::string::npos)
         throw std::invalid_argument("integrator '" + schemes::printable_text(n) + "': " + prefix +
                                     " needs a scheme table name or file, e.g. " + prefix + "RS4-S5-McLachlan:CBA");
       return {n, tv, rotor_kind::table, table, f_of(tv)};

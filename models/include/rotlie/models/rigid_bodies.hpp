@@ -22,6 +22,7 @@ struct rigid_bodies_state {
   std::vector<vec3<T>> force, torque;  ///< lab force (kcal/mol/Å), lab torque about the centre (kcal/mol)
   T potential{};                       ///< V at the current configuration (kcal/mol)
   bool forces_current = false;
+  unsigned long forces_of = 0;  ///< which system's potential the cached forces are of (its identity)
   long force_evaluations = 0;
 };
 

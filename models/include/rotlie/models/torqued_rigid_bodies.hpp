@@ -11,6 +11,7 @@
 //   bool acts() const                                  false for V = 0: kicks are skipped, nothing evaluated
 // A Rotor R provides advance(body_state<T>&, const T& t) const: the free rotation for time t
 // (exact_free_rotation, table_rotor, sej4_rotor), with the body's moments bound at construction.
+#include <atomic>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -94,16 +95,18 @@ class torqued_rigid_bodies {
     }
   }
 
-  /// Evaluates the forces unless they belong to the current configuration (the vectors are sized
-  /// once; later calls do not allocate).
+  /// Evaluates the forces unless they belong to the current configuration and to this system's
+  /// potential (a state handed from one system to another never keeps the other's forces). The
+  /// vectors are sized once; later calls do not allocate.
   void ensure_forces(state& x) const {
-    if (x.forces_current) return;
+    if (cached(x)) return;
     if (x.force.size() != x.bodies.size()) {
       x.force.assign(x.bodies.size(), vec3<T>{});
       x.torque.assign(x.bodies.size(), vec3<T>{});
     }
     x.potential = potential_.evaluate(x.bodies, x.force, x.torque);
     x.forces_current = true;
+    x.forces_of = potential_id_;
     ++x.force_evaluations;
   }
 
@@ -118,7 +121,7 @@ class torqued_rigid_bodies {
   /// scratch vectors, not counted as a step's force evaluation).
   T potential_energy(const state& x) const {
     if (!potential_.acts()) return T(0);
-    if (x.forces_current) return x.potential;
+    if (cached(x)) return x.potential;
     std::vector<vec3<T>> f(x.bodies.size()), tau(x.bodies.size());
     return potential_.evaluate(x.bodies, f, tau);
   }
@@ -126,9 +129,18 @@ class torqued_rigid_bodies {
   T energy(const state& x) const { return kinetic_energy(x) + potential_energy(x); }
 
  private:
+  bool cached(const state& x) const { return x.forces_current && x.forces_of == potential_id_; }
+
+  // One identity per constructed system, shared by its copies (they hold the same potential).
+  static unsigned long next_potential_id() {
+    static std::atomic<unsigned long> last{0};
+    return ++last;
+  }
+
   T mass_;
   vec3<T> I_;
   Potential potential_;
+  unsigned long potential_id_ = next_potential_id();
   Rotor rotor_;
   T ftm2v_, mvv2e_;
 };
