@@ -1,5 +1,7 @@
 #include "rotlie/schemes/same_body.hpp"
 
+#include "rotlie/schemes/decimal_text.hpp"
+
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -11,23 +13,7 @@
 namespace rotlie::schemes {
 namespace {
 
-// A positive decimal integer times a power of ten: digits (most significant first, no leading or
-// trailing zeros) · 10^exponent. The numeric side has no big-number library; products of four
-// such numbers are all the comparison needs.
-struct decimal {
-  std::string digits;  ///< "0" only for zero
-  long exponent = 0;
-};
-
-decimal normalised(std::string digits, long exponent) {
-  const auto first = digits.find_first_not_of('0');
-  if (first == std::string::npos) return {"0", 0};
-  digits.erase(0, first);
-  const auto last = digits.find_last_not_of('0');
-  exponent += static_cast<long>(digits.size() - 1 - last);
-  digits.erase(last + 1);
-  return {digits, exponent};
-}
+using decimal = decimal_number;
 
 decimal times(const decimal& a, const decimal& b) {
   std::vector<int> r(a.digits.size() + b.digits.size(), 0);  // least significant first
@@ -37,47 +23,10 @@ decimal times(const decimal& a, const decimal& b) {
   for (std::size_t k = 0; k + 1 < r.size(); ++k) r[k + 1] += r[k] / 10, r[k] %= 10;
   std::string d;
   for (std::size_t k = r.size(); k-- > 0;) d += static_cast<char>('0' + r[k]);
-  return normalised(d, a.exponent + b.exponent);
+  return normalised_decimal(d, a.exponent + b.exponent);
 }
 
 bool operator==(const decimal& a, const decimal& b) { return a.digits == b.digits && a.exponent == b.exponent; }
-
-// [+]digits[.digits][(e|E)[+-]digits], positive; nothing when malformed, zero or beyond the limits.
-std::optional<decimal> positive_decimal(std::string_view s) {
-  constexpr std::size_t max_digits = 400;
-  constexpr long max_exponent = 400;
-  std::size_t i = 0;
-  if (i < s.size() && s[i] == '+') ++i;
-  std::string digits;
-  long exponent = 0;
-  bool point = false;
-  for (; i < s.size(); ++i) {
-    if (std::isdigit(static_cast<unsigned char>(s[i]))) {
-      digits += s[i];
-      if (point) --exponent;
-    } else if (s[i] == '.' && !point) {
-      point = true;
-    } else {
-      break;
-    }
-  }
-  if (digits.empty() || digits.size() > max_digits) return std::nullopt;
-  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-    ++i;
-    const bool negative = i < s.size() && s[i] == '-';
-    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-    const std::size_t start = i;
-    long e = 0;
-    for (; i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])); ++i)
-      if ((e = e * 10 + (s[i] - '0')) > max_exponent) return std::nullopt;
-    if (i == start) return std::nullopt;
-    exponent += negative ? -e : e;
-  }
-  if (i != s.size()) return std::nullopt;
-  const decimal d = normalised(digits, exponent);
-  if (d.digits == "0") return std::nullopt;
-  return d;
-}
 
 struct fraction {
   decimal num, den;

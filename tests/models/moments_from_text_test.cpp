@@ -6,6 +6,7 @@
 
 #include "model_support.hpp"
 #include "rotlie/models/moments_from_text.hpp"
+#include "rotlie/schemes/same_body.hpp"
 
 using namespace rotlie;
 using test::quad;
@@ -69,4 +70,28 @@ BOOST_AUTO_TEST_CASE(bad_text_is_refused) {
                           "0x1p3 1 1", "1e 1 1", "1/2/3 1 1", "1e401 1 1", "1,1,1", "1 1 3"})
     BOOST_CHECK_THROW(models::moments_from_text<double>(bad), std::invalid_argument);
   BOOST_CHECK_THROW(models::moments_from_text<double>("1e300/1e-300 1 1"), std::invalid_argument);  // 1e600: out of range
+}
+
+BOOST_AUTO_TEST_CASE(the_reader_accepts_exactly_what_the_table_body_comparison_accepts) {
+  // one scanner for both: a moment is read iff schemes::same_body can compare it (values inside the
+  // scalar's range: the range check is the reader's own)
+  const std::string zeros_401 = "0." + std::string(399, '0') + "1";  // 401 digits written: beyond the limit
+  const std::string zeros_400 = "0." + std::string(398, '0') + "1";
+  for (const std::string& x : {std::string("1"), std::string("0.5e3"), std::string("1e400/1e400"), std::string("1e401"), zeros_400,
+                               zeros_401, std::string("+7/3"), std::string("2/0"), std::string(".5"), std::string("5.")}) {
+    bool read = true, compared = true;
+    try {
+      models::moment_from_text<long double>(x);
+    } catch (const std::invalid_argument&) {
+      read = false;
+    }
+    try {
+      schemes::scheme_table t;
+      t.inertia = x + " " + x + " " + x;
+      schemes::same_body(t, {x, x, x});
+    } catch (const std::invalid_argument&) {
+      compared = false;
+    }
+    BOOST_TEST(read == compared, x.substr(0, 12) << "… (" << x.size() << " characters)");
+  }
 }

@@ -11,52 +11,13 @@
 
 #include "rotlie/models/composition.hpp"
 #include "rotlie/models/rigid_body.hpp"
+#include "rotlie/schemes/decimal_text.hpp"
 
 namespace rotlie::models {
 
 namespace detail {
 
-/// A positive decimal as digits (no leading zeros) · 10^exponent; empty digits when malformed,
-/// zero, or beyond 400 digits or |exponent| > 400 (the limits of schemes::same_body).
-struct decimal_text {
-  std::string digits;
-  long exponent = 0;
-};
-
-inline decimal_text positive_decimal_text(std::string_view s) {
-  constexpr std::size_t max_digits = 400;
-  constexpr long max_exponent = 400;
-  std::size_t i = 0;
-  if (i < s.size() && s[i] == '+') ++i;
-  decimal_text d;
-  bool point = false, any = false;
-  for (; i < s.size(); ++i) {
-    if (std::isdigit(static_cast<unsigned char>(s[i]))) {
-      any = true;
-      if (point) --d.exponent;
-      if (d.digits.empty() && s[i] == '0') continue;  // a leading zero
-      d.digits += s[i];
-    } else if (s[i] == '.' && !point) {
-      point = true;
-    } else {
-      break;
-    }
-  }
-  if (!any || d.digits.size() > max_digits) return {};
-  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-    ++i;
-    const bool negative = i < s.size() && s[i] == '-';
-    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-    const std::size_t start = i;
-    long e = 0;
-    for (; i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])); ++i)
-      if ((e = e * 10 + (s[i] - '0')) > max_exponent) return {};
-    if (i == start) return {};
-    d.exponent += negative ? -e : e;
-  }
-  if (i != s.size() || d.digits.empty()) return {};
-  return d;
-}
+using decimal_text = schemes::decimal_number;
 
 /// d / 10^(digits − 1): the same digits with the point after the first, in [1, 10).
 template <class T>
@@ -85,10 +46,10 @@ T moment_from_text(std::string_view text) {
   const auto slash = text.find('/');
   const std::string p_text(text.substr(0, slash));
   const std::string q_text = slash == std::string_view::npos ? std::string("1") : std::string(text.substr(slash + 1));
-  const auto p = detail::positive_decimal_text(p_text), q = detail::positive_decimal_text(q_text);
-  if (p.digits.empty() || q.digits.empty())
+  const auto p = schemes::positive_decimal(p_text), q = schemes::positive_decimal(q_text);
+  if (!p || !q)
     throw std::invalid_argument("a moment of inertia must be a positive exact number (p or p/q), got '" + std::string(text) + "'");
-  const T x = detail::quotient<T>(p, q, p_text, q_text);
+  const T x = detail::quotient<T>(*p, *q, p_text, q_text);
   using std::isfinite;
   if (!(x > 0) || !isfinite(static_cast<double>(x)))
     throw std::invalid_argument("the moment of inertia '" + std::string(text) + "' is outside the range of the scalar");
