@@ -3,6 +3,8 @@
 #define BOOST_TEST_MODULE cli
 #include <boost/test/unit_test.hpp>
 
+#include "cli_support.hpp"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -15,36 +17,9 @@
 
 namespace fs = std::filesystem;
 
+using namespace rotlie::test_cli;
+
 namespace {
-
-struct run_result {
-  int status = -1;  // exit status, or 128 + signal
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-fs::path scratch_dir() {
-  static const fs::path dir = fs::temp_directory_path() / ("rotlie-cli-test-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
-
-run_result run(const std::string& args) {
-  const fs::path out = scratch_dir() / "stdout", err = scratch_dir() / "stderr";
-  const std::string cmd = std::string(ROTLIE_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
-  const int raw = std::system(cmd.c_str());
-  run_result r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
 
 std::size_t line_count(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
 
@@ -214,7 +189,7 @@ BOOST_AUTO_TEST_CASE(solve_p_family_gives_eq_76_first) {
 }
 
 BOOST_AUTO_TEST_CASE(solve_writes_scheme_tables_that_meet_the_contract) {
-  const fs::path out = scratch_dir() / "tables";
+  const fs::path out = scratch() / "tables";
   const auto r = run("solve --family N --scheme N4 --perm BCA --inertia water --digits 45 --out " + out.string());
   BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
   const std::string table = slurp(out / "N4_BCA_1.scheme");
@@ -331,14 +306,14 @@ BOOST_AUTO_TEST_CASE(numeric_commands_bad_input) {
   expect_clean_error("exact --inertia water --T -1", "--T must be positive");
   expect_clean_error("order --scheme ABCBA2 --inertia water --min-level 5 --max-level 2", "level");
   // A table whose A coefficients do not sum to 1.
-  const fs::path table = scratch_dir() / "bad.scheme";
+  const fs::path table = scratch() / "bad.scheme";
   std::ofstream(table) << "format_version 1\nname broken\nsplit ABC\nword ABA\norder 2\nsymmetric true\nstages 3\n"
                           "stage A a1 0.4\nstage B b1 1\nstage A a1 0.4\n";
   expect_clean_error("integrate --scheme " + table.string() + " --inertia water --h 1/64", "sum to 0.800000, not 1");
 }
 
 BOOST_AUTO_TEST_CASE(report_writes_a_complete_folder) {
-  const fs::path out = scratch_dir() / "report";
+  const fs::path out = scratch() / "report";
   const auto r = run("report --quick --out " + out.string());
   BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
   for (const auto* f : {"index.md", "table1.md", "table1.tex", "table1.json", "dims.md", "dims.json"})
@@ -350,7 +325,7 @@ BOOST_AUTO_TEST_CASE(report_writes_a_complete_folder) {
 }
 
 BOOST_AUTO_TEST_CASE(report_into_an_impossible_folder_fails_cleanly) {
-  const fs::path blocker = scratch_dir() / "a-file";
+  const fs::path blocker = scratch() / "a-file";
   std::ofstream(blocker) << "x";
   expect_clean_error("report --quick --out " + (blocker / "sub").string(), "cannot create");
 }

@@ -5,6 +5,8 @@
 #define BOOST_TEST_MODULE map_cli
 #include <boost/test/unit_test.hpp>
 
+#include "cli_support.hpp"
+
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -19,36 +21,9 @@
 
 namespace fs = std::filesystem;
 
+using namespace rotlie::test_cli;
+
 namespace {
-
-struct run_result {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-fs::path scratch() {
-  static const fs::path dir = fs::temp_directory_path() / ("rotlie-map-test-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
-
-run_result run_command(const std::string& command) {
-  const fs::path out = scratch() / "stdout", err = scratch() / "stderr";
-  const int raw = std::system((command + " >" + out.string() + " 2>" + err.string() + " </dev/null").c_str());
-  run_result r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
-run_result run(const std::string& args) { return run_command(std::string(ROTLIE_BINARY) + " " + args); }
 
 std::vector<nlohmann::json> body_lines(const fs::path& file) {
   std::ifstream in(file);

@@ -3,6 +3,8 @@
 #define BOOST_TEST_MODULE md_cli
 #include <boost/test/unit_test.hpp>
 
+#include "cli_support.hpp"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -14,30 +16,9 @@
 
 namespace fs = std::filesystem;
 
+using namespace rotlie::test_cli;
+
 namespace {
-
-struct run_result {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-run_result run(const std::string& args) {
-  const fs::path dir = fs::temp_directory_path() / ("rotlie-md-cli-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const std::string cmd = std::string(ROTLIE_BINARY) + " " + args + " >" + (dir / "out").string() + " 2>" +
-                          (dir / "err").string() + " </dev/null";
-  const int raw = std::system(cmd.c_str());
-  run_result r{WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), slurp(dir / "out"), slurp(dir / "err")};
-  fs::remove_all(dir);
-  return r;
-}
 
 nlohmann::json md_json(const std::string& args) {
   const auto r = run("md " + args + " --json");
@@ -91,7 +72,7 @@ BOOST_AUTO_TEST_CASE(a_dedicated_rotor_is_solved_for_the_water_molecule) {
 
 BOOST_AUTO_TEST_CASE(a_rotor_table_solved_for_another_body_is_refused_without_an_override_hint) {
   // md has no --force: the refusal must not suggest one
-  const fs::path dir = fs::temp_directory_path() / ("rotlie-md-foreign-" + std::to_string(::getpid()));
+  const fs::path dir = scratch() / "foreign";
   fs::create_directories(dir);
   BOOST_TEST_REQUIRE(run("solve --family N --scheme N2 --perm BAC --inertia 1/2,4/5,1 --out " + dir.string()).status == 0);
   const auto r = run("md --scene free-water --integrator SIER2/" + (dir / "N2_BAC_2.scheme").string() + " --h 8 --T 1 --runs 2");

@@ -6,6 +6,8 @@
 #define BOOST_TEST_MODULE md_liquid_cli
 #include <boost/test/unit_test.hpp>
 
+#include "cli_support.hpp"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,49 +19,19 @@
 
 namespace fs = std::filesystem;
 
+using namespace rotlie::test_cli;
+
 namespace {
-
-struct run_result {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-const fs::path& scratch() {
-  static const fs::path dir = [] {
-    const fs::path d = fs::temp_directory_path() / ("rotlie-md-liquid-" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
-  }();
-  return dir;
-}
-
-run_result run(const std::string& args) {
-  const std::string cmd = std::string(ROTLIE_BINARY) + " " + args + " >" + (scratch() / "out").string() + " 2>" +
-                          (scratch() / "err").string() + " </dev/null";
-  const int raw = std::system(cmd.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), slurp(scratch() / "out"), slurp(scratch() / "err")};
-}
 
 std::string liquid(const std::string& extra, const std::string& integrator = "MRDL") {
   return "md --scene liquid-water --integrator " + integrator + " --h 2 --T 0.02 --runs 1 --molecules 365 --state " +
          (scratch() / "w.state").string() + " " + extra;
 }
 
-struct cleanup {
-  ~cleanup() { fs::remove_all(scratch()); }
-};
 
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(liquid_water_runs_saves_reloads_and_refuses_another_system) {
-  const cleanup at_exit;
   // first run: equilibrates, writes the state, answers in JSON with the contract's fields
   const auto first = run(liquid("--threads 2 --json"));
   BOOST_TEST_REQUIRE(first.status == 0, first.err);

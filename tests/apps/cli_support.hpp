@@ -1,0 +1,65 @@
+#pragma once
+// Running the rotlie binary from a CLI test: one scratch folder per test process, the command's
+// stdout and stderr captured in it, the exit status (128 + n for a signal n, so a crash never
+// passes for an error exit). ROTLIE_BINARY is the built binary's path, defined per test target;
+// include after boost/test/unit_test.hpp (the folder is removed by a global fixture).
+#include <errno.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <system_error>
+
+namespace rotlie::test_cli {
+
+namespace fs = std::filesystem;
+
+struct run_result {
+  int status = -1;  ///< exit status, or 128 + signal
+  std::string out, err;
+};
+
+inline std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// This test process's scratch folder (created on first use; the tests remove what they must).
+inline const fs::path& scratch() {
+  static const fs::path dir = [] {
+    const fs::path d = fs::temp_directory_path() /
+                       ("rotlie-" + std::string(program_invocation_short_name) + "-" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+/// A shell command with stdin closed and both outputs captured.
+inline run_result run_command(const std::string& command) {
+  const fs::path out = scratch() / "stdout", err = scratch() / "stderr";
+  const int raw = std::system((command + " >" + out.string() + " 2>" + err.string() + " </dev/null").c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), slurp(out), slurp(err)};
+}
+
+/// rotlie with the given arguments (shell words).
+inline run_result run(const std::string& args) { return run_command(std::string(ROTLIE_BINARY) + " " + args); }
+
+/// Removes the scratch folder when the test process ends.
+struct scratch_cleanup {
+  ~scratch_cleanup() {
+    std::error_code ec;
+    fs::remove_all(scratch(), ec);
+  }
+};
+
+}  // namespace rotlie::test_cli
+
+using rotlie_cli_scratch_cleanup = rotlie::test_cli::scratch_cleanup;
+BOOST_TEST_GLOBAL_FIXTURE(rotlie_cli_scratch_cleanup);
