@@ -45,6 +45,13 @@ struct resolved_run {
   std::string dipole, field;
 };
 
+// The fields every scene's JSON has: what was run, with which step, cost and seed.
+nlohmann::json run_json(const md_options& o, const resolved_run& r, int f, long steps) {
+  return {{"scene", o.scene}, {"integrator", o.integrator}, {"h_fs", r.run.h_fs}, {"f", f},
+          {"h_over_f_fs", r.run.h_fs / f}, {"T_ps", r.run.T_ps}, {"steps", steps}, {"runs", r.run.runs},
+          {"seed", r.run.seed}, {"scalar", o.scalar}};
+}
+
 template <class T>
 int report_free_water(const md_options& o, const resolved_run& r) {
   const auto result = models::run_free_water(models::free_water<T>{}, r.run);
@@ -53,23 +60,13 @@ int report_free_water(const md_options& o, const resolved_run& r) {
     nlohmann::json samples = nlohmann::json::array();
     for (std::size_t j = 0; j < result.t_ps.size(); ++j)
       samples.push_back({{"t_ps", result.t_ps[j]}, {"delta", result.delta[j]}, {"reference_delta", result.reference_delta[j]}});
-    std::cout << nlohmann::json{{"scene", o.scene},
-                                {"integrator", o.integrator},
-                                {"h_fs", r.run.h_fs},
-                                {"f", result.f},
-                                {"h_over_f_fs", r.run.h_fs / result.f},
-                                {"T_ps", r.run.T_ps},
-                                {"steps", result.steps},
-                                {"runs", r.run.runs},
-                                {"seed", r.run.seed},
-                                {"scalar", o.scalar},
-                                {"tau_ps", number_or_null(result.tau_ps)},
-                                {"tau_error_ps", number_or_null(result.tau_error_ps)},
-                                {"fitted_samples", result.fitted_samples},
-                                {"cpu_s_per_ps", result.cpu_s_per_ps},
-                                {"samples", samples}}
-                     .dump(2)
-              << "\n";
+    auto j = run_json(o, r, result.f, result.steps);
+    j["tau_ps"] = number_or_null(result.tau_ps);
+    j["tau_error_ps"] = number_or_null(result.tau_error_ps);
+    j["fitted_samples"] = result.fitted_samples;
+    j["cpu_s_per_ps"] = result.cpu_s_per_ps;
+    j["samples"] = samples;
+    std::cout << j.dump(2) << "\n";
   } else {
     std::cout << "free water, " << o.integrator << " (f = " << result.f << "), h = " << r.run.h_fs << " fs, " << r.run.runs
               << " runs of " << result.steps << " steps (" << r.run.T_ps << " ps), seed " << r.run.seed << ", " << o.scalar
@@ -89,24 +86,14 @@ int report_dipole_field(const md_options& o, const resolved_run& r) {
   if (result.failed_runs == r.run.runs)
     throw std::runtime_error("every run diverged (non-finite energy): the step is beyond the integrator's stability limit");
   if (o.json) {
-    std::cout << nlohmann::json{{"scene", o.scene},
-                                {"integrator", o.integrator},
-                                {"h_fs", r.run.h_fs},
-                                {"f", result.f},
-                                {"h_over_f_fs", r.run.h_fs / result.f},
-                                {"T_ps", r.run.T_ps},
-                                {"steps", result.steps},
-                                {"runs", r.run.runs},
-                                {"seed", r.run.seed},
-                                {"scalar", o.scalar},
-                                {"dipole_debye", std::stod(r.dipole)},
-                                {"field_MV_per_m", std::stod(r.field)},
-                                {"dH_over_dV_percent", pair_json(result.dH)},
-                                {"dLz_over_Lz", pair_json(result.dLz)},
-                                {"failed_runs", result.failed_runs},
-                                {"cpu_s_per_ps", result.cpu_s_per_ps}}
-                     .dump(2)
-              << "\n";
+    auto j = run_json(o, r, result.f, result.steps);
+    j["dipole_debye"] = std::stod(r.dipole);
+    j["field_MV_per_m"] = std::stod(r.field);
+    j["dH_over_dV_percent"] = pair_json(result.dH);
+    j["dLz_over_Lz"] = pair_json(result.dLz);
+    j["failed_runs"] = result.failed_runs;
+    j["cpu_s_per_ps"] = result.cpu_s_per_ps;
+    std::cout << j.dump(2) << "\n";
   } else {
     std::cout << "dipole in a field, " << o.integrator << " (f = " << result.f << "), h = " << r.run.h_fs << " fs (h/f = "
               << r.run.h_fs / result.f << " fs), " << r.run.runs << " runs of " << result.steps << " steps (" << r.run.T_ps
