@@ -4,11 +4,11 @@
 // one (exact_samples: the exact solution sampled once on the finest grid, with its own error
 // estimate). Every run is models::integrate on the composition engine with the observers of
 // free_body_observers.hpp; the order is fitted by the one rule of order_fit.hpp.
-#include <chrono>
 #include <stdexcept>
 #include <vector>
 
 #include "rotlie/models/composition_stepper.hpp"
+#include "rotlie/models/cpu_time.hpp"
 #include "rotlie/models/exact_samples.hpp"
 #include "rotlie/models/free_body_observers.hpp"
 #include "rotlie/models/integrate.hpp"
@@ -40,19 +40,19 @@ T mean_attitude_error(const free_body_composition<T>& method, const body_state<T
 }
 
 /// CPU seconds per unit of simulated time for step h, measured on repeated runs of at least
-/// `minimum_seconds` (stepping only, no observer).
+/// `minimum_seconds` of this thread's CPU time (stepping only, no observer; CPU, not wall time, so
+/// that the figure does not depend on the machine's load).
 template <class T>
 double cpu_seconds_per_unit_time(const free_body_composition<T>& method, const body_state<T>& initial, const T& h,
                                  double minimum_seconds = 0.02) {
-  using clock = std::chrono::steady_clock;
   constexpr long chunk = 256;
   long steps = 0;
-  const auto start = clock::now();
+  const double start = thread_cpu_seconds();
   double elapsed = 0;
   body_state<T> s = initial;
   do {
     steps += integrate(method, s, h, chunk);
-    elapsed = std::chrono::duration<double>(clock::now() - start).count();
+    elapsed = thread_cpu_seconds() - start;
   } while (elapsed < minimum_seconds);
   volatile double sink = static_cast<double>(s.G[0]);
   (void)sink;

@@ -1,8 +1,6 @@
 #pragma once
 // What the two van Zon–Schofield experiments share: how a run is asked for (integrator, step, length,
 // ensemble, seed), the integrator built for a scene, CPU time, and an ensemble's mean ± error.
-#include <time.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -11,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "rotlie/models/cpu_time.hpp"
 #include "rotlie/models/md_integrators.hpp"
 
 namespace rotlie::models {
@@ -31,13 +30,6 @@ inline long md_steps(const md_run_options& o) {
   const double n = std::round(o.T_ps * 1000 / o.h_fs);
   if (!(n < 1e12)) throw std::invalid_argument("T/h is too many steps");
   return std::max(1L, static_cast<long>(n));
-}
-
-/// CPU seconds used by this thread (the stepping of a run, not the wall clock of a shared machine).
-inline double thread_cpu_seconds() {
-  timespec ts{};
-  ::clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
 /// Mean and standard error of the mean (sample standard deviation / √n; 0 for one value).
