@@ -1,0 +1,212 @@
+// Report section "Audit of the paper's statements" (LV sections 4 and 5): one table, every
+// statement next to rotlie's number from this run and a verdict. Rows from the files of earlier
+// sections are built by audit_table.cpp; the rows below are computed here through the library
+// (cheap: exact rationals, costs, the R family and a few P systems for water, ~1 s of CPU).
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "rotlie/bch/modified_hamiltonian.hpp"
+#include "rotlie/bch/scheme_word.hpp"
+#include "rotlie/reports/audit_table.hpp"
+#include "rotlie/reports/output_file.hpp"
+#include "rotlie/reports/protocol_curves.hpp"
+#include "rotlie/reports/report.hpp"
+#include "rotlie/schemes/reference_schemes.hpp"
+#include "rotlie/solver/body_grid.hpp"
+#include "rotlie/solver/scheme_table.hpp"
+
+namespace rotlie::reports {
+namespace {
+
+std::string fixed(double x, int digits) {
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(digits) << x;
+  return o.str();
+}
+
+audit_row decided(std::string statement, std::string where, std::string tolerance, bool holds, std::string value) {
+  audit_row r;
+  r.statement = std::move(statement);
+  r.where = std::move(where);
+  r.tolerance = std::move(tolerance);
+  r.value = std::move(value);
+  r.verdict = holds ? audit_verdict::holds : audit_verdict::does_not_hold;
+  return r;
+}
+
+// LV 4.1, 5.2, 5.3: the costs C/C0 behind (12/9)^4 and (12/11)^4.
+audit_row costs_row(const solver::family_result& water_n, const solver::family_result& water_r,
+                    const solver::family_result& water_p, const lie::moments_of_inertia& water) {
+  const int m = schemes::cost_in_rotations(*schemes::reference_scheme("RS4-S5-McLachlan"));
+  const int n = schemes::cost_in_rotations(solver::scheme_table_of(find_solution(water_n, "N2", "BAC", 2), water));
+  const int r = schemes::cost_in_rotations(solver::scheme_table_of(find_solution(water_r, "R", "ABC", 4), water));
+  const int p = schemes::cost_in_rotations(solver::scheme_table_of(find_solution(water_p, "P1", "BAC", 5), water));
+  return decided("Costs: RS4 S5 McLachlan 12 C0, an N integrator 9 C0, a P integrator 11 C0 (an RS scheme of N stages costs N + 1)",
+                 "4.1, 5.2, 5.3", "rotations per step of rotlie's tables equal to these", m == 12 && n == 9 && p == 11 && r == 10,
+                 "RS4 S5 McLachlan " + std::to_string(m) + ", N2 BAC (2) " + std::to_string(n) + ", P1 BAC (5) " + std::to_string(p) +
+                     ", R ABC (4) (9 stages RS) " + std::to_string(r));
+}
+
+// LV 4.3: Fassò's and Hairer-Vilmart's (0.345, 0.653, 1) is no physical body.
+audit_row fasso_row() {
+  std::string why;
+  try {
+    lie::parse_moments("345/1000,653/1000,1");
+  } catch (const std::invalid_argument& e) {
+    why = e.what();
+  }
+  return decided("The moments (0.345, 0.653, 1) used by Fassò (2003) and Hairer and Vilmart (2006) are not a physical body",
+                 "4.3", "lie::parse_moments rejects them (I1 + I2 = 0.998 < I3)", !why.empty(),
+                 why.empty() ? "accepted as a body" : "rejected: " + why);
+}
+
+// LV 4.3: water (10220/29376, 19187/29376, 1) ≃ (0.348, 0.653, 1).
+audit_row water_row(const lie::moments_of_inertia& water) {
+  const double I1 = cln::double_approx(water.I[0]), I2 = cln::double_approx(water.I[1]);
+  return decided("Water: I1 = 10220/29376 ≃ 0.348, I2 = 19187/29376 ≃ 0.653, I3 = 1", "4.3", "rounded to 3 decimals",
+                 fixed(I1, 3) == "0.348" && fixed(I2, 3) == "0.653", "rotlie's \"water\": (" + fixed(I1, 5) + ", " + fixed(I2, 5) + ", 1)");
+}
+
+// LV 4.2: for the spherical top R is the identity (its Hamiltonian part vanishes).
+audit_row sphere_rs_row() {
+  const std::array<cln::cl_RA, 3> w = {1, 1, 1};
+  bool all_zero = true;
+  for (const auto& p : bch::permutation_names())
+    all_zero = all_zero && bch::rational_part_hamiltonian('R', bch::splitting::rs, p, w).is_zero();
+  const bool s_nonzero = !bch::rational_part_hamiltonian('S', bch::splitting::rs, "ABC", w).is_zero();
+  return decided("Spherical top: the RS schemes are trivial, R reduces to the identity", "4.2",
+                 "the R part of the Hamiltonian is exactly 0 at I = (1, 1, 1) for all six permutations", all_zero && s_nonzero,
+                 std::string("R part ") + (all_zero ? "= 0" : "≠ 0") + " for every permutation; S part " + (s_nonzero ? "≠ 0" : "= 0"));
+}
+
+// LV 5.1: the grid of 40,401 points, symmetric tops skipped.
+audit_row grid_row() {
+  const auto all = solver::body_grid(200).size(), asymmetric = solver::asymmetric_grid(200).size();
+  return decided("The triangle ESA is sampled by a grid of 40,401 points, symmetric tops skipped", "5.1",
+                 "rotlie's --grid 200 has 40,401 points", all == 40401,
+                 std::to_string(all) + " points, " + std::to_string(asymmetric) + " computed after skipping " +
+                     std::to_string(all - asymmetric) + " symmetric tops");
+}
+
+// LV 4.3, Fig. 5: the numerically best R for water, over all 46 solutions.
+audit_row best_r_row(const solver::family_result& water_r, const protocol_runner& runner, const lie::moments_of_inertia& water) {
+  std::vector<std::pair<double, std::string>> ranked;
+  for (const auto& s : water_r.solutions) ranked.emplace_back(runner.run(solver::scheme_table_of(s, water)).constant, s.name());
+  std::sort(ranked.begin(), ranked.end());
+  std::size_t analytic_rank = 0;
+  for (std::size_t k = 0; k < water_r.solutions.size(); ++k)
+    if (water_r.solutions[k].name() == "R ABC (4)") analytic_rank = k + 1;
+  const std::string second = ranked.size() > 1 ? "; next " + ranked[1].second + " at " + fixed(ranked[1].first / ranked[0].first, 2) + "×" : "";
+  return decided("Water: the numerically best integrator R is R ABC (4)", "4.3, Fig. 5",
+                 "smallest error/(h/C)^4 among all R solutions for water", !ranked.empty() && ranked[0].second == "R ABC (4)",
+                 "best of " + std::to_string(ranked.size()) + ": " + ranked[0].second + second + "; R ABC (4) is #" +
+                     std::to_string(analytic_rank) + " by ‖H_R5‖");
+}
+
+// LV 4.3, Fig. 5: among the P with the smallest analytic remainders the numerically best is
+// P1 BAC (5). The ranking comes from the dedicated section's solutions_water_P.json; the ten
+// systems involved are solved again here to integrate them.
+audit_row best_p_row(const report_options& options, const protocol_runner& runner, const lie::moments_of_inertia& water,
+                     const solver::family_result& p1_bac) {
+  audit_row r;
+  r.statement = "Water: among the P integrators of smallest analytic remainder, the numerically best is P1 BAC (5)";
+  r.where = "4.3, Fig. 5";
+  r.tolerance = "smallest error/(h/C)^4 among the 10 P of smallest ‖H_R5‖ (and P1 BAC (5))";
+  const bool ran = options.sections.empty() || std::count(options.sections.begin(), options.sections.end(), "dedicated");
+  std::ifstream in(options.out_dir / "solutions_water_P.json");
+  if (!ran || options.quick || !in) {
+    r.verdict = audit_verdict::not_computed;
+    r.why = !ran ? "not computed in this run (section dedicated)"
+                 : options.quick ? "not computed in this run (section dedicated skips P with --quick)" : "solutions_water_P.json missing";
+    r.value = "—";
+    return r;
+  }
+  const auto j = nlohmann::json::parse(in);
+  std::vector<std::tuple<double, std::string, std::string, int>> top;  // remainder, scheme, perm, label
+  for (const auto& s : j.at("solutions"))
+    top.emplace_back(s.at("analytic_remainder").get<double>(), s.at("scheme"), s.at("perm"), s.at("label").get<int>());
+  std::sort(top.begin(), top.end());
+  std::size_t p1_rank = 0;
+  for (std::size_t k = 0; k < top.size(); ++k)
+    if (std::get<1>(top[k]) == "P1" && std::get<2>(top[k]) == "BAC" && std::get<3>(top[k]) == 5) p1_rank = k + 1;
+  top.resize(std::min<std::size_t>(10, top.size()));
+  std::vector<std::pair<double, std::string>> measured;
+  for (const auto& [remainder, scheme, perm, label] : top) {
+    const auto sys = solver::solve_dedicated(water, {scheme}, {perm}, 40);
+    const auto& s = find_solution(sys, scheme, perm, label);
+    measured.emplace_back(runner.run(solver::scheme_table_of(s, water)).constant, s.name());
+  }
+  const double p1 = runner.run(solver::scheme_table_of(find_solution(p1_bac, "P1", "BAC", 5), water)).constant;
+  if (p1_rank > 10) measured.emplace_back(p1, "P1 BAC (5)");
+  const auto favourite = measured.front();  // the smallest ‖H_R5‖
+  std::sort(measured.begin(), measured.end());
+  r.value = "best: " + measured[0].second + "; P1 BAC (5) is #" + std::to_string(p1_rank) + " of " + std::to_string(j.at("solutions").size()) +
+            " by ‖H_R5‖; the analytic favourite " + favourite.second + " is " + fixed(favourite.first / p1, 2) +
+            "× less accurate than P1 BAC (5)";
+  r.verdict = measured[0].second == "P1 BAC (5)" ? audit_verdict::holds : audit_verdict::does_not_hold;
+  return r;
+}
+
+std::string cell(std::string s) {
+  for (auto& c : s)
+    if (c == '|') c = '/';
+  return s;
+}
+
+}  // namespace
+
+report_section audit_section(const report_options& options) {
+  if (options.progress) options.progress("Audit: the paper's statements (LV sections 4 and 5)");
+  report_section s;
+  s.title = "Audit of the paper's statements";
+  const std::clock_t start = std::clock();
+
+  audit_inputs in;
+  in.folder = options.out_dir;
+  in.maps_folder = options.maps_dir;
+  in.quick = options.quick;
+  for (const auto& key : report_section_keys())
+    if (options.sections.empty() || std::count(options.sections.begin(), options.sections.end(), key)) in.sections_run.insert(key);
+  auto rows = audit_rows_from_reports(in);
+
+  // Rows computed here.
+  const auto water = lie::parse_moments("water");
+  const auto water_n = solver::solve_dedicated(water, {"N2"}, {"BAC"}, 40);
+  const auto water_r = solver::solve_dedicated(water, {"R"}, bch::permutation_names(), 40);
+  const auto p1_bac = solver::solve_dedicated(water, {"P1"}, {"BAC"}, 40);
+  const protocol_runner runner(water, 1, options.quick ? 8 : 10, false);
+  std::vector<audit_row> computed = {water_row(water), fasso_row(), sphere_rs_row(), costs_row(water_n, water_r, p1_bac, water),
+                                     best_r_row(water_r, runner, water), best_p_row(options, runner, water, p1_bac), grid_row()};
+  rows.insert(rows.begin(), computed.begin(), computed.end());
+  const double cpu = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+
+  std::filesystem::create_directories(options.out_dir / "audit");
+  write_file_atomically(options.out_dir / "audit" / "audit.csv", audit_csv(rows));
+  write_file_atomically(options.out_dir / "audit" / "audit.json", audit_json(rows).dump(2) + "\n");
+  s.files = {options.out_dir / "audit" / "audit.csv", options.out_dir / "audit" / "audit.json"};
+
+  int counts[4] = {0, 0, 0, 0};
+  for (const auto& r : rows) ++counts[static_cast<int>(r.verdict)];
+  std::ostringstream md;
+  md << "## " << s.title << " (LV sections 4 and 5)\n\n"
+     << "Each statement of Laskar & Vaillant (2018), sections 4 and 5, paraphrased with its number, next to rotlie's own number from "
+        "this run: either computed here through the library or read from the files the earlier sections of this run wrote "
+        "(accuracy curves, solver solutions, maps, measured map ratios). A row whose section did not run in this run says so and "
+        "shows no number. Tolerances are per row; \"about N times\" is read as within 20 %. Files: [audit/audit.csv](audit/audit.csv), "
+        "[audit/audit.json](audit/audit.json).\n\n"
+     << counts[0] << " statements hold, " << counts[1] << " do not hold, " << counts[2] + counts[3]
+     << " are not checked in this run. The audit's own computations took " << fixed(cpu, 1) << " s of CPU time.\n\n"
+     << "| statement (LV) | where | rotlie (this run) | tolerance | verdict |\n|:--|:--|:--|:--|:--|\n";
+  for (const auto& r : rows)
+    md << "| " << cell(r.statement) << " | " << cell(r.where) << " | " << cell(r.value) << " | " << cell(r.tolerance) << " | "
+       << (r.verdict == audit_verdict::does_not_hold ? "**does not hold**" : cell(verdict_text(r))) << " |\n";
+  md << "\n";
+  s.markdown = md.str();
+  return s;
+}
+
+}  // namespace rotlie::reports
