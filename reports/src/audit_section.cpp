@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "rotlie/bch/modified_hamiltonian.hpp"
+#include "rotlie/bch/remainder_request.hpp"
 #include "rotlie/bch/scheme_word.hpp"
 #include "rotlie/reports/audit_table.hpp"
 #include "rotlie/reports/output_file.hpp"
@@ -81,6 +82,76 @@ audit_row sphere_rs_row() {
   return decided("Spherical top: the RS schemes are trivial, R reduces to the identity", "4.2",
                  "the R part of the Hamiltonian is exactly 0 at I = (1, 1, 1) for all six permutations", all_zero && s_nonzero,
                  std::string("R part ") + (all_zero ? "= 0" : "≠ 0") + " for every permutation; S part " + (s_nonzero ? "≠ 0" : "= 0"));
+}
+
+// LV 4.1: for small angles the R^9 attitude error is √3 × the quadratic mean of the angular errors
+// of the three principal axes. Checked on small rotations (Rodrigues' formula) about a few axes.
+audit_row small_angle_row() {
+  double worst = 0;
+  const std::array<std::array<double, 3>, 3> axes = {{{1, 0, 0}, {0.6, 0.8, 0}, {0.48, 0.6, 0.64}}};
+  for (const auto& u : axes)
+    for (const double theta : {1e-2, 1e-3}) {
+      const double c = std::cos(theta), s = std::sin(theta);
+      double frobenius = 0, squares = 0;
+      for (int i = 0; i < 3; ++i) {
+        // column i of R = c I + s [u]x + (1 - c) u u^T, and its difference from e_i
+        std::array<double, 3> col{};
+        for (int k = 0; k < 3; ++k) col[k] = (1 - c) * u[k] * u[i] + (k == i ? c : 0);
+        const int j = (i + 1) % 3, l = (i + 2) % 3;
+        col[l] += s * u[j];  // [u]x e_i = u × e_i
+        col[j] -= s * u[l];
+        const std::array<double, 3> d = {col[0] - (i == 0), col[1] - (i == 1), col[2] - (i == 2)};
+        frobenius += d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        const double cross = std::hypot(col[j], col[l]);  // |e_i × R e_i|
+        squares += std::pow(std::atan2(cross, col[i]), 2);
+      }
+      worst = std::max(worst, std::abs(std::sqrt(frobenius) / (std::sqrt(3.0) * std::sqrt(squares / 3)) - 1));
+    }
+  return decided("For small angles the R^9 attitude error is √3 × the quadratic mean of the angular errors of the three principal axes",
+                 "4.1", "relative difference below 1e-4 for rotations of 1e-2 and 1e-3 rad about three axes", worst < 1e-4,
+                 "largest relative difference " + [&] {
+                   std::ostringstream o;
+                   o << std::setprecision(2) << worst;
+                   return o.str();
+                 }());
+}
+
+// LV 4.1 (from 3.1.2): RSRSRSR with I1 and I3 swapped (permutation CBA) has the remainder of
+// SRSRSRS at every order, so SR schemes need not be considered. Compared exactly to order 5 for
+// water.
+audit_row sr_row() {
+  const auto water = lie::parse_moments("water");
+  // Separately built remainders hold distinct GiNaC symbols of the same name, so the free
+  // coefficients get values: three rational points (a1, b1), the remainders compared exactly there.
+  const std::vector<std::pair<cln::cl_RA, cln::cl_RA>> points = {
+      {cln::cl_RA(3) / 10, cln::cl_RA(1) / 7}, {cln::cl_RA(-2) / 9, cln::cl_RA(5) / 11}, {cln::cl_RA(7) / 13, cln::cl_RA(-1) / 3}};
+  const auto remainder = [&](const std::string& scheme, const std::string& perm, const std::pair<cln::cl_RA, cln::cl_RA>& ab) {
+    bch::remainder_request q;
+    q.scheme = scheme;
+    q.permutation = perm;
+    q.order = 5;
+    q.inertia = water;
+    q.coefficients = {{"a1", ab.first}, {"b1", ab.second}};
+    return bch::compute_remainder(q).k;
+  };
+  std::string equal_at;
+  for (const auto& p : bch::permutation_names()) {
+    bool same = true;
+    for (const auto& ab : points) {
+      const auto sr = remainder("SRSRSRS", "ABC", ab), rs = remainder("RSRSRSR", p, ab);
+      same = same && rs.remainder.size() == sr.remainder.size();
+      for (std::size_t k = 2; same && k < sr.remainder.size(); ++k) {
+        auto d = rs.remainder[k];
+        for (const auto& [m, c] : sr.remainder[k].terms()) d.add_term(m, -c);
+        for (const auto& [m, c] : d.terms()) same = same && GiNaC::expand(c).is_zero();
+      }
+    }
+    if (same) equal_at += (equal_at.empty() ? "" : ", ") + p;
+  }
+  return decided("RSRSRSR with the parts of I1 and I3 exchanged has the remainder of SRSRSRS at every order, so SR schemes need not be "
+                 "considered",
+                 "4.1 (from 3.1.2)", "H_R2 … H_R5 of RSRSRSR equal SRSRSRS's (ABC) exactly at permutation CBA only (water; three rational (a1, b1))",
+                 equal_at == "CBA", "equal at permutation(s): " + (equal_at.empty() ? std::string("none") : equal_at) + " (checked to order 5)");
 }
 
 // LV 5.1: the grid of 40,401 points, symmetric tops skipped.
@@ -179,7 +250,7 @@ report_section audit_section(const report_options& options) {
   const auto water_r = solver::solve_dedicated(water, {"R"}, bch::permutation_names(), 40);
   const auto p1_bac = solver::solve_dedicated(water, {"P1"}, {"BAC"}, 40);
   const protocol_runner runner(water, 1, options.quick ? 8 : 10, false);
-  std::vector<audit_row> computed = {water_row(water), fasso_row(), sphere_rs_row(), costs_row(water_n, water_r, p1_bac, water),
+  std::vector<audit_row> computed = {small_angle_row(), sr_row(), water_row(water), fasso_row(), sphere_rs_row(), costs_row(water_n, water_r, p1_bac, water),
                                      best_r_row(water_r, runner, water), best_p_row(options, runner, water, p1_bac), grid_row()};
   rows.insert(rows.begin(), computed.begin(), computed.end());
   const double cpu = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
