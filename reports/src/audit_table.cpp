@@ -575,7 +575,13 @@ void dedicated_rows(std::vector<audit_row>& rows, reader& rd) {
       continue;
     }
     double least = 45;
-    std::string v;
+    std::string v, lacking;
+    for (const auto& e : eqs)
+      if (e.name == which && !(s->contains("coefficients") && s->at("coefficients").contains(e.coefficient))) lacking = e.coefficient;
+    if (!lacking.empty()) {
+      rows.push_back(not_computed(r, std::string(which) + " has no " + lacking + " in " + file));
+      continue;
+    }
     for (const auto& e : eqs)
       if (e.name == which) {
         const double d = agreeing_digits(s->at("coefficients").at(e.coefficient).get<std::string>(), e.paper);
