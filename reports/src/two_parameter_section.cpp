@@ -95,7 +95,7 @@ report_section two_parameter_section(const report_options& options) {
   section.title = "Beyond the paper: two free parameters at order 4";
   const auto body = lie::parse_moments("water");
   solver::minimum_search_options abc_search, rs_search;
-  abc_search.starts = options.quick ? 8 : 40;
+  abc_search.starts = options.quick ? 8 : 25;
   rs_search.starts = options.quick ? 20 : 100;
   if (options.progress) options.progress("Two free parameters: searching the 13-stage ABC palindromes for water");
   const auto q = solver::solve_two_parameter(body, bch::splitting::abc, solver::two_parameter_words(bch::splitting::abc),
