@@ -93,16 +93,47 @@ void multivariate_polynomial::reduce() {
   for (auto& t : terms_) t.numerator = cln::exquo(t.numerator, g);
 }
 
-multivariate_polynomial& multivariate_polynomial::operator+=(const multivariate_polynomial& o) {
-  if (o.terms_.empty()) return *this;
-  if (terms_.empty()) return *this = o;
-  // Over the least common denominator: this side scaled by fa, the other by fb.
-  cln::cl_I fa = 1, fb = 1;
+multivariate_polynomial& multivariate_polynomial::operator+=(const multivariate_polynomial& o) { return add_multiple(o, 1); }
+
+multivariate_polynomial& multivariate_polynomial::add_multiple(const multivariate_polynomial& o, long k) {
+  if (o.terms_.empty() || k == 0) return *this;
+  if (terms_.empty()) {
+    *this = o;
+    if (k != 1)
+      for (auto& t : terms_) t.numerator = t.numerator * k;
+    return *this;
+  }
+  // Over the least common denominator: this side scaled by fa, the other by fb (k included).
+  cln::cl_I fa = 1, fb = k;
   if (denominator_ != o.denominator_) {
     const cln::cl_I g = cln::gcd(denominator_, o.denominator_);
     fa = cln::exquopos(o.denominator_, g);
-    fb = cln::exquopos(denominator_, g);
+    fb = cln::exquopos(denominator_, g) * k;
     denominator_ = denominator_ * fa;
+  }
+  // Most sums in a bracket expansion add terms whose monomials are already present: then the sum
+  // is done in place, without a new vector (allocation was a third of the expansion's time).
+  bool all_present = o.terms_.size() <= terms_.size();
+  for (auto a = terms_.cbegin(), b = o.terms_.cbegin(); all_present && b != o.terms_.cend(); ++b) {
+    while (a != terms_.cend() && a->key < b->key) ++a;
+    all_present = a != terms_.cend() && a->key == b->key;
+  }
+  if (all_present) {
+    bool zero = false;
+    auto a = terms_.begin();
+    for (const auto& t : o.terms_) {
+      for (; a->key < t.key; ++a)
+        if (fa != 1) a->numerator = a->numerator * fa;
+      a->numerator = (fa == 1 ? a->numerator : a->numerator * fa) + (fb == 1 ? t.numerator : t.numerator * fb);
+      zero = zero || cln::zerop(a->numerator);
+      ++a;
+    }
+    if (fa != 1)
+      for (; a != terms_.end(); ++a) a->numerator = a->numerator * fa;
+    if (zero)
+      terms_.erase(std::remove_if(terms_.begin(), terms_.end(), [](const term& t) { return cln::zerop(t.numerator); }), terms_.end());
+    if (terms_.empty()) denominator_ = 1;
+    return *this;
   }
   std::vector<term> merged;
   merged.reserve(terms_.size() + o.terms_.size());
