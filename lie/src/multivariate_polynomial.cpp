@@ -14,19 +14,17 @@ using term = multivariate_polynomial::term;
 // Sorted by key with equal keys summed and zeros dropped. The sort moves (key, index) pairs only:
 // CLN numbers have no cheap move, and copying them is a reference count each way.
 void combine(std::vector<term>& v) {
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> order(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) order[i] = {v[i].key, static_cast<std::uint32_t>(i)};
-  std::sort(order.begin(), order.end());
-  std::vector<term> out;
-  out.reserve(v.size());
-  for (std::size_t i = 0; i < order.size();) {
-    cln::cl_I sum = v[order[i].second].numerator;
+  // Sorted in place: the numerators are mostly fixnums (immediate values), whose copies are free.
+  std::sort(v.begin(), v.end(), [](const term& a, const term& b) { return a.key < b.key; });
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < v.size();) {
     std::size_t j = i + 1;
-    for (; j < order.size() && order[j].first == order[i].first; ++j) sum = sum + v[order[j].second].numerator;
-    if (!cln::zerop(sum)) out.push_back({order[i].first, std::move(sum)});
+    if (out != i) v[out] = v[i];
+    for (; j < v.size() && v[j].key == v[i].key; ++j) v[out].numerator = v[out].numerator + v[j].numerator;
+    if (!cln::zerop(v[out].numerator)) ++out;
     i = j;
   }
-  v = std::move(out);
+  v.resize(out);
 }
 
 cln::cl_RA monomial_value(std::uint64_t key, const std::vector<cln::cl_RA>& x) {
