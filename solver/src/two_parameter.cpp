@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <ctime>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -530,30 +531,46 @@ std::vector<std::string> two_parameter_words(bch::splitting split) {
 
 two_parameter_result solve_two_parameter(const lie::moments_of_inertia& body, bch::splitting split,
                                          const std::vector<std::string>& words, const std::vector<std::string>& permutations,
-                                         const minimum_search_options& o, int digits) {
+                                         const minimum_search_options& o, int digits, int polish) {
   const std::clock_t begin = std::clock();
   two_parameter_result result;
+  std::vector<two_parameter_system> systems;
   for (const auto& word : words)
     for (const auto& perm : permutations) {
       two_parameter_entry e;
       e.word = word;
       e.permutation = perm;
       e.split = split;
-      const auto s = two_parameter_conditions(bch::layout_scheme(word, split, perm), body);
-      e.search = search_minima(s, o);
-      if (e.search.minima.empty()) {
-        e.note = "no local minimum reached from " + std::to_string(o.starts) + " starts";
-      } else {
-        try {
-          e.best = polish_minimum(s, e.search.minima.front(), digits);
-          e.polished = e.best.order >= 4;
-          if (!e.polished) e.note = "the polished minimum does not certify order 4";
-        } catch (const std::runtime_error& err) {
-          e.note = err.what();
-        }
-      }
+      systems.push_back(two_parameter_conditions(bch::layout_scheme(word, split, perm), body));
+      e.search = search_minima(systems.back(), o);
+      if (e.search.minima.empty()) e.note = "no local minimum reached from " + std::to_string(o.starts) + " starts";
       result.entries.push_back(std::move(e));
     }
+  // Polishing (long floats) costs more than the search: the systems in the order of their best minimum.
+  std::vector<std::size_t> order(result.entries.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  const auto best_of = [&](std::size_t i) {
+    const auto& m = result.entries[i].search.minima;
+    return m.empty() ? std::numeric_limits<double>::infinity() : m.front().remainder;
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return best_of(a) < best_of(b); });
+  int polished = 0;
+  for (std::size_t i : order) {
+    auto& e = result.entries[i];
+    if (e.search.minima.empty()) continue;
+    if (polish >= 0 && polished >= polish) {
+      e.note = "not polished (only the best " + std::to_string(polish) + " systems are)";
+      continue;
+    }
+    ++polished;
+    try {
+      e.best = polish_minimum(systems[i], e.search.minima.front(), digits);
+      e.polished = e.best.order >= 4;
+      if (!e.polished) e.note = "the polished minimum does not certify order 4";
+    } catch (const std::runtime_error& err) {
+      e.note = err.what();
+    }
+  }
   std::stable_sort(result.entries.begin(), result.entries.end(), [](const auto& a, const auto& b) {
     if (a.polished != b.polished) return a.polished;
     return a.polished && a.best.remainder < b.best.remainder;

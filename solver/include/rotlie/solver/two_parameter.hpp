@@ -105,9 +105,10 @@ struct two_parameter_result {
   double seconds = 0;                        ///< CPU
 };
 
-/// Every (word, permutation) of the splitting at the body: search, then polish each system's best.
+/// Every (word, permutation) of the splitting at the body: search, then polish each system's best,
+/// or only the `polish` systems whose best minimum is smallest (polish < 0: all).
 two_parameter_result solve_two_parameter(const lie::moments_of_inertia& body, bch::splitting split,
                                          const std::vector<std::string>& words, const std::vector<std::string>& permutations,
-                                         const minimum_search_options& o, int digits);
+                                         const minimum_search_options& o, int digits, int polish = -1);
 
 }  // namespace rotlie::solver
