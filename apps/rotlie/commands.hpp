@@ -44,8 +44,11 @@ namespace rotlie::app {
 struct solve_options {
   std::string family, scheme, perm = "all", inertia, digits = "40", out;
   bool json = false;
+  std::string starts = "40", seed = "1";  ///< Q, QRS: random starts per (word, permutation)
 };
 int run_solve(const solve_options& options);
+bool is_two_parameter_family(const std::string& family);
+int run_solve_two_parameter(const solve_options& options);
 
 }  // namespace rotlie::app
 

@@ -120,13 +120,15 @@ int main(int argc, char** argv) {
 
   solve_options solve;
   auto* solve_cmd = app.add_subcommand("solve", "All real solutions of a dedicated family for one body, ranked");
-  solve_cmd->add_option("--family", solve.family, "N, R or P")->required();
+  solve_cmd->add_option("--family", solve.family, "N, R, P, or Q, QRS (two free parameters)")->required();
   solve_cmd->add_option("--scheme", solve.scheme, "One scheme of the family, e.g. N2 (default: all)");
   solve_cmd->add_option("--perm", solve.perm, "ABC, BCA, CAB, ACB, CBA, BAC or all (default all)");
   solve_cmd->add_option("--inertia", solve.inertia, "I1,I2,I3 as exact numbers, or water, sphere");
   solve_cmd->add_option("--digits", solve.digits, "Significant digits of the coefficients (default 40)");
   solve_cmd->add_option("--out", solve.out, "Write one scheme table per solution into this folder");
   solve_cmd->add_flag("--json", solve.json, "Machine-readable output on stdout");
+  solve_cmd->add_option("--starts", solve.starts, "Q, QRS: random starts per word and permutation (default 40)");
+  solve_cmd->add_option("--seed", solve.seed, "Q, QRS: seed of the starts (default 1)");
 
   const char* const force_help = "Use a scheme-table file solved for another body (with a warning)";
   integrate_options integrate;
@@ -186,7 +188,7 @@ int main(int argc, char** argv) {
   report_cmd->add_option("--out", report.out, "Output folder (default: rotlie-report)");
   report_cmd->add_flag("--quick", report.quick, "Smaller sweeps, for a fast look");
   report_cmd->add_option("--sections", report.sections,
-                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs, liquid-water, maps, audit");
+                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs, liquid-water, maps, two-parameter, audit");
   report_cmd->add_flag("--full", report.full,
                        "The papers' full statistics: liquid water's nine 1-ps runs per point (about 30 min), maps over all bodies at "
                        "the paper's grid (--grid 200; hours for the P family)");

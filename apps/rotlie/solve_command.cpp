@@ -15,7 +15,7 @@ constexpr int max_digits = 300;  // beyond this the exact bisection dominates fo
 
 std::vector<std::string> schemes_of(const solve_options& o) {
   if (o.family != "N" && o.family != "R" && o.family != "P")
-    throw usage_error("--family must be N, R or P, got '" + o.family + "'");
+    throw usage_error("--family must be N, R, P, Q or QRS, got '" + o.family + "'");
   std::vector<std::string> all;
   if (o.family == "R") all.push_back("R");
   const int members = o.family == "N" ? 7 : o.family == "P" ? 15 : 0;
@@ -30,6 +30,7 @@ std::vector<std::string> schemes_of(const solve_options& o) {
 }  // namespace
 
 int run_solve(const solve_options& options) {
+  if (is_two_parameter_family(options.family)) return run_solve_two_parameter(options);
   const auto schemes = schemes_of(options);
   std::vector<std::string> perms = bch::permutation_names();
   if (options.perm != "all") {

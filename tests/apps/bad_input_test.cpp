@@ -227,7 +227,14 @@ const std::vector<bad_input> cases = {
   // solve (every case fails before any solving)
   {{"solve"}, usage, "--family is required"},
   {{"solve", "--family", ""}, usage, "--family must not be empty"},
-  {{"solve", "--family", "Q", "--inertia", "water"}, usage, "--family must be N, R or P"},
+  {{"solve", "--family", "X", "--inertia", "water"}, usage, "--family must be N, R, P, Q or QRS"},
+  {{"solve", "--family", "Q", "--inertia", "water", "--starts", "0"}, usage, "--starts"},
+  {{"solve", "--family", "QRS", "--inertia", "water", "--starts", "1e9"}, usage, "--starts"},
+  {{"solve", "--family", "Q", "--inertia", "water", "--seed", "-1"}, usage, "--seed"},
+  {{"solve", "--family", "Q", "--scheme", "ABABACABABA", "--inertia", "water"}, usage, "not a word of the Q family"},
+  {{"solve", "--family", "QRS", "--perm", "ABCD", "--inertia", "water"}, usage, "--perm"},
+  {{"solve", "--family", "Q", "--scheme", "ABACBABABCABA"}, usage, "--inertia is required"},
+  {{"solve", "--family", "Q", "--inertia", "1,1,3"}, usage, "--inertia"},
   {{"solve", "--family", "N", "--scheme", "", "--inertia", "water"}, usage, "--scheme must not be empty"},
   {{"solve", "--family", "N", "--scheme", "N8", "--inertia", "water"}, usage, "not in the N family"},
   {{"solve", "--family", "N", "--perm", "", "--inertia", "water"}, usage, "--perm must not be empty"},
@@ -245,7 +252,7 @@ const std::vector<bad_input> cases = {
   {{"solve", "--family", "N", "--inertia", "water", "--out", "/proc/rotlie-no-such-folder"}, usage, "cannot create '/proc/rotlie-no-such-folder'"},
   {{"solve", "--family", "N", "--inertia", "water", "--json", "--json"}, usage, "--json is given more than once"},
   {{"solve", "--family", "N", "--inertia", "water", "--out", "/dev/null/x"}, usage, "'/dev/null' is a file"},
-  {{"solve", "--family", "n", "--inertia", "water"}, usage, "--family must be N, R or P"},
+  {{"solve", "--family", "n", "--inertia", "water"}, usage, "--family must be N, R, P, Q or QRS"},
   {{"solve", "--family", "R", "--perm", "ABC", "--inertia", "1/2,1/2,1"}, usage, "undefined for this body"},
 
   // integrate: numbers

@@ -215,13 +215,31 @@ BOOST_AUTO_TEST_CASE(solve_writes_scheme_tables_that_meet_the_contract) {
   BOOST_TEST(std::equal(names.begin(), names.end(), names.rbegin()));
 }
 
+BOOST_AUTO_TEST_CASE(solve_two_parameter_family_writes_a_table_the_numeric_side_runs) {
+  const fs::path out = scratch_dir() / "two_parameter";
+  const auto r = run("solve --family QRS --scheme RSRSRSRSRSR --perm CBA --inertia water --starts 30 --json --out " + out.string());
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
+  const auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j.at("family").get<std::string>() == "QRS");
+  const auto& s = j.at("systems").at(0);
+  BOOST_TEST(s.at("name").get<std::string>() == "QRS:RSRSRSRSRSR:CBA");
+  BOOST_REQUIRE(s.at("polished").get<bool>());
+  BOOST_TEST(s.at("distinct_minima").get<int>() >= 1);
+  BOOST_TEST(std::stod(s.at("projected_gradient").get<std::string>()) < 1e-40);
+  for (const auto& v : s.at("reduced_hessian")) BOOST_TEST(v.get<double>() > 0);  // a local minimum
+  // The table it wrote loads on the numeric side (its checks) and runs at order 4.
+  const auto o = run("order --scheme " + (out / "QRS_RSRSRSRSRSR_CBA.scheme").string() + " --inertia water --min-level 3 --max-level 7 --json");
+  BOOST_REQUIRE_MESSAGE(o.status == 0, o.err);
+  BOOST_TEST(std::abs(nlohmann::json::parse(o.out).at("slope").get<double>() - 4) < 0.15);
+}
+
 BOOST_AUTO_TEST_CASE(solve_bad_input) {
   expect_clean_error("solve --family N --inertia 0.345,0.653,1", "eq. (77)");
   expect_clean_error("solve --family N --inertia 0,1,1", "not positive");
   expect_clean_error("solve --family N --inertia -1,1,1", "not positive");
   expect_clean_error("solve --family N --inertia nan,1,1", "not a finite number");
   expect_clean_error("solve --family N", "--inertia is required");
-  expect_clean_error("solve --family Q --inertia water", "--family");
+  expect_clean_error("solve --family X --inertia water", "--family");
   expect_clean_error("solve --family N --scheme N9 --inertia water", "not in the N family");
   expect_clean_error("solve --family N --perm XYZ --inertia water", "--perm");
   expect_clean_error("solve --family N --digits 5 --inertia water", "at least 10");

@@ -13,6 +13,7 @@
 
 #include "rotlie/bch/evaluate.hpp"
 #include "rotlie/bch/lie_series.hpp"
+#include "rotlie/lie/multivariate_polynomial.hpp"
 #include "rotlie/lie/poisson_bracket.hpp"
 
 namespace rotlie::bch {
@@ -36,7 +37,10 @@ struct truncated_poisson_algebra {
         lie::bracket_of_monomials(ma, mb, [&](const lie::monomial&, long) { any = true; });
         if (!any) continue;
         const R product = ca * cb;
-        lie::bracket_of_monomials(ma, mb, [&](const lie::monomial& m, long c) { out.add_term(m, R(c) * product); });
+        if constexpr (std::is_same_v<R, lie::multivariate_polynomial>)  // in place: no copy of the product per output
+          lie::bracket_of_monomials(ma, mb, [&](const lie::monomial& m, long c) { out.add_term_multiple(m, product, c); });
+        else
+          lie::bracket_of_monomials(ma, mb, [&](const lie::monomial& m, long c) { out.add_term(m, R(c) * product); });
       }
     return out;
   }

@@ -52,6 +52,8 @@ class multivariate_polynomial {
 
   multivariate_polynomial& operator+=(const multivariate_polynomial& o);
   multivariate_polynomial& operator-=(const multivariate_polynomial& o);
+  /// += k·o without the temporary k·o (the bracket expansion's inner step).
+  multivariate_polynomial& add_multiple(const multivariate_polynomial& o, long k);
   multivariate_polynomial& operator*=(const cln::cl_RA& s);
   friend multivariate_polynomial operator+(multivariate_polynomial a, const multivariate_polynomial& b) { return a += b; }
   friend multivariate_polynomial operator-(multivariate_polynomial a, const multivariate_polynomial& b) { return a -= b; }

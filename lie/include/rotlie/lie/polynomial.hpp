@@ -37,6 +37,14 @@ class polynomial {
     if (traits::is_zero(it->second)) terms_.erase(it);
   }
 
+  /// Adds k·c·m through R::add_multiple (no temporary k·c), for rings that have it.
+  void add_term_multiple(const monomial& m, const R& c, long k) {
+    auto [it, inserted] = terms_.try_emplace(m);
+    it->second.add_multiple(c, k);
+    traits::normalize(it->second);
+    if (traits::is_zero(it->second)) terms_.erase(it);
+  }
+
   const term_map& terms() const { return terms_; }
   bool is_zero() const { return terms_.empty(); }
   std::size_t size() const { return terms_.size(); }

@@ -65,6 +65,9 @@ report_section exact_flow_section(const report_options& options);
 /// Section "Comparison over all rigid bodies": LV section 5, Figs. 6–10, from the maps.
 report_section maps_section(const report_options& options);
 
+/// Section "Beyond the paper: two free parameters at order 4": the Q and QRS families for water.
+report_section two_parameter_section(const report_options& options);
+
 /// Section "Audit of the paper's statements": LV sections 4-5 against this run's numbers (last).
 report_section audit_section(const report_options& options);
 

@@ -1,0 +1,133 @@
+// `rotlie solve --family Q|QRS`: the dedicated 4th-order family with two free parameters (13-stage ABC
+// palindromes, 11-stage RS palindromes), each (word, permutation) searched for the local minima of
+// ‖H_R5‖ (LV eq. (64)) on its surface H_R3 = 0, the best polished and certified; ranked.
+#include <algorithm>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "arguments.hpp"
+#include "commands.hpp"
+#include "rotlie/lie/exact_number.hpp"
+#include "rotlie/reports/output_file.hpp"
+#include "rotlie/solver/two_parameter.hpp"
+
+namespace rotlie::app {
+namespace {
+
+constexpr int max_digits = 300;
+constexpr long max_starts = 100000;
+
+std::string scheme_name(const solver::two_parameter_entry& e) {
+  return std::string(e.split == bch::splitting::abc ? "Q" : "QRS") + ":" + e.word + ":" + e.permutation;
+}
+
+std::string decimal(const cln::cl_RA& x) { return lie::to_decimal(x, 2); }
+
+}  // namespace
+
+bool is_two_parameter_family(const std::string& family) { return family == "Q" || family == "QRS"; }
+
+int run_solve_two_parameter(const solve_options& options) {
+  const auto split = options.family == "Q" ? bch::splitting::abc : bch::splitting::rs;
+  auto words = solver::two_parameter_words(split);
+  if (!options.scheme.empty()) {
+    if (std::find(words.begin(), words.end(), options.scheme) == words.end())
+      throw usage_error("--scheme '" + options.scheme + "' is not a word of the " + options.family + " family (" + words.front() +
+                        " … " + words.back() + ")");
+    words = {options.scheme};
+  }
+  std::vector<std::string> perms = bch::permutation_names();
+  if (options.perm != "all") {
+    if (!bch::is_permutation_name(options.perm))
+      throw usage_error("--perm must be all or one of ABC, BCA, CAB, ACB, CBA, BAC, got '" + options.perm + "'");
+    perms = {options.perm};
+  }
+  if (options.inertia.empty()) throw usage_error("--inertia is required (I1,I2,I3, water or sphere)");
+  lie::moments_of_inertia body;
+  try {
+    body = lie::parse_moments(options.inertia);
+  } catch (const std::invalid_argument& e) {
+    throw usage_error(std::string("--inertia: ") + e.what());
+  }
+  const int digits = static_cast<int>(parse_integer_in_range(options.digits, "--digits", 10, max_digits));
+  solver::minimum_search_options search;
+  search.starts = static_cast<int>(parse_integer_in_range(options.starts, "--starts", 1, max_starts));
+  search.seed = static_cast<std::uint64_t>(parse_integer_in_range(options.seed, "--seed", 0, 1L << 62));
+
+  const auto result = solver::solve_two_parameter(body, split, words, perms, search, digits);
+  if (!options.out.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(options.out, ec);
+    if (ec) throw std::runtime_error("cannot create the output folder " + options.out + ": " + ec.message());
+    for (const auto& e : result.entries) {
+      if (!e.polished) continue;
+      const auto s = solver::two_parameter_conditions(bch::layout_scheme(e.word, split, e.permutation), body);
+      std::string file = scheme_name(e);
+      std::replace(file.begin(), file.end(), ':', '_');
+      reports::write_file_atomically(std::filesystem::path(options.out) / (file + ".scheme"),
+                                     solver::two_parameter_table_text(s, e.best, digits, body, scheme_name(e),
+                                                                      "rotlie solve --family " + options.family));
+    }
+  }
+  if (options.json) {
+    nlohmann::ordered_json j;
+    j["family"] = options.family;
+    j["inertia"] = lie::inertia_text(body);
+    j["digits"] = digits;
+    j["starts"] = search.starts;
+    j["cpu_seconds"] = result.seconds;
+    j["systems"] = nlohmann::ordered_json::array();
+    for (const auto& e : result.entries) {
+      nlohmann::ordered_json s;
+      s["name"] = scheme_name(e);
+      s["on_surface"] = e.search.on_surface;
+      s["converged"] = e.search.converged;
+      s["distinct_minima"] = e.search.minima.size();
+      s["polished"] = e.polished;
+      if (e.polished) {
+        s["remainder"] = e.best.remainder;
+        s["order_residual"] = decimal(e.best.order_residual);
+        s["projected_gradient"] = decimal(e.best.projected_gradient);
+        s["reduced_hessian"] = e.best.reduced_hessian;
+        nlohmann::ordered_json c;
+        for (const auto& [name, v] : e.best.values) c[name] = lie::to_decimal(v, digits);
+        s["coefficients"] = c;
+      } else {
+        s["note"] = e.note;
+      }
+      j["systems"].push_back(s);
+    }
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+  std::cout << "Two free parameters at order 4 (" << options.family << ", " << result.entries.size() << " systems, "
+            << search.starts << " starts each, " << std::fixed << std::setprecision(1) << result.seconds << " s CPU)\n"
+            << std::defaultfloat;
+  std::cout << "rank  scheme  ||H_R5||  minima(hits of converged/starts)  projected-gradient  order-residual\n";
+  int rank = 0;
+  for (const auto& e : result.entries) {
+    ++rank;
+    std::cout << std::setw(4) << rank << "  " << scheme_name(e) << "  ";
+    if (!e.polished) {
+      std::cout << "-  (" << e.note << ")\n";
+      continue;
+    }
+    std::cout << std::setprecision(6) << e.best.remainder << "  " << e.search.minima.size() << " ("
+              << e.search.minima.front().hits << " of " << e.search.converged << "/" << e.search.starts << ")  "
+              << decimal(e.best.projected_gradient) << "  " << decimal(e.best.order_residual) << "\n";
+  }
+  if (result.entries.size() == 1) {  // one system: every distinct local minimum the search reached
+    std::cout << "local minima of " << scheme_name(result.entries.front()) << " (||H_R5||, hits, free coefficients):\n";
+    for (const auto& m : result.entries.front().search.minima) {
+      std::cout << "  " << std::setprecision(10) << m.remainder << "  " << m.hits << " ";
+      for (long double v : m.x) std::cout << " " << std::setprecision(12) << static_cast<double>(v);
+      std::cout << "\n";
+    }
+  }
+  return 0;
+}
+
+}  // namespace rotlie::app
