@@ -216,7 +216,7 @@ BOOST_AUTO_TEST_CASE(solve_writes_scheme_tables_that_meet_the_contract) {
 }
 
 BOOST_AUTO_TEST_CASE(solve_two_parameter_family_writes_a_table_the_numeric_side_runs) {
-  const fs::path out = scratch_dir() / "two_parameter";
+  const fs::path out = scratch() / "two_parameter";
   const auto r = run("solve --family QRS --scheme RSRSRSRSRSR --perm CBA --inertia water --starts 30 --json --out " + out.string());
   BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
   const auto j = nlohmann::json::parse(r.out);
