@@ -52,11 +52,27 @@ int main(int argc, char** argv) {
   for (const auto& x : reals) seeds.push_back({x[0], x[1], x[2]});
   tracking_stats stats;
   t = cpu();
-  auto all = monodromy_solutions(sys, seeds, body_w(j0), static_cast<std::size_t>(degree - discarded), argc > 7 ? std::stoi(argv[7]) : 6, 14, stats);
+  auto all = monodromy_solutions(sys, seeds, body_w(j0), static_cast<std::size_t>(degree - discarded), argc > 7 ? std::stoi(argv[7]) : 6, 14, stats, argc > 8 ? std::stold(argv[8]) : 0.2L);
   std::cout << sys.scheme << " " << sys.permutation << " row " << i << " body " << j0 << ": eliminant degree " << degree
             << ", discarded " << discarded << ", real " << reals.size() << "; monodromy found " << all.size() << " in "
             << cpu() - t << " s CPU (" << stats.newton_iterations << " Newton, " << stats.assemblies
             << " assemblies, " << stats.loops << " loops; det terms " << lagrange_at(sys, body_w(j0)).equations[2].size() << "); exact solve " << t_exact << " s\n";
+  {  // the unit costs: one assembly, one residual + Jacobian
+    t = cpu();
+    for (int k = 0; k < 200; ++k) lagrange_at(sys, body_w(j0));
+    const double assembly = (cpu() - t) / 200;
+    const auto p = lagrange_at(sys, body_w(j0));
+    complex_point F;
+    std::array<complex_point, 3> J;
+    complex_ld sink = 0;
+    t = cpu();
+    for (int k = 0; k < 20000; ++k) {
+      lagrange_residual(p, all[static_cast<std::size_t>(k) % all.size()], F, J);
+      sink += F[2];
+    }
+    std::cout << "one assembly " << assembly * 1e3 << " ms, one residual + Jacobian " << (cpu() - t) / 20000 * 1e6
+              << " us CPU" << (std::abs(sink) < 0 ? "" : "") << "\n";
+  }
   const complex_ld gamma(0.37L, 0.81L);
   int disagreements = 0;
   double t_track = 0;

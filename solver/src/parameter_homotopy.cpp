@@ -11,6 +11,8 @@ namespace {
 constexpr int nodes = interpolation_nodes;
 constexpr int max_exponent = 24;  // per unknown, in det = ∇f · (∇P1 × ∇P2): 2·4 − 1 + 2·(2 − 1) + slack
 using terms = std::vector<lagrange_polynomials::term>;
+// Inside a path the corrector only has to stay in the basin of its solution; the end is polished.
+constexpr long double corrector_tolerance = 1e-7L;
 
 std::array<complex_ld, nodes> newton_basis(complex_ld w) {
   std::array<complex_ld, nodes> out;
@@ -135,7 +137,7 @@ bool correct(const lagrange_polynomials& p, complex_point& x, long double max_fi
     if (!std::isfinite(d)) return false;
     if (it == 0 && d > max_first) return false;
     if (it > 0 && d > 0.25L * before) return false;
-    if (d <= 1e-9L * (1 + size(x))) return true;
+    if (d <= corrector_tolerance * (1 + size(x))) return true;
     before = d;
   }
   return false;
@@ -276,7 +278,7 @@ bool track_all(const body_system& system, std::vector<complex_point>& x, const c
 
 std::vector<complex_point> monodromy_solutions(const body_system& system, std::vector<complex_point> seeds,
                                                const complex_body& w, std::size_t target, int max_loops,
-                                               unsigned seed, tracking_stats& stats) {
+                                               unsigned seed, tracking_stats& stats, long double radius) {
   std::mt19937 random(seed);
   std::uniform_real_distribution<long double> unit(-1, 1);
   const auto at_w = lagrange_at(system, w);
@@ -290,7 +292,7 @@ std::vector<complex_point> monodromy_solutions(const body_system& system, std::v
     return true;
   };
   for (const auto& s : seeds) add(s);
-  const long double scale = 0.2L * std::max(std::abs(w[0]), std::abs(w[1]));
+  const long double scale = radius * std::max(std::abs(w[0]), std::abs(w[1]));
   for (int fruitless = 0; known.size() < target && fruitless < max_loops;) {
     // A triangle 0 → a → b → 0 in the complex line w + s·D (D a random real direction).
     const long double angle = 3.14159265358979L * unit(random);

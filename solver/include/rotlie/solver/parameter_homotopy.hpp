@@ -52,10 +52,10 @@ bool track_all(const body_system& system, std::vector<complex_point>& x, const c
 
 /// Solutions found by monodromy: from the seeds (solutions at w), loops w → a → b → w through random
 /// complex bodies permute the solutions; new endpoints are added until `target` are known or
-/// `max_loops` loops in a row bring nothing new. Returns the distinct solutions found.
+/// `max_loops` loops in a row bring nothing new (triangles of size about `radius` × |w|). Returns the distinct solutions found.
 std::vector<complex_point> monodromy_solutions(const body_system& system, std::vector<complex_point> seeds,
                                                const complex_body& w, std::size_t target, int max_loops,
-                                               unsigned seed, tracking_stats& stats);
+                                               unsigned seed, tracking_stats& stats, long double radius = 0.2L);
 
 /// Newton on the system at a real body w from x (complex); the residual after, relative to the terms.
 struct polished_point {
