@@ -9,11 +9,19 @@
 
 #include "rotlie/solver/body_grid.hpp"
 #include "rotlie/solver/body_map.hpp"
+#include "rotlie/solver/critical_points.hpp"
+#include "rotlie/solver/resultant.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 #include "rotlie/solver/family_systems.hpp"
 #include "rotlie/solver/parameter_homotopy.hpp"
 
 namespace {
+// A polynomial in x_u only as a univariate polynomial.
+rotlie::solver::rational_polynomial univariate(const rotlie::lie::coefficient_polynomial& p, int u) {
+  std::vector<cln::cl_RA> c(static_cast<std::size_t>(std::max(0, p.degree(u)) + 1), 0);
+  for (const auto& t : p.terms()) c[static_cast<std::size_t>(rotlie::lie::coefficient_polynomial::unpack(t.key)[static_cast<std::size_t>(u)])] += t.c;
+  return rotlie::solver::rational_polynomial(c);
+}
 double cpu() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 }  // namespace
 
@@ -48,15 +56,51 @@ int main(int argc, char** argv) {
   double t = cpu();
   auto reals = exact(j0, degree, discarded);
   const double t_exact = cpu() - t;
+  {  // the count of finite solutions: distinct roots of the eliminant, less those where both leading coefficients vanish
+    const auto unit = scaled_to_unit_I3(grid_point(K, i, j0).body);
+    const cln::cl_RA w1 = cln::recip(unit.I[0]), w2 = cln::recip(unit.I[1]);
+    rotlie::lie::coefficient_polynomial f;
+    for (const auto& q : sys.h5) {
+      const auto e = q.at(w1, w2);
+      f += e * e;
+    }
+    const auto red = reduce_lagrange_system(f, sys.p1.at(w1, w2), sys.p2.at(w1, w2));
+    const int u = red.rest[0], v = red.rest[1];
+    const auto R = resultant_in(red.reduced_other, red.reduced_det, v, u);
+    const auto distinct = modular_gcd(R, R.derivative());
+    const auto lc1 = univariate(red.reduced_other.coefficient(v, red.reduced_other.degree(v)), u);
+    const auto lc2 = univariate(red.reduced_det.coefficient(v, red.reduced_det.degree(v)), u);
+    const auto both = modular_gcd(lc1, lc2);
+    std::cout << "eliminant: degree " << R.degree() << ", distinct roots " << R.degree() - distinct.degree()
+              << "; A constant " << red.A.is_constant() << "; degrees in v " << red.reduced_other.degree(v) << ", "
+              << red.reduced_det.degree(v) << "; common roots of the leading coefficients " << both.degree()
+              << " (of which roots of the eliminant " << modular_gcd(both, R).degree() << ")\n";
+  }
   std::vector<complex_point> seeds;
   for (const auto& x : reals) seeds.push_back({x[0], x[1], x[2]});
   tracking_stats stats;
   t = cpu();
-  auto all = monodromy_solutions(sys, seeds, body_w(j0), static_cast<std::size_t>(degree - discarded), argc > 7 ? std::stoi(argv[7]) : 6, 14, stats, argc > 8 ? std::stold(argv[8]) : 0.2L);
+  const auto unit0 = scaled_to_unit_I3(grid_point(K, i, j0).body);
+  const auto start = start_from_eliminant(sys, cln::recip(unit0.I[0]), cln::recip(unit0.I[1]));
+  std::cout << "start from the eliminant: " << start.x.size() << " solutions (eliminant degree " << start.eliminant_degree
+            << ", distinct roots " << start.distinct_roots << ", linear solve undefined " << start.at_infinity
+            << ", not polished " << start.unpolished << ") in " << cpu() - t << " s CPU\n";
+  std::vector<complex_point> all = start.x;
+  const int loops = argc > 7 ? std::stoi(argv[7]) : 0;
+  if (loops > 0) {
+    t = cpu();
+    all = monodromy_solutions(sys, seeds, body_w(j0), static_cast<std::size_t>(degree - discarded), loops, 14, stats,
+                              argc > 8 ? std::stold(argv[8]) : 0.2L);
+    std::cout << "monodromy found " << all.size() << " in " << cpu() - t << " s CPU (" << stats.newton_iterations
+              << " Newton, " << stats.assemblies << " assemblies, " << stats.loops << " loops)\n";
+  }
   std::cout << sys.scheme << " " << sys.permutation << " row " << i << " body " << j0 << ": eliminant degree " << degree
-            << ", discarded " << discarded << ", real " << reals.size() << "; monodromy found " << all.size() << " in "
-            << cpu() - t << " s CPU (" << stats.newton_iterations << " Newton, " << stats.assemblies
-            << " assemblies, " << stats.loops << " loops; det terms " << lagrange_at(sys, body_w(j0)).equations[2].size() << "); exact solve " << t_exact << " s\n";
+            << ", discarded " << discarded << ", real " << reals.size() << "; det terms "
+            << lagrange_at(sys, body_w(j0)).equations[2].size() << "; exact solve " << t_exact << " s\n";
+  int real_start = 0;
+  for (const auto& x : all)
+    real_start += std::max({std::abs(x[0].imag()), std::abs(x[1].imag()), std::abs(x[2].imag())}) <= 1e-9L * (1 + std::abs(x[0])) ? 1 : 0;
+  std::cout << "real among the start solutions: " << real_start << "\n";
   {  // the unit costs: one assembly, one residual + Jacobian
     t = cpu();
     for (int k = 0; k < 200; ++k) lagrange_at(sys, body_w(j0));

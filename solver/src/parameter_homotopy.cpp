@@ -5,6 +5,14 @@
 #include <random>
 #include <stdexcept>
 
+#include <cln/float.h>
+#include <cln/integer.h>
+#include <cln/real.h>
+
+#include "rotlie/solver/critical_points.hpp"
+#include "rotlie/solver/rational_polynomial.hpp"
+#include "rotlie/solver/resultant.hpp"
+
 namespace rotlie::solver {
 namespace {
 
@@ -319,6 +327,139 @@ std::vector<complex_point> monodromy_solutions(const body_system& system, std::v
     ++stats.loops;
   }
   return known;
+}
+
+}  // namespace rotlie::solver
+
+namespace rotlie::solver {
+namespace {
+
+// A rational as a long double of any exponent (53 bits of mantissa): the eliminant's coefficients
+// overflow a double.
+long double to_long_double(const cln::cl_RA& c) {
+  if (cln::zerop(c)) return 0;
+  const long e = static_cast<long>(cln::integer_length(cln::numerator(c))) -
+                 static_cast<long>(cln::integer_length(cln::denominator(c)));
+  const double m = cln::double_approx(c * cln::expt(cln::cl_RA(2), static_cast<int>(-e)));
+  return std::ldexp(static_cast<long double>(m), static_cast<int>(e));
+}
+
+complex_ld horner(const std::vector<complex_ld>& c, complex_ld z, complex_ld& derivative) {
+  complex_ld p = 0;
+  derivative = 0;
+  for (std::size_t k = c.size(); k-- > 0;) {
+    derivative = derivative * z + p;
+    p = p * z + c[k];
+  }
+  return p;
+}
+
+// Every complex root of Σ c_k z^k (simple roots), by Aberth–Ehrlich iteration from a circle of the
+// Fujiwara radius.
+std::vector<complex_ld> aberth_roots(const std::vector<complex_ld>& c) {
+  const std::size_t n = c.size() - 1;
+  if (n == 0) return {};
+  long double radius = 0;
+  for (std::size_t k = 0; k < n; ++k)
+    radius = std::max(radius, std::pow(std::abs(c[k] / c[n]), 1.0L / static_cast<long double>(n - k)));
+  radius = std::max(radius, 1e-6L);
+  std::vector<complex_ld> z(n);
+  for (std::size_t k = 0; k < n; ++k)
+    z[k] = std::polar(radius, 6.283185307179586L * static_cast<long double>(k) / static_cast<long double>(n) + 0.4L);
+  for (int it = 0; it < 800; ++it) {
+    long double worst = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      complex_ld d;
+      const complex_ld p = horner(c, z[i], d);
+      if (p == complex_ld(0)) continue;
+      const complex_ld ratio = p / d;
+      complex_ld sum = 0;
+      for (std::size_t j = 0; j < n; ++j)
+        if (j != i) sum += 1.0L / (z[i] - z[j]);
+      const complex_ld w = ratio / (1.0L - ratio * sum);
+      z[i] -= w;
+      worst = std::max(worst, std::abs(w) / (1 + std::abs(z[i])));
+    }
+    if (worst < 1e-17L) break;
+  }
+  return z;
+}
+
+// A polynomial of the planar system in v at a complex u: its coefficients, by power of v.
+std::vector<complex_ld> in_v_at(const lie::coefficient_polynomial& p, int u, int v, complex_ld at_u) {
+  std::vector<complex_ld> c(static_cast<std::size_t>(std::max(0, p.degree(v)) + 1), 0);
+  for (const auto& t : p.terms()) {
+    const auto e = lie::coefficient_polynomial::unpack(t.key);
+    c[static_cast<std::size_t>(e[static_cast<std::size_t>(v)])] +=
+        to_long_double(t.c) * std::pow(at_u, e[static_cast<std::size_t>(u)]);
+  }
+  while (c.size() > 1 && c.back() == complex_ld(0)) c.pop_back();
+  return c;
+}
+
+complex_ld value_at(const lie::coefficient_polynomial& p, const complex_point& x, long double& size) {
+  complex_ld s = 0;
+  size = 0;
+  for (const auto& t : p.terms()) {
+    const auto e = lie::coefficient_polynomial::unpack(t.key);
+    const complex_ld term = to_long_double(t.c) * std::pow(x[0], e[0]) * std::pow(x[1], e[1]) * std::pow(x[2], e[2]);
+    s += term;
+    size += std::abs(term);
+  }
+  return s;
+}
+
+}  // namespace
+
+eliminant_start start_from_eliminant(const body_system& system, const cln::cl_RA& w1, const cln::cl_RA& w2) {
+  eliminant_start out;
+  lie::coefficient_polynomial f;
+  for (const auto& q : system.h5) {
+    const auto e = q.at(w1, w2);
+    f += e * e;
+  }
+  const auto reduced = reduce_lagrange_system(f, system.p1.at(w1, w2), system.p2.at(w1, w2));
+  if (reduced.degenerate) return out;
+  const int u = reduced.rest[0], v = reduced.rest[1];
+  const rational_polynomial R = resultant_in(reduced.reduced_other, reduced.reduced_det, v, u);
+  out.eliminant_degree = R.degree();
+  const rational_polynomial simple = quotient(R, modular_gcd(R, R.derivative()));
+  out.distinct_roots = simple.degree();
+  std::vector<complex_ld> c;
+  for (const auto& k : simple.coefficients()) c.push_back(to_long_double(k));
+  const auto numeric = lagrange_at(system, {static_cast<long double>(cln::double_approx(w1)),
+                                            static_cast<long double>(cln::double_approx(w2))});
+  const complex_ld a_value = reduced.A.is_constant() ? complex_ld(to_long_double(reduced.A.terms().empty() ? cln::cl_RA(0) : reduced.A.terms()[0].c)) : complex_ld(0);
+  for (const complex_ld root : aberth_roots(c)) {
+    // v: the roots of the lower-degree planar equation at u where the other one vanishes too.
+    const auto in_v = in_v_at(reduced.reduced_other, u, v, root);
+    for (const complex_ld vr : aberth_roots(in_v)) {
+      complex_point x{};
+      x[static_cast<std::size_t>(u)] = root;
+      x[static_cast<std::size_t>(v)] = vr;
+      long double size_det = 0, size_a = 0, size_b = 0;
+      const complex_ld det_value = value_at(reduced.reduced_det, x, size_det);
+      if (!(std::abs(det_value) <= 1e-6L * size_det)) continue;
+      const complex_ld A = reduced.A.is_constant() ? a_value : value_at(reduced.A, x, size_a);
+      const complex_ld B = value_at(reduced.B, x, size_b);
+      if (std::abs(A) <= 1e-12L * std::max(size_a, 1e-300L)) {
+        ++out.at_infinity;  // the linear solve is undefined: no finite solution here
+        continue;
+      }
+      x[static_cast<std::size_t>(reduced.eliminated)] = -B / A;
+      const auto r = polish(numeric, x, 8);
+      if (!r.converged) {
+        ++out.unpolished;
+        continue;
+      }
+      bool known = false;
+      for (const auto& y : out.x)
+        known = known || std::max({std::abs(y[0] - r.x[0]), std::abs(y[1] - r.x[1]), std::abs(y[2] - r.x[2])}) <=
+                             1e-7L * (1 + std::max({std::abs(y[0]), std::abs(y[1]), std::abs(y[2])}));
+      if (!known) out.x.push_back(r.x);
+    }
+  }
+  return out;
 }
 
 }  // namespace rotlie::solver

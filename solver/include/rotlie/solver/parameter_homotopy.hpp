@@ -10,6 +10,8 @@
 #include <complex>
 #include <vector>
 
+#include <cln/rational.h>
+
 #include "rotlie/solver/family_systems.hpp"
 
 namespace rotlie::solver {
@@ -64,5 +66,18 @@ struct polished_point {
   bool converged = false;
 };
 polished_point polish(const lagrange_polynomials& p, complex_point x, int iterations = 6);
+
+/// Every finite complex solution at a rational body from the exact elimination of
+/// critical_points.cpp: the complex roots of the eliminant's square-free part (Aberth, long double),
+/// the other unknown from the quadratic planar equation where the planar determinant vanishes too,
+/// x_eliminated = −B/A, each Newton-polished on the Lagrange system.
+struct eliminant_start {
+  std::vector<complex_point> x;  ///< distinct, polished
+  int eliminant_degree = 0;      ///< with multiplicity
+  int distinct_roots = 0;        ///< of the eliminant
+  int at_infinity = 0;           ///< pairs (u, v) where the linear solve is undefined
+  int unpolished = 0;            ///< candidates where Newton did not converge
+};
+eliminant_start start_from_eliminant(const body_system& system, const cln::cl_RA& w1, const cln::cl_RA& w2);
 
 }  // namespace rotlie::solver
