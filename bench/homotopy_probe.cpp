@@ -4,6 +4,7 @@
 //   homotopy_probe FAMILY SYSTEM_INDEX K ROW J0 BODIES
 #include <cln/float.h>
 
+#include <cstdlib>
 #include <ctime>
 #include <iostream>
 
@@ -117,13 +118,14 @@ int main(int argc, char** argv) {
     std::cout << "one assembly " << assembly * 1e3 << " ms, one residual + Jacobian " << (cpu() - t) / 20000 * 1e6
               << " us CPU" << (std::abs(sink) < 0 ? "" : "") << "\n";
   }
+  const long double first_step = std::getenv("FIRST_STEP") ? std::stold(std::getenv("FIRST_STEP")) : 0.125L;
   const complex_ld gamma(0.37L, 0.81L);
   int disagreements = 0;
   double t_track = 0;
   for (int j = j0 + 1; j < j0 + count && j < K; ++j) {
     tracking_stats s;
     t = cpu();
-    const bool ok = track_all(sys, all, body_w(j - 1), body_w(j), gamma, s);
+    const bool ok = track_all(sys, all, body_w(j - 1), body_w(j), gamma, s, first_step);
     t_track += cpu() - t;
     std::vector<std::array<long double, 3>> fast;
     int near_real = 0;

@@ -7,6 +7,7 @@
 
 #include <cln/float.h>
 #include <cln/integer.h>
+#include <cln/complex.h>
 #include <cln/real.h>
 
 #include "rotlie/solver/critical_points.hpp"
@@ -188,7 +189,7 @@ bool track_path(const body_system& system, std::vector<complex_point>& x, const 
     x.swap(next);
     tau += h;
     h_previous = h;
-    if (++good >= 2) h = std::min(2 * h, 0.5L);
+    if (++good >= 2) h = std::min(2 * h, 1.0L);
   }
   return true;
 }
@@ -243,11 +244,12 @@ void lagrange_residual(const lagrange_polynomials& p, const complex_point& x, co
     complex_ld v = 0, d0 = 0, d1 = 0, d2 = 0;
     for (const auto& t : p.equations[r]) {
       const auto& e = t.x;
-      const complex_ld m0 = power[0][e[0]], m1 = power[1][e[1]], m2 = power[2][e[2]];
-      v += t.c * m0 * m1 * m2;
-      if (e[0] > 0) d0 += t.c * static_cast<long double>(e[0]) * power[0][e[0] - 1] * m1 * m2;
-      if (e[1] > 0) d1 += t.c * static_cast<long double>(e[1]) * m0 * power[1][e[1] - 1] * m2;
-      if (e[2] > 0) d2 += t.c * static_cast<long double>(e[2]) * m0 * m1 * power[2][e[2] - 1];
+      const complex_ld m1 = power[1][e[1]], m2 = power[2][e[2]], m12 = m1 * m2;
+      const complex_ld cm0 = t.c * power[0][e[0]];
+      v += cm0 * m12;
+      if (e[0] > 0) d0 += (t.c * static_cast<long double>(e[0])) * power[0][e[0] - 1] * m12;
+      if (e[1] > 0) d1 += cm0 * (static_cast<long double>(e[1]) * power[1][e[1] - 1]) * m2;
+      if (e[2] > 0) d2 += cm0 * m1 * (static_cast<long double>(e[2]) * power[2][e[2] - 1]);
     }
     F[r] = v;
     J[r] = {d0, d1, d2};
@@ -260,7 +262,7 @@ polished_point polish(const lagrange_polynomials& p, complex_point x, int iterat
     const long double d = newton_step(p, x);
     if (!std::isfinite(d)) break;
     out.correction = d / (1 + size(x));
-    if (out.correction <= 1e-16L) break;
+    if (out.correction <= 1e-17L) break;
   }
   out.x = x;
   out.converged = std::isfinite(out.correction) && out.correction <= 1e-12L;
@@ -268,16 +270,16 @@ polished_point polish(const lagrange_polynomials& p, complex_point x, int iterat
 }
 
 bool track_all(const body_system& system, std::vector<complex_point>& x, const complex_body& w_from,
-               const complex_body& w_to, complex_ld gamma, tracking_stats& stats) {
+               const complex_body& w_to, complex_ld gamma, tracking_stats& stats, long double first_step) {
   // w(τ) = w_from + s(τ)(w_to − w_from), s = τ + γτ(1 − τ): complex inside, real at both ends.
   const auto path = [&](long double tau) {
     const complex_ld s = tau + gamma * tau * (1 - tau);
     return complex_body{w_from[0] + s * (w_to[0] - w_from[0]), w_from[1] + s * (w_to[1] - w_from[1])};
   };
-  if (!track_path(system, x, path, stats)) return false;
+  if (!track_path(system, x, path, stats, first_step)) return false;
   const auto end = lagrange_at(system, w_to);
   for (auto& xi : x) {
-    const auto r = polish(end, xi);
+    const auto r = polish(end, xi, 4);
     if (!r.converged) return false;
     xi = r.x;
   }
@@ -340,8 +342,10 @@ long double to_long_double(const cln::cl_RA& c) {
   if (cln::zerop(c)) return 0;
   const long e = static_cast<long>(cln::integer_length(cln::numerator(c))) -
                  static_cast<long>(cln::integer_length(cln::denominator(c)));
-  const double m = cln::double_approx(c * cln::expt(cln::cl_RA(2), static_cast<int>(-e)));
-  return std::ldexp(static_cast<long double>(m), static_cast<int>(e));
+  const cln::cl_RA scaled = c * cln::expt(cln::cl_RA(2), static_cast<int>(-e));
+  const double high = cln::double_approx(scaled);  // and the rest: the full long double mantissa
+  const double low = cln::double_approx(scaled - cln::rational(cln::cl_DF(high)));
+  return std::ldexp(static_cast<long double>(high) + static_cast<long double>(low), static_cast<int>(e));
 }
 
 complex_ld horner(const std::vector<complex_ld>& c, complex_ld z, complex_ld& derivative) {
@@ -383,6 +387,33 @@ std::vector<complex_ld> aberth_roots(const std::vector<complex_ld>& c) {
     if (worst < 1e-17L) break;
   }
   return z;
+}
+
+// A root refined by Newton on the exact polynomial in 40-digit complex arithmetic: near-multiple roots
+// of the eliminant lose most of their digits in long double.
+complex_ld refine_exactly(const rational_polynomial& p, complex_ld z) {
+  const cln::float_format_t format = cln::float_format(40);
+  const auto to_float = [&](long double x) {
+    const double high = static_cast<double>(x);
+    return cln::cl_float(cln::rational(cln::cl_DF(high)) + cln::rational(cln::cl_DF(static_cast<double>(x - high))), format);
+  };
+  const auto to_ld = [](const cln::cl_R& x) {
+    const double high = cln::double_approx(x);
+    return static_cast<long double>(high) + static_cast<long double>(cln::double_approx(x - cln::rational(cln::cl_DF(high))));
+  };
+  std::vector<cln::cl_N> c;
+  for (const auto& k : p.coefficients()) c.push_back(cln::cl_float(k, format));
+  cln::cl_N x = cln::complex(to_float(z.real()), to_float(z.imag()));
+  for (int it = 0; it < 6; ++it) {
+    cln::cl_N value = cln::cl_float(0, format), slope = cln::cl_float(0, format);
+    for (std::size_t k = c.size(); k-- > 0;) {
+      slope = slope * x + value;
+      value = value * x + c[k];
+    }
+    if (cln::zerop(slope)) break;
+    x = x - value / slope;
+  }
+  return {to_ld(cln::realpart(x)), to_ld(cln::imagpart(x))};
 }
 
 // A polynomial of the planar system in v at a complex u: its coefficients, by power of v.
@@ -430,7 +461,8 @@ eliminant_start start_from_eliminant(const body_system& system, const cln::cl_RA
   const auto numeric = lagrange_at(system, {static_cast<long double>(cln::double_approx(w1)),
                                             static_cast<long double>(cln::double_approx(w2))});
   const complex_ld a_value = reduced.A.is_constant() ? complex_ld(to_long_double(reduced.A.terms().empty() ? cln::cl_RA(0) : reduced.A.terms()[0].c)) : complex_ld(0);
-  for (const complex_ld root : aberth_roots(c)) {
+  for (const complex_ld rough : aberth_roots(c)) {
+    const complex_ld root = refine_exactly(simple, rough);
     // v: the roots of the lower-degree planar equation at u where the other one vanishes too.
     const auto in_v = in_v_at(reduced.reduced_other, u, v, root);
     for (const complex_ld vr : aberth_roots(in_v)) {
@@ -447,7 +479,7 @@ eliminant_start start_from_eliminant(const body_system& system, const cln::cl_RA
         continue;
       }
       x[static_cast<std::size_t>(reduced.eliminated)] = -B / A;
-      const auto r = polish(numeric, x, 8);
+      const auto r = polish(numeric, x, 40);
       if (!r.converged) {
         ++out.unpolished;
         continue;

@@ -15,7 +15,9 @@
 #include "rotlie/solver/continued_map.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 #include "rotlie/solver/family_systems.hpp"
+#include "rotlie/solver/critical_points.hpp"
 #include "rotlie/solver/parameter_homotopy.hpp"
+#include "rotlie/solver/resultant.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
 using namespace rotlie;
@@ -139,6 +141,49 @@ BOOST_AUTO_TEST_CASE(the_parameter_homotopy_sees_a_real_pair_die_and_be_born) {
   expect_real_points_are(x, at_b);
   BOOST_REQUIRE(solver::track_all(sys, x, inverse_moments(b), inverse_moments(a), gamma, stats));
   expect_real_points_are(x, at_a);
+}
+
+// Every finite complex solution from the exact eliminant (R BCA, K = 20, s = 1/2, t = 8/20): as many as
+// the eliminant's distinct roots less those where both planar equations lose their leading
+// coefficient in the other unknown (exact gcds), closed under conjugation (a real body), the real
+// ones the exact solver's; carried to t = 9/20 all of them give the exact solver's real solutions.
+BOOST_AUTO_TEST_CASE(the_start_solutions_are_every_finite_solution) {
+  const auto& sys = solver::family_systems("R").at(1);
+  BOOST_REQUIRE(sys.scheme + " " + sys.permutation == "R BCA");
+  const auto a = solver::grid_point(20, 10, 8), b = solver::grid_point(20, 10, 9);
+  const auto unit = solver::scaled_to_unit_I3(a.body);
+  const cl_RA w1 = cln::recip(unit.I[0]), w2 = cln::recip(unit.I[1]);
+  const auto start = solver::start_from_eliminant(sys, w1, w2);
+  lie::coefficient_polynomial f;
+  for (const auto& q : sys.h5) f += q.at(w1, w2) * q.at(w1, w2);
+  const auto red = solver::reduce_lagrange_system(f, sys.p1.at(w1, w2), sys.p2.at(w1, w2));
+  BOOST_REQUIRE(!red.degenerate);
+  const int u = red.rest[0], v = red.rest[1];
+  const auto R = solver::resultant_in(red.reduced_other, red.reduced_det, v, u);
+  const auto univariate = [&](const lie::coefficient_polynomial& p) {
+    std::vector<cl_RA> c(static_cast<std::size_t>(std::max(0, p.degree(u)) + 1), 0);
+    for (const auto& t : p.terms()) c[static_cast<std::size_t>(lie::coefficient_polynomial::unpack(t.key)[static_cast<std::size_t>(u)])] += t.c;
+    return solver::rational_polynomial(c);
+  };
+  const auto lead1 = univariate(red.reduced_other.coefficient(v, red.reduced_other.degree(v)));
+  const auto lead2 = univariate(red.reduced_det.coefficient(v, red.reduced_det.degree(v)));
+  const int distinct = R.degree() - solver::modular_gcd(R, R.derivative()).degree();
+  const int lost = solver::modular_gcd(solver::modular_gcd(lead1, lead2), R).degree();
+  BOOST_TEST(red.reduced_other.degree(v) == 2);  // one finite v per u is what the count below assumes
+  BOOST_TEST(static_cast<int>(start.x.size()) == distinct - lost);
+  BOOST_TEST(start.x.size() > 20u);
+  for (const auto& x : start.x) {
+    const solver::complex_point conjugate{std::conj(x[0]), std::conj(x[1]), std::conj(x[2])};
+    const bool found = std::any_of(start.x.begin(), start.x.end(), [&](const solver::complex_point& y) {
+      return std::abs(y[0] - conjugate[0]) + std::abs(y[1] - conjugate[1]) + std::abs(y[2] - conjugate[2]) <= 1e-9L * (1 + std::abs(x[0]));
+    });
+    BOOST_TEST(found);
+  }
+  expect_real_points_are(start.x, exact_solutions(sys, a));
+  auto x = start.x;
+  solver::tracking_stats stats;
+  BOOST_REQUIRE(solver::track_all(sys, x, inverse_moments(a), inverse_moments(b), solver::complex_ld(0.37L, 0.81L), stats));
+  expect_real_points_are(x, exact_solutions(sys, b));
 }
 
 BOOST_AUTO_TEST_CASE(interpolated_conditions_are_the_exact_conditions_at_any_body) {

@@ -47,10 +47,10 @@ struct tracking_stats {
 
 /// Every solution in `x` (solutions at w_from) carried to w_to along w_from → w_from + (w_to − w_from)/2
 /// + γ |w_to − w_from| → w_to, all paths with the same steps (one assembly per step serves them all),
-/// the step halved when any path's Newton corrector does not contract. false when the steps fall
+/// the step (first `first_step` of the path) halved when any path's Newton corrector does not contract. false when the steps fall
 /// below the floor, a path diverges, or two endpoints coincide (path jumping): the caller decides.
 bool track_all(const body_system& system, std::vector<complex_point>& x, const complex_body& w_from,
-               const complex_body& w_to, complex_ld gamma, tracking_stats& stats);
+               const complex_body& w_to, complex_ld gamma, tracking_stats& stats, long double first_step = 0.125L);
 
 /// Solutions found by monodromy: from the seeds (solutions at w), loops w → a → b → w through random
 /// complex bodies permute the solutions; new endpoints are added until `target` are known or
