@@ -145,8 +145,8 @@ bool correct(const lagrange_polynomials& p, complex_point& x, long double max_fi
     ++stats.newton_iterations;
     if (!std::isfinite(d)) return false;
     if (it == 0 && d > max_first) return false;
+    if (d <= corrector_tolerance * (1 + size(x))) return true;  // before the contraction test: rounding noise does not contract
     if (it > 0 && d > 0.25L * before) return false;
-    if (d <= corrector_tolerance * (1 + size(x))) return true;
     before = d;
   }
   return false;
