@@ -464,14 +464,15 @@ eliminant_start start_from_eliminant(const body_system& system, const cln::cl_RA
   for (const complex_ld rough : aberth_roots(c)) {
     const complex_ld root = refine_exactly(simple, rough);
     // v: the roots of the lower-degree planar equation at u where the other one vanishes too.
-    const auto in_v = in_v_at(reduced.reduced_other, u, v, root);
-    for (const complex_ld vr : aberth_roots(in_v)) {
+    // Candidates for v: the roots of either planar equation at u (a near-multiple u spoils one of them).
+    std::vector<complex_ld> candidates = aberth_roots(in_v_at(reduced.reduced_other, u, v, root));
+    if (!reduced.A.is_constant())
+      for (const complex_ld c2 : aberth_roots(in_v_at(reduced.reduced_det, u, v, root))) candidates.push_back(c2);
+    for (const complex_ld vr : candidates) {
       complex_point x{};
       x[static_cast<std::size_t>(u)] = root;
       x[static_cast<std::size_t>(v)] = vr;
-      long double size_det = 0, size_a = 0, size_b = 0;
-      const complex_ld det_value = value_at(reduced.reduced_det, x, size_det);
-      if (!(std::abs(det_value) <= 1e-6L * size_det)) continue;
+      long double size_a = 0, size_b = 0;
       const complex_ld A = reduced.A.is_constant() ? a_value : value_at(reduced.A, x, size_a);
       const complex_ld B = value_at(reduced.B, x, size_b);
       if (std::abs(A) <= 1e-12L * std::max(size_a, 1e-300L)) {
