@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
   const auto start = start_from_eliminant(sys, cln::recip(unit0.I[0]), cln::recip(unit0.I[1]));
   std::cout << "start from the eliminant: " << start.x.size() << " solutions (eliminant degree " << start.eliminant_degree
             << ", distinct roots " << start.distinct_roots << ", linear solve undefined " << start.at_infinity
-            << ", not polished " << start.unpolished << ") in " << cpu() - t << " s CPU\n";
+            << ", not polished " << start.unpolished << ", singular " << start.singular << ") in " << cpu() - t << " s CPU\n";
   std::vector<complex_point> all = start.x;
   const int loops = argc > 7 ? std::stoi(argv[7]) : 0;
   if (loops > 0) {

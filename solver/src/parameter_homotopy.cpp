@@ -485,6 +485,29 @@ eliminant_start start_from_eliminant(const body_system& system, const cln::cl_RA
         ++out.unpolished;
         continue;
       }
+      // A regular solution only: Newton also "converges" onto a curve of solutions (det[∇f; ∇g1; ∇g2]
+      // vanishes along it), where the Jacobian is singular. Hadamard ratio |det J| / Π ‖row‖.
+      {
+        complex_point F;
+        std::array<complex_point, 3> J;
+        lagrange_residual(numeric, r.x, F, J);
+        const complex_ld det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
+                               J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+                               J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+        long double rows = 1;
+        for (const auto& row : J) rows *= std::sqrt(std::norm(row[0]) + std::norm(row[1]) + std::norm(row[2]));
+        if (!(std::abs(det) > 1e-10L * rows)) {
+          ++out.singular;
+          continue;
+        }
+      }
+      // A point where A vanishes lies on the line A = B = 0 (x_z free) that the exact solver discards:
+      // not an isolated solution, whatever Newton says.
+      long double size_after = 0;
+      if (!reduced.A.is_constant() && std::abs(value_at(reduced.A, r.x, size_after)) <= 1e-8L * size_after) {
+        ++out.at_infinity;
+        continue;
+      }
       bool known = false;
       for (const auto& y : out.x)
         known = known || std::max({std::abs(y[0] - r.x[0]), std::abs(y[1] - r.x[1]), std::abs(y[2] - r.x[2])}) <=

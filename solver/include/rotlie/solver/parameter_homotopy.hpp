@@ -75,8 +75,9 @@ struct eliminant_start {
   std::vector<complex_point> x;  ///< distinct, polished
   int eliminant_degree = 0;      ///< with multiplicity
   int distinct_roots = 0;        ///< of the eliminant
-  int at_infinity = 0;           ///< pairs (u, v) where the linear solve is undefined
+  int at_infinity = 0;           ///< candidates where the linear solve is undefined (A = 0), before or after polish
   int unpolished = 0;            ///< candidates where Newton did not converge
+  int singular = 0;              ///< candidates that converged where the Jacobian is singular (a curve of solutions)
 };
 eliminant_start start_from_eliminant(const body_system& system, const cln::cl_RA& w1, const cln::cl_RA& w2);
 
