@@ -464,10 +464,9 @@ eliminant_start start_from_eliminant(const body_system& system, const cln::cl_RA
   for (const complex_ld rough : aberth_roots(c)) {
     const complex_ld root = refine_exactly(simple, rough);
     // v: the roots of the lower-degree planar equation at u where the other one vanishes too.
-    // Candidates for v: the roots of either planar equation at u (a near-multiple u spoils one of them).
+    // Candidates for v: the roots of both planar equations at u (an ill-conditioned u spoils one of them).
     std::vector<complex_ld> candidates = aberth_roots(in_v_at(reduced.reduced_other, u, v, root));
-    if (!reduced.A.is_constant())
-      for (const complex_ld c2 : aberth_roots(in_v_at(reduced.reduced_det, u, v, root))) candidates.push_back(c2);
+    for (const complex_ld c2 : aberth_roots(in_v_at(reduced.reduced_det, u, v, root))) candidates.push_back(c2);
     for (const complex_ld vr : candidates) {
       complex_point x{};
       x[static_cast<std::size_t>(u)] = root;
