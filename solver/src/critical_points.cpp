@@ -146,18 +146,18 @@ class relative_value {
 
 }  // namespace
 
-critical_result constrained_critical_points(const coefficient_polynomial& f, const coefficient_polynomial& g1,
-                                            const coefficient_polynomial& g2, int digits, solve_method method) {
-  const coefficient_polynomial e1 = g1.primitive_integer(), e2 = g2.primitive_integer();
-  critical_result result;
-  using clock = std::chrono::steady_clock;
-  const auto start = clock::now();
+reduced_lagrange_system reduce_lagrange_system(const coefficient_polynomial& f, const coefficient_polynomial& g1,
+                                               const coefficient_polynomial& g2) {
+  reduced_lagrange_system r;
+  r.g1 = g1.primitive_integer();
+  r.g2 = g2.primitive_integer();
+  const coefficient_polynomial &e1 = r.g1, &e2 = r.g2;
   // Integer coefficients throughout (same zero sets): rational arithmetic would pay a gcd per operation.
-  const coefficient_polynomial det = determinant3(f.primitive_integer(), e1, e2).primitive_integer();
+  r.det = determinant3(f.primitive_integer(), e1, e2).primitive_integer();
+  const coefficient_polynomial& det = r.det;
   if (e1.is_zero() || e2.is_zero() || det.is_zero()) {
-    result.degenerate = true;
-    result.note = "a condition or the Lagrange determinant vanishes identically";
-    return result;
+    r.note = "a condition or the Lagrange determinant vanishes identically";
+    return r;
   }
   // The linear unknown with the simplest leading coefficient A (a constant avoids any spurious root).
   int best_eq = -1, best_var = -1, best_cost = 1 << 30;
@@ -169,25 +169,43 @@ critical_result constrained_critical_points(const coefficient_polynomial& f, con
       if (cost < best_cost) best_eq = q, best_var = v, best_cost = cost;
     }
   if (best_eq < 0) {
-    result.degenerate = true;
-    result.note = "no order condition is linear in an unknown: this elimination does not apply";
-    return result;
+    r.note = "no order condition is linear in an unknown: this elimination does not apply";
+    return r;
   }
   const int z = best_var;
   const coefficient_polynomial& linear = *eqs[static_cast<std::size_t>(best_eq)];
   const coefficient_polynomial& other = *eqs[static_cast<std::size_t>(1 - best_eq)];
-  const coefficient_polynomial A = linear.coefficient(z, 1), B = linear.coefficient(z, 0);
-  if (nonconstant_gcd(A, B)) {
+  r.A = linear.coefficient(z, 1);
+  r.B = linear.coefficient(z, 0);
+  if (nonconstant_gcd(r.A, r.B)) {
+    r.note = "the linear condition factors: its zero set contains a whole surface";
+    return r;
+  }
+  for (int v = 0, k = 0; v < 3; ++v)
+    if (v != z) r.rest[static_cast<std::size_t>(k++)] = v;
+  r.eliminated = z;
+  r.reduced_other = strip_common_factors(substitute_linear(other, z, r.A, r.B), r.A).primitive_integer();
+  r.reduced_det = strip_common_factors(substitute_linear(det, z, r.A, r.B), r.A).primitive_integer();
+  r.degenerate = false;
+  return r;
+}
+
+critical_result constrained_critical_points(const coefficient_polynomial& f, const coefficient_polynomial& g1,
+                                            const coefficient_polynomial& g2, int digits, solve_method method) {
+  critical_result result;
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  const reduced_lagrange_system reduced = reduce_lagrange_system(f, g1, g2);
+  if (reduced.degenerate) {
     result.degenerate = true;
-    result.note = "the linear condition factors: its zero set contains a whole surface";
+    result.note = reduced.note;
     return result;
   }
-  std::array<int, 2> rest{};
-  for (int v = 0, k = 0; v < 3; ++v)
-    if (v != z) rest[static_cast<std::size_t>(k++)] = v;
+  const coefficient_polynomial &e1 = reduced.g1, &e2 = reduced.g2, &det = reduced.det, &A = reduced.A, &B = reduced.B;
+  const int z = reduced.eliminated;
+  const std::array<int, 2> rest = reduced.rest;
   result.eliminated = z;
-  const coefficient_polynomial reduced_other = strip_common_factors(substitute_linear(other, z, A, B), A).primitive_integer();
-  const coefficient_polynomial reduced_det = strip_common_factors(substitute_linear(det, z, A, B), A).primitive_integer();
+  const coefficient_polynomial &reduced_other = reduced.reduced_other, &reduced_det = reduced.reduced_det;
   // Where A = B = 0 both reduced equations vanish to high order: those points are multiple roots of
   // the eliminant, at the roots of Res(A, B). Kept once (then discarded below), not certified away.
   const rational_polynomial spurious =

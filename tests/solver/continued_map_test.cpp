@@ -5,12 +5,19 @@
 #define BOOST_TEST_MODULE continued_map
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
+#include <cln/float.h>
+
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/solver/continued_map.hpp"
+#include "rotlie/solver/dedicated_schemes.hpp"
 #include "rotlie/solver/family_systems.hpp"
+#include "rotlie/solver/critical_points.hpp"
+#include "rotlie/solver/parameter_homotopy.hpp"
+#include "rotlie/solver/resultant.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
 using namespace rotlie;
@@ -55,7 +62,129 @@ void expect_row_equals_exact(const std::string& family, int K, int i, int j0, in
   }
 }
 
+// (w1, w2) = (1/I1, 1/I2) of a grid body scaled to I3 = 1.
+solver::complex_body inverse_moments(const solver::grid_body& g) {
+  const auto unit = solver::scaled_to_unit_I3(g.body);
+  return {1.0L / static_cast<long double>(cln::double_approx(unit.I[0])),
+          1.0L / static_cast<long double>(cln::double_approx(unit.I[1]))};
+}
+
+// The exact solver's real solutions of one system at a grid body (free coefficients), sorted.
+std::vector<solver::complex_point> exact_solutions(const solver::body_system& sys, const solver::grid_body& g) {
+  const auto r = solver::solve_dedicated(g.body, {sys.scheme}, {sys.permutation}, solver::map_digits);
+  std::vector<solver::complex_point> out;
+  for (const auto& s : r.solutions) {
+    solver::complex_point x{};
+    for (std::size_t k = 0; k < s.free.size(); ++k)
+      for (const auto& [name, value] : s.coefficients)
+        if (name == s.free[k]) x[k] = static_cast<long double>(cln::double_approx(value));
+    out.push_back(x);
+  }
+  return out;
+}
+
+// The real points among x (imaginary parts below 1e-9 relative), against the exact ones: as many,
+// each within 1e-8.
+void expect_real_points_are(const std::vector<solver::complex_point>& x, const std::vector<solver::complex_point>& exact) {
+  std::vector<std::array<long double, 3>> real, want;
+  for (const auto& p : x) {
+    long double im = 0, re = 1;
+    for (int c = 0; c < 3; ++c) im = std::max(im, std::abs(p[c].imag())), re = std::max(re, 1 + std::abs(p[c]));
+    if (im <= 1e-9L * re) real.push_back({p[0].real(), p[1].real(), p[2].real()});
+  }
+  for (const auto& p : exact) want.push_back({p[0].real(), p[1].real(), p[2].real()});
+  std::sort(real.begin(), real.end());
+  std::sort(want.begin(), want.end());
+  BOOST_REQUIRE_EQUAL(real.size(), want.size());
+  for (std::size_t k = 0; k < want.size(); ++k)
+    for (int c = 0; c < 3; ++c) BOOST_TEST(std::fabs(real[k][c] - want[k][c]) <= 1e-8L * (1 + std::fabs(want[k][c])));
+}
+
 }  // namespace
+
+// The homotopy's expanded Lagrange system vanishes at the exact solver's solutions and its Jacobian
+// is the derivative of its residual (central differences); tracked through the complex parameter
+// plane, the real solutions of R ABC at K = 20, s = 1/2 from t = 8/20 to 9/20 lose a pair (10 → 8
+// real, a pair leaving the real axis) and, tracked back, the pair is born again: both ends equal to
+// the exact solver's solutions.
+BOOST_AUTO_TEST_CASE(the_parameter_homotopy_sees_a_real_pair_die_and_be_born) {
+  const auto& sys = solver::family_systems("R").at(0);
+  BOOST_REQUIRE(sys.scheme + " " + sys.permutation == "R ABC");
+  const auto a = solver::grid_point(20, 10, 8), b = solver::grid_point(20, 10, 9);
+  const auto at_a = exact_solutions(sys, a), at_b = exact_solutions(sys, b);
+  BOOST_REQUIRE_EQUAL(at_a.size(), 10u);
+  BOOST_REQUIRE_EQUAL(at_b.size(), 8u);
+  const auto p = solver::lagrange_at(sys, inverse_moments(a));
+  for (const auto& x : at_a) {
+    const auto r = solver::polish(p, x);
+    BOOST_TEST(r.converged);
+    for (int c = 0; c < 3; ++c) BOOST_TEST(std::abs(r.x[c] - x[c]) <= 1e-12L * (1 + std::abs(x[c])));
+  }
+  const solver::complex_point x0{at_a[0][0] + solver::complex_ld(0.01L, 0.02L), at_a[0][1], at_a[0][2]};
+  solver::complex_point F, Fp, Fm;
+  std::array<solver::complex_point, 3> J, Jd;
+  solver::lagrange_residual(p, x0, F, J);
+  for (int k = 0; k < 3; ++k) {
+    const long double h = 1e-6L;
+    auto xp = x0, xm = x0;
+    xp[k] += h;
+    xm[k] -= h;
+    solver::lagrange_residual(p, xp, Fp, Jd);
+    solver::lagrange_residual(p, xm, Fm, Jd);
+    for (int r = 0; r < 3; ++r)
+      BOOST_TEST(std::abs((Fp[r] - Fm[r]) / (2 * h) - J[r][k]) <= 1e-6L * (1 + std::abs(J[r][k])), "dF" << r << "/dx" << k);
+  }
+  solver::tracking_stats stats;
+  const solver::complex_ld gamma(0.37L, 0.81L);
+  auto x = at_a;
+  BOOST_REQUIRE(solver::track_all(sys, x, inverse_moments(a), inverse_moments(b), gamma, stats));
+  expect_real_points_are(x, at_b);
+  BOOST_REQUIRE(solver::track_all(sys, x, inverse_moments(b), inverse_moments(a), gamma, stats));
+  expect_real_points_are(x, at_a);
+}
+
+// Every finite complex solution from the exact eliminant (R BCA, K = 20, s = 1/2, t = 8/20): as many as
+// the eliminant's distinct roots less those where both planar equations lose their leading
+// coefficient in the other unknown (exact gcds), closed under conjugation (a real body), the real
+// ones the exact solver's; carried to t = 9/20 all of them give the exact solver's real solutions.
+BOOST_AUTO_TEST_CASE(the_start_solutions_are_every_finite_solution) {
+  const auto& sys = solver::family_systems("R").at(1);
+  BOOST_REQUIRE(sys.scheme + " " + sys.permutation == "R BCA");
+  const auto a = solver::grid_point(20, 10, 8), b = solver::grid_point(20, 10, 9);
+  const auto unit = solver::scaled_to_unit_I3(a.body);
+  const cl_RA w1 = cln::recip(unit.I[0]), w2 = cln::recip(unit.I[1]);
+  const auto start = solver::start_from_eliminant(sys, w1, w2);
+  lie::coefficient_polynomial f;
+  for (const auto& q : sys.h5) f += q.at(w1, w2) * q.at(w1, w2);
+  const auto red = solver::reduce_lagrange_system(f, sys.p1.at(w1, w2), sys.p2.at(w1, w2));
+  BOOST_REQUIRE(!red.degenerate);
+  const int u = red.rest[0], v = red.rest[1];
+  const auto R = solver::resultant_in(red.reduced_other, red.reduced_det, v, u);
+  const auto univariate = [&](const lie::coefficient_polynomial& p) {
+    std::vector<cl_RA> c(static_cast<std::size_t>(std::max(0, p.degree(u)) + 1), 0);
+    for (const auto& t : p.terms()) c[static_cast<std::size_t>(lie::coefficient_polynomial::unpack(t.key)[static_cast<std::size_t>(u)])] += t.c;
+    return solver::rational_polynomial(c);
+  };
+  const auto lead1 = univariate(red.reduced_other.coefficient(v, red.reduced_other.degree(v)));
+  const auto lead2 = univariate(red.reduced_det.coefficient(v, red.reduced_det.degree(v)));
+  const int distinct = R.degree() - solver::modular_gcd(R, R.derivative()).degree();
+  const int lost = solver::modular_gcd(solver::modular_gcd(lead1, lead2), R).degree();
+  BOOST_TEST(red.reduced_other.degree(v) == 2);  // one finite v per u is what the count below assumes
+  BOOST_TEST(static_cast<int>(start.x.size()) == distinct - lost);
+  BOOST_TEST(start.x.size() > 20u);
+  for (const auto& x : start.x) {
+    const solver::complex_point conjugate{std::conj(x[0]), std::conj(x[1]), std::conj(x[2])};
+    const bool found = std::any_of(start.x.begin(), start.x.end(), [&](const solver::complex_point& y) {
+      return std::abs(y[0] - conjugate[0]) + std::abs(y[1] - conjugate[1]) + std::abs(y[2] - conjugate[2]) <= 1e-9L * (1 + std::abs(x[0]));
+    });
+    BOOST_TEST(found);
+  }
+  expect_real_points_are(start.x, exact_solutions(sys, a));
+  auto x = start.x;
+  solver::tracking_stats stats;
+  BOOST_REQUIRE(solver::track_all(sys, x, inverse_moments(a), inverse_moments(b), solver::complex_ld(0.37L, 0.81L), stats));
+  expect_real_points_are(x, exact_solutions(sys, b));
+}
 
 BOOST_AUTO_TEST_CASE(interpolated_conditions_are_the_exact_conditions_at_any_body) {
   // Inside the triangle, near its flat corner (w1 = 1/I1 far outside the nodes 1 … 6), and water-like.

@@ -38,4 +38,17 @@ critical_result constrained_critical_points(const lie::coefficient_polynomial& f
                                             const lie::coefficient_polynomial& g2, int digits,
                                             solve_method method = solve_method::automatic);
 
+/// The planar system of constrained_critical_points before it is solved: g1, g2 and the Lagrange
+/// determinant with integer coefficients, the unknown x_eliminated = −B/A solved from the linear
+/// condition, and the two equations left in x_rest[0], x_rest[1] (common factors with A removed).
+struct reduced_lagrange_system {
+  bool degenerate = true;
+  std::string note;  ///< why degenerate
+  lie::coefficient_polynomial g1, g2, det, A, B, reduced_other, reduced_det;
+  int eliminated = -1;
+  std::array<int, 2> rest{};
+};
+reduced_lagrange_system reduce_lagrange_system(const lie::coefficient_polynomial& f, const lie::coefficient_polynomial& g1,
+                                               const lie::coefficient_polynomial& g2);
+
 }  // namespace rotlie::solver
