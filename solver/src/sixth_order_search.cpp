@@ -205,6 +205,7 @@ search_result newton_search(const sixth_order_system& s, const search_options& o
   std::mt19937_64 rng(o.seed);
   std::uniform_real_distribution<double> start(-o.box, o.box);
   search_result out;
+  for (long skipped = 0; skipped < static_cast<long>(o.first_start) * static_cast<long>(n); ++skipped) (void)start(rng);
   for (int trial = 0; trial < o.starts; ++trial) {
     ++out.starts;
     std::vector<double> x(n);

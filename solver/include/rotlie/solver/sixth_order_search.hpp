@@ -47,6 +47,7 @@ struct search_options {
   double box = 1.0;            ///< starts uniform in [−box, box]^n
   std::uint64_t seed = 1;
   int max_iterations = 60;
+  int first_start = 0;         ///< skip this many starts of the seed's sequence (a resumed search)
 };
 
 struct newton_root {
