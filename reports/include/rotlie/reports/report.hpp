@@ -65,4 +65,8 @@ report_section exact_flow_section(const report_options& options);
 /// Section "Comparison over all rigid bodies": LV section 5, Figs. 6–10, from the maps.
 report_section maps_section(const report_options& options);
 
+/// Section "Beyond the paper": dedicated 6th-order schemes for water against the general 6th-order
+/// compositions and the 4th-order champions.
+report_section beyond_section(const report_options& options);
+
 }  // namespace rotlie::reports
