@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -114,7 +115,7 @@ int run_sixth(const sixth_options& o) {
   const long starts = parse_integer_in_range(o.starts, "--starts", 1, 1000000);
   const long best = parse_integer_in_range(o.best, "--best", 0, 1000);
   const long digits = parse_integer_in_range(o.digits, "--digits", 40, 200);
-  const bool sphere = lie::symmetry_of(body) == "spherical top";
+  const bool sphere = lie::symmetry_of(body) == "I1 = I2 = I3";
   auto asked = systems_asked(o, split, sphere);
 
   // Resume: systems already in the state file keep their starts and roots.
@@ -172,12 +173,18 @@ int run_sixth(const sixth_options& o) {
     try {
       x = solver::polished_root(system, r.x, static_cast<int>(digits));
     } catch (const std::runtime_error& e) {
+      const double ratio = solver::jacobian_condition_ratio(system, r.x);
+      long double smallest = std::numeric_limits<long double>::infinity();
+      for (long double v : r.x) smallest = std::min(smallest, std::abs(v));
       table_lines << "  " << r.word << ":" << r.permutation << "  ‖H_R7‖ = " << scientific(r.remainder7)
-                  << "  not polished: " << e.what() << "\n";
+                  << "  not polished: " << e.what() << "; Jacobian σmin/σmax = " << scientific(ratio, 2)
+                  << ", smallest |free coefficient| = " << scientific(static_cast<double>(smallest), 2) << "\n";
       tables.push_back({{"word", r.word}, {"permutation", r.permutation}, {"remainder7", r.remainder7}, {"polished", false},
-                        {"why", e.what()}});
+                        {"why", e.what()}, {"jacobian_condition_ratio", ratio},
+                        {"smallest_free_coefficient", static_cast<double>(smallest)}});
       continue;
     }
+    const double jacobian_ratio = solver::jacobian_condition_ratio(system, r.x);
     const double residual = cln::double_approx(solver::sixth_order_residual(system, x, static_cast<int>(digits)));
     ++written;
     const int label = ++labels[r.word + ":" + r.permutation];
@@ -192,10 +199,10 @@ int run_sixth(const sixth_options& o) {
     }
     table_lines << "  " << name << "  ‖H_R7‖ = " << scientific(r.remainder7) << "  ‖H_R7‖·C^6 = " << scientific(r.remainder7_at_equal_cost())
                 << "  C = " << r.cost << "  max|c| = " << scientific(r.max_coefficient, 2) << "  hits " << r.hits
-                << "  residual " << scientific(residual, 2) << (file.empty() ? "" : "  " + file) << "\n";
+                << "  residual " << scientific(residual, 2) << "  σmin/σmax " << scientific(jacobian_ratio, 2) << (file.empty() ? "" : "  " + file) << "\n";
     tables.push_back({{"name", name}, {"word", r.word}, {"permutation", r.permutation}, {"remainder7", r.remainder7},
                       {"remainder7_at_equal_cost", r.remainder7_at_equal_cost()}, {"cost", r.cost},
-                      {"max_coefficient", r.max_coefficient}, {"hits", r.hits}, {"residual", residual}, {"polished", true},
+                      {"max_coefficient", r.max_coefficient}, {"hits", r.hits}, {"residual", residual}, {"jacobian_condition_ratio", jacobian_ratio}, {"polished", true},
                       {"file", file}});
   }
   const double cpu = cpu_seconds() - cpu0;
