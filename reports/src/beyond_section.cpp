@@ -219,8 +219,10 @@ void search_text(section_state& w, const std::vector<solver::scanned_system>& sy
      << h.hit_once << " | " << h.hit_twice << " | " << h.hit_more << " | " << fixed(h.unseen, 2) << " | " << fixed(h.chao1, 0)
      << " |\n\n"
      << "Good–Turing's f1/N estimates the probability that the next converged start finds a root not yet seen; "
-        "Chao1 = S + f1²/(2 f2) estimates how many roots the starting box reaches. While most roots are hit once, "
-        "both say that the roots found are a small part of those that exist.\n\n";
+        "Chao1 = S + f1²/(2 f2) estimates how many roots the starting box reaches. "
+     << (2 * h.hit_once > h.roots ? "Most roots were hit once: the roots found are a small part of those that exist."
+                                  : "Most roots were hit more than once: the search is near saturation in these systems.")
+     << "\n\n";
   if (!skipped.empty()) {
     md << "Roots not polished (singular Jacobian: not isolated): ";
     for (std::size_t i = 0; i < skipped.size(); ++i) md << (i ? "; " : "") << "`" << skipped[i] << "`";
