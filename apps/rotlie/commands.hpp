@@ -105,3 +105,13 @@ struct bch_options {
 int run_bch(const bch_options& options);
 
 }  // namespace rotlie::app
+
+namespace rotlie::app {
+
+struct sixth_options {
+  std::string inertia, split = "ABC", words, starts = "40", best = "5", digits = "45", out;
+  bool all = false, json = false, references = false;
+};
+int run_sixth(const sixth_options& options);
+
+}  // namespace rotlie::app

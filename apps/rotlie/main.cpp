@@ -60,7 +60,7 @@ std::string reworded(const CLI::ParseError& e, const CLI::App* sub) {
     return flag + " takes no value" + (equals == std::string::npos ? "" : ", got '" + what.substr(equals + 3) + "'");
   }
   if (dynamic_cast<const CLI::RequiredError*>(&e) && what.find("subcommand") != std::string::npos)
-    return "a subcommand is required (dims, stages, remainder, solve, integrate, order, exact, md, map, best, bch or report; see rotlie --help)";
+    return "a subcommand is required (dims, stages, remainder, solve, integrate, order, exact, md, map, best, bch, sixth or report; see rotlie --help)";
   return what;
 }
 
@@ -188,7 +188,7 @@ int main(int argc, char** argv) {
   report_cmd->add_option("--out", report.out, "Output folder (default: rotlie-report)");
   report_cmd->add_flag("--quick", report.quick, "Smaller sweeps, for a fast look");
   report_cmd->add_option("--sections", report.sections,
-                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs, liquid-water, maps, two-parameter, audit");
+                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs, liquid-water, maps, beyond, two-parameter, audit");
   report_cmd->add_flag("--full", report.full,
                        "The papers' full statistics: liquid water's nine 1-ps runs per point (about 30 min), maps over all bodies at "
                        "the paper's grid (--grid 200; hours for the P family)");
@@ -218,6 +218,19 @@ int main(int argc, char** argv) {
   bch_cmd->add_option("--degree", bch.degree, "Highest degree (1 to 20; 1 to 14 for XYZ)")->required();
   bch_cmd->add_option("--threads", bch.threads, "Worker threads (1 to 64, default 1)");
   bch_cmd->add_flag("--json", bch.json, "Machine-readable output on stdout");
+
+  sixth_options sixth;
+  auto* sixth_cmd = app.add_subcommand("sixth", "Dedicated 6th-order schemes: scan 21-stage palindromes, rank by ||H_R7||, write tables");
+  sixth_cmd->add_option("--inertia", sixth.inertia, "I1,I2,I3 as exact numbers, or water, sphere");
+  sixth_cmd->add_option("--split", sixth.split, "ABC (21 stages, default) or RS (19 stages)");
+  sixth_cmd->add_option("--words", sixth.words, "Comma-separated palindromes, WORD or WORD:PERM");
+  sixth_cmd->add_flag("--all", sixth.all, "Every palindrome in every permutation (ABC only for the spherical top)");
+  sixth_cmd->add_option("--starts", sixth.starts, "Random starts per system (default 40; a resumed scan continues to it)");
+  sixth_cmd->add_option("--best", sixth.best, "Roots polished and written, best ||H_R7|| first (default 5)");
+  sixth_cmd->add_option("--digits", sixth.digits, "Digits of the written tables (40 to 200, default 45)");
+  sixth_cmd->add_option("--out", sixth.out, "Folder for the resumable scan state and the scheme tables");
+  sixth_cmd->add_flag("--references", sixth.references, "List the general 6th-order reference compositions");
+  sixth_cmd->add_flag("--json", sixth.json, "Machine-readable output on stdout");
 
   // CLI11 would only say "a subcommand is required" for a mistyped one: name it instead.
   std::string names;
@@ -279,6 +292,10 @@ int main(int argc, char** argv) {
     if (*map_cmd) return finished(run_map(map));  // checks its folder itself (on rank 0 only under MPI)
     if (*best_cmd) return finished(run_best(best));
     if (*bch_cmd) return finished(run_bch(bch));
+    if (*sixth_cmd) {
+      if (!sixth.out.empty()) check_output_folder(sixth.out, "--out");
+      return finished(run_sixth(sixth));
+    }
   } catch (const usage_error& e) {
     return fail(e.what(), exit_usage);
   } catch (const std::filesystem::filesystem_error& e) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <tuple>
 
 namespace rotlie::schemes {
 namespace {
@@ -109,6 +110,40 @@ std::vector<quad> mclachlan_s5() {  // x1 y1 x2 y2 x3 y3 x3 y2 x2 y1 x1
   return mirror({x1, quad(2) / 5, x2, quad(-1) / 10, x3, quad(2) / 5}, true);
 }
 
+// 6th-order symmetric compositions of a symmetric 2nd-order step, γ1 … γs (outermost first, palindromic).
+// Yoshida (1990) eq. (5.4)-(5.5): the triple jump applied twice, 9 steps, w = 1/(2 − 2^{1/(2k+1)}).
+std::vector<quad> yoshida_triple_jump6() {
+  const quad w4 = 1 / (2 - cbrt_quad(2)), w6 = 1 / (2 - boost::multiprecision::pow(quad(2), quad(1) / 5));
+  const std::vector<quad> inner{w4, 1 - 2 * w4, w4}, outer{w6, 1 - 2 * w6, w6};
+  std::vector<quad> g;
+  for (const quad& o : outer)
+    for (const quad& i : inner) g.push_back(o * i);
+  return g;
+}
+// Yoshida (1990) Table 1, solution A: w3, w2, w1 outermost first, w0 = 1 − 2(w1 + w2 + w3) in the middle
+// (20 digits as reprinted in McLachlan & Quispel (2002), Acta Numerica, Table of composition methods).
+std::vector<quad> yoshida_solution_a() {
+  const quad w3("0.78451361047755726382"), w2("0.23557321335935813368"), w1("-1.17767998417887100695");
+  return mirror({w3, w2, w1, 1 - 2 * (w1 + w2 + w3)}, true);
+}
+// Kahan & Li (1997) s9odr6a: γ1 … γ4 to 20 digits, γ5 = 1 − 2(γ1 + … + γ4) in the middle.
+std::vector<quad> kahan_li_s9odr6a() {
+  const quad g1("0.39216144400731413928"), g2("0.33259913678935943860"), g3("-0.70624617255763935981"),
+      g4("0.082213596293550800230");
+  return mirror({g1, g2, g3, g4, 1 - 2 * (g1 + g2 + g3 + g4)}, true);
+}
+// Blanes & Moan (2002), the 6th-order symmetric PRK with 10 stages (S10): b1 a1 b2 a2 … b5 a5 b6 a5 … a1 b1,
+// the published 15 digits; a5 = 1/2 − (a1 + … + a4) and b6 = 1 − 2(b1 + … + b5) so that each part sums to 1.
+std::vector<quad> blanes_moan_s10() {
+  const std::vector<quad> a{quad("0.148816447901042"), quad("-0.132385865767784"), quad("0.067307604692185"),
+                            quad("0.432666402578175")};
+  const std::vector<quad> b{quad("0.0502627644003922"), quad("0.413514300428344"), quad("0.0450798897943977"),
+                            quad("-0.188054853819569"), quad("0.541960678450780")};
+  const quad a5 = quad(1) / 2 - (a[0] + a[1] + a[2] + a[3]);
+  const quad b6 = 1 - 2 * (b[0] + b[1] + b[2] + b[3] + b[4]);
+  return mirror({b[0], a[0], b[1], a[1], b[2], a[2], b[3], a[3], b[4], a5, b6}, true);
+}
+
 // van Zon & Schofield eq. (8), the PEFRL scheme of Omelyan, Mryglod & Folk (2002) with the kicks
 // (V) on ξ, χ, 1 − 2(χ + ξ) and the free flights (T) on (1 − 2λ)/2, λ. The three printed 16-digit
 // decimals are taken as exact; h4 = 1/2 − h2 as printed, and h5 = 1 − 2(h1 + h3), the corrected
@@ -141,17 +176,38 @@ scheme_table build(const std::string& name) {
       return make(name, split::rs, 4, word, c, ss_source + " (" + suffix + ")");
     }
   }
-  const std::vector<std::pair<std::string, std::vector<quad> (*)()>> s_type = {{"S4-McLachlan", mclachlan_s4},
-                                                                               {"S5-McLachlan", mclachlan_s5}};
-  for (const auto& [suffix, coefficients] : s_type) {
-    const auto x = coefficients();
-    if (name == "RS4-" + suffix) {
-      for (std::size_t i = 0; i < x.size(); ++i) word += i % 2 == 0 ? 'R' : 'S';  // R outer (REFERENCE.md §1.4)
-      return make(name, split::rs, 4, word, x, "McLachlan (1995) type S");
+  const std::vector<std::pair<std::string, std::vector<quad> (*)()>> ss6 = {
+      {"SS9-Yoshida", yoshida_triple_jump6}, {"SS7-Yoshida", yoshida_solution_a}, {"SS9-KahanLi", kahan_li_s9odr6a}};
+  const std::string ss6_source = "LV eq. (13) composition of ABCBA / RSR";
+  const std::vector<std::pair<std::string, std::string>> ss6_cited = {
+      {"SS9-Yoshida", "Yoshida (1990) eqs. (5.4)-(5.5), triple jump of triple jumps"},
+      {"SS7-Yoshida", "Yoshida (1990) Table 1 solution A"},
+      {"SS9-KahanLi", "Kahan & Li (1997) s9odr6a"}};
+  for (std::size_t k = 0; k < ss6.size(); ++k) {
+    const auto& [suffix, gammas] = ss6[k];
+    if (name == "ABCBA6-" + suffix) {
+      compose_abcba(gammas(), word, c);
+      return make(name, split::abc, 6, word, c, ss6_source + " (" + ss6_cited[k].second + ")");
     }
-    if (name == "ABC4-" + suffix) {
+    if (name == "RSR6-" + suffix) {
+      compose_xyx(gammas(), 'R', 'S', word, c);
+      return make(name, split::rs, 6, word, c, ss6_source + " (" + ss6_cited[k].second + ")");
+    }
+  }
+  const std::vector<std::tuple<std::string, std::vector<quad> (*)(), int, std::string>> s_type = {
+      {"S4-McLachlan", mclachlan_s4, 4, "McLachlan (1995) type S"},
+      {"S5-McLachlan", mclachlan_s5, 4, "McLachlan (1995) type S"},
+      {"S10-BlanesMoan", blanes_moan_s10, 6, "Blanes & Moan (2002) S10, order 6"}};
+  for (const auto& [suffix, coefficients, order, cited] : s_type) {
+    const auto x = coefficients();
+    const std::string prefix = order == 6 ? "6-" : "4-";
+    if (name == "RS" + prefix + suffix) {
+      for (std::size_t i = 0; i < x.size(); ++i) word += i % 2 == 0 ? 'R' : 'S';  // R outer (REFERENCE.md §1.4)
+      return make(name, split::rs, order, word, x, cited);
+    }
+    if (name == "ABC" + prefix + suffix) {
       compose_adjoint(x, word, c);
-      return make(name, split::abc, 4, word, c, "McLachlan (1995) type S, adjoint composition phi = ABC, phi* = CBA");
+      return make(name, split::abc, order, word, c, cited + ", adjoint composition phi = ABC, phi* = CBA");
     }
   }
   throw std::logic_error("unlisted reference scheme " + name);
@@ -164,6 +220,13 @@ const std::vector<std::string>& reference_scheme_names() {
       "ABCBA2",           "RSR2",           "ABCBA4-SS3-Yoshida", "RSR4-SS3-Yoshida",
       "ABCBA4-SS5-Suzuki", "RSR4-SS5-Suzuki", "ABCBA4-SS5-McLachlan", "RSR4-SS5-McLachlan",
       "ABC4-S4-McLachlan", "RS4-S4-McLachlan", "ABC4-S5-McLachlan",  "RS4-S5-McLachlan"};
+  return names;
+}
+
+const std::vector<std::string>& reference_sixth_order_scheme_names() {
+  static const std::vector<std::string> names = {
+      "ABCBA6-SS9-Yoshida", "RSR6-SS9-Yoshida", "ABCBA6-SS7-Yoshida",  "RSR6-SS7-Yoshida",
+      "ABCBA6-SS9-KahanLi", "RSR6-SS9-KahanLi", "ABC6-S10-BlanesMoan", "RS6-S10-BlanesMoan"};
   return names;
 }
 
@@ -192,7 +255,8 @@ std::optional<scheme_table> reference_scheme(std::string_view full) {
   const std::string name(full.substr(0, full.find(':')));
   const auto& names = reference_scheme_names();
   const auto& tv_names = reference_tv_scheme_names();
-  if (std::find(names.begin(), names.end(), name) == names.end() &&
+  const auto& sixth = reference_sixth_order_scheme_names();
+  if (std::find(names.begin(), names.end(), name) == names.end() && std::find(sixth.begin(), sixth.end(), name) == sixth.end() &&
       std::find(tv_names.begin(), tv_names.end(), name) == tv_names.end())
     return std::nullopt;
   scheme_table t = build(name);

@@ -4,6 +4,8 @@
 #include <cln/float_io.h>
 #include <cln/real.h>
 
+#include <Eigen/SVD>
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -205,6 +207,7 @@ search_result newton_search(const sixth_order_system& s, const search_options& o
   std::mt19937_64 rng(o.seed);
   std::uniform_real_distribution<double> start(-o.box, o.box);
   search_result out;
+  for (long skipped = 0; skipped < static_cast<long>(o.first_start) * static_cast<long>(n); ++skipped) (void)start(rng);
   for (int trial = 0; trial < o.starts; ++trial) {
     ++out.starts;
     std::vector<double> x(n);
@@ -312,6 +315,19 @@ std::vector<cln::cl_RA> polished_root(const sixth_order_system& s, const std::ve
     out.push_back(*written);
   }
   return out;
+}
+
+double jacobian_condition_ratio(const sixth_order_system& s, const std::vector<long double>& x) {
+  const std::size_t n = x.size();
+  std::vector<long double> f, size, j;
+  evaluate(s.conditions, x, f, size, j);
+  Eigen::MatrixXd m(static_cast<Eigen::Index>(s.conditions.size()), static_cast<Eigen::Index>(n));
+  for (std::size_t i = 0; i < s.conditions.size(); ++i)
+    for (std::size_t k = 0; k < n; ++k)
+      m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = static_cast<double>(j[i * n + k] / std::max(size[i], 1e-300L));
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(m);
+  const auto& sigma = svd.singularValues();
+  return sigma(0) > 0 ? sigma(sigma.size() - 1) / sigma(0) : 0;
 }
 
 std::map<std::string, cln::cl_RA> all_coefficients(const sixth_order_system& s, const std::vector<cln::cl_RA>& x, int digits) {

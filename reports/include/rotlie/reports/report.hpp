@@ -65,6 +65,10 @@ report_section exact_flow_section(const report_options& options);
 /// Section "Comparison over all rigid bodies": LV section 5, Figs. 6–10, from the maps.
 report_section maps_section(const report_options& options);
 
+/// Section "Beyond the paper": dedicated 6th-order schemes for water against the general 6th-order
+/// compositions and the 4th-order champions.
+report_section beyond_section(const report_options& options);
+
 /// Section "Beyond the paper: two free parameters at order 4": the Q and QRS families for water.
 report_section two_parameter_section(const report_options& options);
 

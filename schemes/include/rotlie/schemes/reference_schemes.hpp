@@ -15,10 +15,16 @@ namespace rotlie::schemes {
 /// The free-rotation base names (ABC and RS tables): ABCBA2, RSR2, ABCBA4-SS3-Yoshida, …, RS4-S5-McLachlan.
 const std::vector<std::string>& reference_scheme_names();
 
+/// The general 6th-order compositions (symmetric compositions of ABCBA / RSR: Yoshida's triple jump of
+/// triple jumps and solution A, Kahan & Li's s9odr6a; Blanes & Moan's S10 for RS, and for ABC through
+/// the adjoint composition): ABCBA6-SS9-Yoshida, …, RS6-S10-BlanesMoan. Kept apart from the 4th-order
+/// list so that the LV figures stay the paper's selection.
+const std::vector<std::string>& reference_sixth_order_scheme_names();
+
 /// The TV base names (free flight T, kick V): Strang-TV, PEFRL-TV.
 const std::vector<std::string>& reference_tv_scheme_names();
 
-/// A reference scheme by name (either list), optionally with a permutation suffix
+/// A reference scheme by name (any list), optionally with a permutation suffix
 /// (RS4-S5-McLachlan:CBA); nullopt for an unknown name. Throws std::invalid_argument for an
 /// unknown permutation, and for any permutation of a TV table.
 std::optional<scheme_table> reference_scheme(std::string_view name);

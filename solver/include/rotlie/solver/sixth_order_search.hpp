@@ -47,6 +47,7 @@ struct search_options {
   double box = 1.0;            ///< starts uniform in [−box, box]^n
   std::uint64_t seed = 1;
   int max_iterations = 60;
+  int first_start = 0;         ///< skip this many starts of the seed's sequence (a resumed search)
 };
 
 struct newton_root {
@@ -66,6 +67,10 @@ search_result newton_search(const sixth_order_system& s, const search_options& o
 /// The root refined to `digits` + 25 digits (Newton in CLN long floats), then written with `digits`
 /// significant digits and read back exactly: the values a table prints.
 std::vector<cln::cl_RA> polished_root(const sixth_order_system& s, const std::vector<long double>& x, int digits);
+
+/// σ_min / σ_max of the Jacobian of the scaled independent conditions (each row divided by Σ|terms|) at
+/// x: near 0 where the root is not isolated (the solution set is a curve or more through it).
+double jacobian_condition_ratio(const sixth_order_system& s, const std::vector<long double>& x);
 
 /// max over every condition of H_R3, H_R5 and the first-order conditions of |value| / Σ|terms| at the
 /// free values x (exact rationals); the eliminated coefficients are their written `digits` decimals.
