@@ -25,7 +25,7 @@ struct scanned_root {
 struct scanned_system {
   std::string word, permutation;
   int starts = 0, converged = 0;
-  std::vector<scanned_root> roots;
+  std::vector<scanned_root> roots{};
   bool finished = false;  ///< the stopping rule was met before the budget
 };
 
