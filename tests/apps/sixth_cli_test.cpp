@@ -4,8 +4,7 @@
 #define BOOST_TEST_MODULE sixth_cli
 #include <boost/test/unit_test.hpp>
 
-#include <sys/wait.h>
-#include <unistd.h>
+#include "cli_support.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -15,31 +14,7 @@
 
 namespace fs = std::filesystem;
 
-namespace {
-
-struct run_result {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-const fs::path scratch = fs::temp_directory_path() / ("rotlie-sixth-cli-" + std::to_string(::getpid()));
-
-run_result run(const std::string& args) {
-  fs::create_directories(scratch);
-  const std::string cmd = std::string(ROTLIE_BINARY) + " " + args + " >" + (scratch / "out").string() + " 2>" +
-                          (scratch / "err").string() + " </dev/null";
-  const int raw = std::system(cmd.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), slurp(scratch / "out"), slurp(scratch / "err")};
-}
-
-}  // namespace
+using namespace rotlie::test_cli;
 
 BOOST_AUTO_TEST_CASE(bad_input_is_one_line_and_status_two) {
   for (const char* args : {"sixth", "sixth --inertia water", "sixth --inertia water --all --words ABABABACABCBACABABABA",
@@ -56,7 +31,7 @@ BOOST_AUTO_TEST_CASE(bad_input_is_one_line_and_status_two) {
 }
 
 BOOST_AUTO_TEST_CASE(a_search_resumes_and_writes_a_table_that_integrate_accepts) {
-  const fs::path out = scratch / "search";
+  const fs::path out = scratch() / "search";
   const std::string args = "sixth --inertia water --words ABABABACABCBACABABABA:BCA --starts 200 --best 1 --json --out " + out.string();
   const auto first = run(args);
   BOOST_TEST_REQUIRE(first.status == 0, first.err);
@@ -79,7 +54,7 @@ BOOST_AUTO_TEST_CASE(a_search_resumes_and_writes_a_table_that_integrate_accepts)
   BOOST_TEST(integrated.status == 0, integrated.err);
   const auto other = run("integrate --scheme " + file + " --inertia 1,2,3 --h 0.01");
   BOOST_TEST(other.status != 0);  // a table solved for water, refused for another body without --force
-  fs::remove_all(scratch);
+  fs::remove_all(scratch() / "search");
 }
 
 BOOST_AUTO_TEST_CASE(references_are_listed) {
@@ -88,5 +63,4 @@ BOOST_AUTO_TEST_CASE(references_are_listed) {
   const auto j = nlohmann::json::parse(r.out);
   BOOST_TEST(j.size() == 8u);
   for (const auto& e : j) BOOST_TEST(e["order"].get<int>() == 6);
-  fs::remove_all(scratch);
 }
