@@ -208,6 +208,7 @@ int main(int argc, char** argv) {
   auto* best_cmd = app.add_subcommand("best", "Best N, R and P integrators for one body, the best reference and the predicted gain");
   best_cmd->add_option("--inertia", best.inertia, "I1,I2,I3 as exact numbers, or water")->required();
   best_cmd->add_flag("--json", best.json, "Machine-readable output on stdout");
+  best_cmd->add_flag("--analytic-only", best.analytic_only, "Only the analytic ranking (no measured column)");
 
   bch_options bch;
   auto* bch_cmd = app.add_subcommand("bch", "A BCH-type series in the free Lie algebra, exact, in the Lyndon basis");
