@@ -90,6 +90,7 @@ int run_map(const map_options& options);
 struct best_options {
   std::string inertia;
   bool json = false;
+  bool analytic_only = false;  ///< skip the measured column
 };
 int run_best(const best_options& options);
 /// `rotlie md`: empty T and runs take the scene's defaults.

@@ -188,7 +188,7 @@ int main(int argc, char** argv) {
   report_cmd->add_option("--out", report.out, "Output folder (default: rotlie-report)");
   report_cmd->add_flag("--quick", report.quick, "Smaller sweeps, for a fast look");
   report_cmd->add_option("--sections", report.sections,
-                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs, liquid-water, maps, beyond, two-parameter, audit");
+                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs, liquid-water, maps, maps-truth, beyond, two-parameter, audit");
   report_cmd->add_flag("--full", report.full,
                        "The papers' full statistics: liquid water's nine 1-ps runs per point (about 30 min), maps over all bodies at "
                        "the paper's grid (--grid 200; hours for the P family)");
@@ -210,6 +210,7 @@ int main(int argc, char** argv) {
   auto* best_cmd = app.add_subcommand("best", "Best N, R and P integrators for one body, the best reference and the predicted gain");
   best_cmd->add_option("--inertia", best.inertia, "I1,I2,I3 as exact numbers, or water")->required();
   best_cmd->add_flag("--json", best.json, "Machine-readable output on stdout");
+  best_cmd->add_flag("--analytic-only", best.analytic_only, "Only the analytic ranking (no measured column)");
 
   bch_options bch;
   auto* bch_cmd = app.add_subcommand("bch", "A BCH-type series in the free Lie algebra, exact, in the Lyndon basis");

@@ -26,6 +26,7 @@ const std::vector<std::pair<std::string, section_function>>& all_sections() {
       {"vzs", vzs_section},
       {"liquid-water", liquid_water},
       {"maps", maps_section},
+      {"maps-truth", maps_truth_section},
       {"beyond", beyond_section},
       {"two-parameter", two_parameter_section},
       {"audit", audit_section}};

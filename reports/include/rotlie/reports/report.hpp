@@ -65,6 +65,10 @@ report_section exact_flow_section(const report_options& options);
 /// Section "Comparison over all rigid bodies": LV section 5, Figs. 6–10, from the maps.
 report_section maps_section(const report_options& options);
 
+/// Section "Do the maps tell the truth?": measured ratios against the maps' analytic ratio and a
+/// cheap predictor (issue 14, item 6); maps_dir/measured-ratios.csv is read when present.
+report_section maps_truth_section(const report_options& options);
+
 /// Section "Beyond the paper": dedicated 6th-order schemes for water against the general 6th-order
 /// compositions and the 4th-order champions.
 report_section beyond_section(const report_options& options);
