@@ -1,7 +1,10 @@
 // `rotlie bch`: a BCH-type series in the free Lie algebra, every Lyndon basis element with its exact
 // coefficient, as text or JSON.
+#include <functional>
 #include <iostream>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "arguments.hpp"
 #include "commands.hpp"
@@ -33,23 +36,37 @@ int run_bch(const bch_options& options) {
   const int threads = static_cast<int>(parse_integer_in_range(options.threads, "--threads", 1, 64));
   const auto s = bch::compute_free_series(*series, degree, {threads, false});
   const auto& basis = *s.basis;
-  std::string out;
-  if (options.json) {
-    out += "{\"series\":\"" + std::string(bch::series_name(*series)) + "\",\"degree\":" + std::to_string(degree) + ",\"terms\":[";
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      out += i ? ",\n" : "\n";
-      out += "{\"word\":\"" + basis.foliage(i) + "\",\"coefficient\":\"" + s.coefficient_text(i) + "\"}";
+  // Each term's line (the gcd of its fraction and the bracket) is formatted independently, so the
+  // terms are shared among the threads in contiguous ranges and written in order.
+  auto format_range = [&](std::size_t begin, std::size_t end, std::string& text) {
+    for (std::size_t i = begin; i < end; ++i) {
+      if (options.json) {
+        text += i ? ",\n" : "\n";
+        text += "{\"word\":\"" + basis.foliage(i) + "\",\"coefficient\":\"" + s.coefficient_text(i) + "\"}";
+      } else {
+        text += basis.foliage(i) + "\t";
+        append_bracket(basis, i, text);
+        text += "\t" + s.coefficient_text(i) + "\n";
+      }
     }
-    out += "\n]}\n";
-  } else {
+  };
+  std::vector<std::string> parts(static_cast<std::size_t>(threads));
+  {
+    std::vector<std::thread> workers;
+    const std::size_t n = s.size(), k = parts.size();
+    for (std::size_t t = 1; t < k; ++t)
+      workers.emplace_back(format_range, n * t / k, n * (t + 1) / k, std::ref(parts[t]));
+    format_range(0, n / k, parts[0]);
+    for (auto& w : workers) w.join();
+  }
+  std::string out;
+  if (options.json)
+    out += "{\"series\":\"" + std::string(bch::series_name(*series)) + "\",\"degree\":" + std::to_string(degree) + ",\"terms\":[";
+  else
     out += "# " + std::string(bch::series_name(*series)) + " to degree " + std::to_string(degree) +
            ": Lyndon word, basis element (standard bracketing), coefficient\n";
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      out += basis.foliage(i) + "\t";
-      append_bracket(basis, i, out);
-      out += "\t" + s.coefficient_text(i) + "\n";
-    }
-  }
+  for (const auto& part : parts) out += part;
+  if (options.json) out += "\n]}\n";
   std::cout << out;
   return 0;
 }

@@ -347,3 +347,24 @@ BOOST_AUTO_TEST_CASE(report_into_an_impossible_folder_fails_cleanly) {
   std::ofstream(blocker) << "x";
   expect_clean_error("report --quick --out " + (blocker / "sub").string(), "cannot create");
 }
+
+BOOST_AUTO_TEST_CASE(bch_prints_the_same_series_on_any_number_of_threads) {
+  // log(e^X e^Y) to degree 6: 23 Lyndon words, among them AB with 1/2 and AAB with 1/12 (BCH's classical terms)
+  const auto one = run("bch --series XY --degree 6 --json");
+  BOOST_REQUIRE_MESSAGE(one.status == 0, one.err);
+  const auto j = nlohmann::json::parse(one.out);
+  BOOST_TEST(j.at("series") == "XY");
+  BOOST_TEST(j.at("degree") == 6);
+  BOOST_TEST(j.at("terms").size() == 23u);
+  std::map<std::string, std::string> c;
+  for (const auto& t : j.at("terms")) c[t.at("word")] = t.at("coefficient");
+  BOOST_TEST(c["AB"] == "1/2");
+  BOOST_TEST(c["AAB"] == "1/12");
+  BOOST_TEST(c["ABB"] == "1/12");
+  BOOST_TEST(c["AABB"] == "1/24");
+  for (const char* threads : {"2", "3", "7"}) {
+    BOOST_TEST(run(std::string("bch --series XY --degree 6 --json --threads ") + threads).out == one.out, threads);
+    BOOST_TEST(run(std::string("bch --series XYZ --degree 5 --threads ") + threads).out == run("bch --series XYZ --degree 5").out,
+               threads);
+  }
+}
