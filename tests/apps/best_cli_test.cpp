@@ -5,6 +5,8 @@
 #define BOOST_TEST_MODULE best_cli
 #include <boost/test/unit_test.hpp>
 
+#include "cli_support.hpp"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,33 +19,9 @@
 
 namespace fs = std::filesystem;
 
+using namespace rotlie::test_cli;
+
 namespace {
-
-struct run_result {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-run_result run(const std::string& args) {
-  static const fs::path dir = fs::temp_directory_path() / ("rotlie-best-test-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path out = dir / "stdout", err = dir / "stderr";
-  const int raw = std::system((std::string(ROTLIE_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string() +
-                               " </dev/null")
-                                  .c_str());
-  run_result r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
 
 const nlohmann::json& water() {
   static const nlohmann::json j = [] {
