@@ -1,5 +1,7 @@
 #include "rotlie/solver/sixth_order_search.hpp"
 
+#include "dense_linear_solve.hpp"
+
 #include <cln/float.h>
 #include <cln/float_io.h>
 #include <cln/real.h>
@@ -66,44 +68,12 @@ void evaluate(const std::vector<compiled_polynomial>& f, const std::vector<T>& x
   }
 }
 
-double abs_of(double x) { return std::abs(x); }
-long double abs_of(long double x) { return std::abs(x); }
-bool is_zero(long double x) { return x == 0; }
-cln::cl_F abs_of(const cln::cl_F& x) { return cln::abs(x); }
-bool is_zero(double x) { return x == 0; }
-bool is_zero(const cln::cl_F& x) { return cln::zerop(x); }
+using detail::solve_linear;
 
 cln::cl_F power_of(const cln::cl_F& x, int e) {
   cln::cl_F p = x;
   for (int i = 1; i < e; ++i) p = p * x;
   return p;
-}
-
-// Solves J d = r in place (partial pivoting); false when J is numerically singular.
-template <class T>
-bool solve_linear(std::vector<T> a, std::vector<T>& r, std::size_t n) {
-  for (std::size_t c = 0; c < n; ++c) {
-    std::size_t pivot = c;
-    for (std::size_t i = c + 1; i < n; ++i)
-      if (abs_of(a[i * n + c]) > abs_of(a[pivot * n + c])) pivot = i;
-    if (is_zero(a[pivot * n + c])) return false;
-    if (pivot != c) {
-      for (std::size_t j = 0; j < n; ++j) std::swap(a[c * n + j], a[pivot * n + j]);
-      std::swap(r[c], r[pivot]);
-    }
-    for (std::size_t i = c + 1; i < n; ++i) {
-      const T f = a[i * n + c] / a[c * n + c];
-      if (is_zero(f)) continue;
-      for (std::size_t j = c; j < n; ++j) a[i * n + j] -= f * a[c * n + j];
-      r[i] -= f * r[c];
-    }
-  }
-  for (std::size_t c = n; c-- > 0;) {
-    T s = r[c];
-    for (std::size_t j = c + 1; j < n; ++j) s -= a[c * n + j] * r[j];
-    r[c] = s / a[c * n + c];
-  }
-  return true;
 }
 
 }  // namespace

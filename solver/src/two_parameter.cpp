@@ -1,5 +1,7 @@
 #include "rotlie/solver/two_parameter.hpp"
 
+#include "dense_linear_solve.hpp"
+
 #include <cln/float.h>
 #include <cln/real.h>
 
@@ -62,10 +64,8 @@ compiled<T> compile(const poly& p, int n, Convert convert) {
   return out;
 }
 
-long double abs_of(long double x) { return std::abs(x); }
-cln::cl_F abs_of(const cln::cl_F& x) { return cln::abs(x); }
-bool is_zero(long double x) { return x == 0; }
-bool is_zero(const cln::cl_F& x) { return cln::zerop(x); }
+using detail::abs_of;
+using detail::solve_linear;
 long double times(long double x, int e) { return x * e; }
 cln::cl_F times(const cln::cl_F& x, int e) { return x * cln::cl_float(e, x); }
 
@@ -125,32 +125,6 @@ std::vector<std::vector<T>> powers(const std::vector<T>& x, const T& one) {
   for (std::size_t k = 0; k < x.size(); ++k)
     for (std::size_t e = 1; e < 16; ++e) p[k][e] = p[k][e - 1] * x[k];
   return p;
-}
-
-// Solves a x = r in place (partial pivoting); false when a is singular.
-template <class T>
-bool solve_linear(std::vector<T> a, std::vector<T>& r, std::size_t n) {
-  for (std::size_t c = 0; c < n; ++c) {
-    std::size_t pivot = c;
-    for (std::size_t i = c + 1; i < n; ++i)
-      if (abs_of(a[i * n + c]) > abs_of(a[pivot * n + c])) pivot = i;
-    if (is_zero(a[pivot * n + c])) return false;
-    if (pivot != c) {
-      for (std::size_t j = 0; j < n; ++j) std::swap(a[c * n + j], a[pivot * n + j]);
-      std::swap(r[c], r[pivot]);
-    }
-    for (std::size_t i = c + 1; i < n; ++i) {
-      const T f = a[i * n + c] / a[c * n + c];
-      for (std::size_t j = c; j < n; ++j) a[i * n + j] = a[i * n + j] - f * a[c * n + j];
-      r[i] = r[i] - f * r[c];
-    }
-  }
-  for (std::size_t c = n; c-- > 0;) {
-    T s = r[c];
-    for (std::size_t j = c + 1; j < n; ++j) s = s - a[c * n + j] * r[j];
-    r[c] = s / a[c * n + c];
-  }
-  return true;
 }
 
 using real = long double;
