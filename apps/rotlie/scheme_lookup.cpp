@@ -109,6 +109,22 @@ bool looks_like_path(const std::string& name) {
 
 }  // namespace
 
+std::vector<std::string> permutations_option(const std::string& perm) {
+  if (perm == "all") return bch::permutation_names();
+  if (!bch::is_permutation_name(perm))
+    throw usage_error("--perm must be all or one of ABC, BCA, CAB, ACB, CBA, BAC, got '" + perm + "'");
+  return {perm};
+}
+
+lie::moments_of_inertia required_moments_option(const std::string& text) {
+  if (text.empty()) throw usage_error("--inertia is required (I1,I2,I3, water or sphere)");
+  try {
+    return lie::parse_moments(text);
+  } catch (const std::invalid_argument& e) {
+    throw usage_error(std::string("--inertia: ") + e.what());
+  }
+}
+
 lie::moments_of_inertia parse_moments_option(const std::string& text) {
   if (text.empty()) throw usage_error("--inertia must not be empty (I1,I2,I3, water or sphere)");
   // A value written as a number but beyond the exact parser's limits is out of range, not "not a number".

@@ -3,6 +3,7 @@
 // a dedicated solution SCHEME:PERM:LABEL solved for the body given (N2:BAC:2, P1:BAC:5), or the
 // path of a scheme-table file. This is where the symbolic and numeric sides meet, through text.
 #include <string>
+#include <vector>
 
 #include "rotlie/lie/rigid_body.hpp"
 #include "rotlie/models/small_matrix.hpp"
@@ -22,6 +23,12 @@ enum class foreign_table { refuse_unless_forced, refuse, use_with_warning };
 /// Throws usage_error for an unknown name, a bad label or a file that fails its checks.
 schemes::scheme_table lookup_scheme(const std::string& name, const lie::moments_of_inertia& body,
                                     foreign_table policy = foreign_table::refuse_unless_forced);
+
+/// --perm of the solving subcommands: all (every permutation, bch order) or one name.
+std::vector<std::string> permutations_option(const std::string& perm);
+
+/// --inertia of the solving subcommands: required, exact, validated (eq. 77).
+lie::moments_of_inertia required_moments_option(const std::string& text);
 
 /// --inertia as exact moments (water, sphere, I1,I2,I3), validated (eq. 77): any size, for the
 /// exact subcommands (remainder).

@@ -4,6 +4,7 @@
 
 #include "arguments.hpp"
 #include "commands.hpp"
+#include "scheme_lookup.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/solve_io.hpp"
 #include "rotlie/solver/scheme_table.hpp"
@@ -32,19 +33,8 @@ std::vector<std::string> schemes_of(const solve_options& o) {
 int run_solve(const solve_options& options) {
   if (is_two_parameter_family(options.family)) return run_solve_two_parameter(options);
   const auto schemes = schemes_of(options);
-  std::vector<std::string> perms = bch::permutation_names();
-  if (options.perm != "all") {
-    if (!bch::is_permutation_name(options.perm))
-      throw usage_error("--perm must be all or one of ABC, BCA, CAB, ACB, CBA, BAC, got '" + options.perm + "'");
-    perms = {options.perm};
-  }
-  if (options.inertia.empty()) throw usage_error("--inertia is required (I1,I2,I3, water or sphere)");
-  lie::moments_of_inertia body;
-  try {
-    body = lie::parse_moments(options.inertia);
-  } catch (const std::invalid_argument& e) {
-    throw usage_error(std::string("--inertia: ") + e.what());
-  }
+  const std::vector<std::string> perms = permutations_option(options.perm);
+  const lie::moments_of_inertia body = required_moments_option(options.inertia);
   const int digits = static_cast<int>(parse_integer_in_range(options.digits, "--digits", 10, max_digits));
 
   const auto result = solver::solve_dedicated(body, schemes, perms, digits);
