@@ -18,7 +18,7 @@ namespace {
 
 constexpr int default_grid = 5;  // 20 asymmetric grid bodies and water: about 2 CPU minutes
 constexpr int full_grid = 11;    // 110 and water: about 12 CPU minutes
-constexpr int quick_grid = 3;    // --quick: a look at the method, not a verdict
+constexpr int quick_grid = 2;    // --quick: a look at the method, not a verdict
 
 struct truth_row {
   double I1 = 0, I2 = 0;
