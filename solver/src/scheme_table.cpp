@@ -65,4 +65,27 @@ schemes::scheme_table scheme_table_of(const dedicated_solution& s, const lie::mo
   return schemes::parse_scheme_table(scheme_table_text(s, body, digits));
 }
 
+std::string searched_table_text(const bch::scheme_layout& layout, const lie::moments_of_inertia& body,
+                                const std::map<std::string, cln::cl_RA>& values, const searched_table_lines& lines) {
+  std::ostringstream out;
+  out << "format_version 1\n"
+      << "name " << lines.name << "\n"
+      << "scheme " << layout.word << "\n"
+      << "split " << (layout.split == bch::splitting::abc ? "ABC" : "RS") << "\n"
+      << "word " << layout.permuted << "\n"
+      << "permutation " << layout.permutation << "\n"
+      << "order " << lines.order << "\n"
+      << "symmetric true\n"
+      << "inertia " << lie::inertia_text(body) << "\n"
+      << "digits " << lines.digits << "\n"
+      << "residual " << lie::to_decimal(lines.residual, 3) << "\n"
+      << "#" << lines.comment << "\n"
+      << "analytic_remainder " << lines.analytic_remainder << "\n"
+      << "source " << lines.source << "\n"
+      << "stages " << layout.stages.size() << "\n";
+  for (const auto& st : layout.stages)
+    out << "stage " << st.letter << " " << st.coefficient << " " << lie::to_decimal(values.at(st.coefficient), lines.digits) << "\n";
+  return out.str();
+}
+
 }  // namespace rotlie::solver

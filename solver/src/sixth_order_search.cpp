@@ -17,6 +17,7 @@
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/bch/stage_hamiltonian.hpp"
 #include "rotlie/lie/exact_number.hpp"
+#include "rotlie/solver/scheme_table.hpp"
 #include "rotlie/lie/theorems.hpp"
 
 namespace rotlie::solver {
@@ -379,25 +380,12 @@ std::string sixth_order_table_text(const sixth_order_system& s, const std::vecto
   const auto values = all_coefficients(s, x, digits);
   std::map<std::string, double> numeric;
   for (const auto& [k, v] : values) numeric[k] = cln::double_approx(v);
-  std::ostringstream out;
-  out << "format_version 1\n"
-      << "name " << name << "\n"
-      << "scheme " << s.layout.word << "\n"
-      << "split " << (s.layout.split == bch::splitting::abc ? "ABC" : "RS") << "\n"
-      << "word " << s.layout.permuted << "\n"
-      << "permutation " << s.layout.permutation << "\n"
-      << "order 6\n"
-      << "symmetric true\n"
-      << "inertia " << lie::inertia_text(body) << "\n"
-      << "digits " << digits << "\n"
-      << "residual " << lie::to_decimal(sixth_order_residual(s, x, digits), 3) << "\n"
-      << "# analytic_remainder: the Euclidean norm of H_R7's coefficients, body scaled to I3 = 1\n"
-      << "analytic_remainder " << remainder7_norm(s.layout, body, numeric) << "\n"
-      << "source " << source << "\n"
-      << "stages " << s.layout.stages.size() << "\n";
-  for (const auto& st : s.layout.stages)
-    out << "stage " << st.letter << " " << st.coefficient << " " << lie::to_decimal(values.at(st.coefficient), digits) << "\n";
-  return out.str();
+  std::ostringstream remainder;
+  remainder << remainder7_norm(s.layout, body, numeric);
+  return searched_table_text(s.layout, body, values,
+                             {name, 6, digits, sixth_order_residual(s, x, digits),
+                              " analytic_remainder: the Euclidean norm of H_R7's coefficients, body scaled to I3 = 1",
+                              remainder.str(), source});
 }
 
 }  // namespace rotlie::solver

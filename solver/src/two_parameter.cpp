@@ -17,6 +17,7 @@
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 #include "rotlie/solver/sixth_order_search.hpp"
+#include "rotlie/solver/scheme_table.hpp"
 #include "rotlie/solver/table_certificate.hpp"
 
 namespace rotlie::solver {
@@ -476,26 +477,13 @@ certified_minimum polish_minimum(const two_parameter_system& s, const local_mini
 
 std::string two_parameter_table_text(const two_parameter_system& s, const certified_minimum& m, int digits,
                                      const lie::moments_of_inertia& body, const std::string& name, const std::string& source) {
-  std::ostringstream out;
-  out << "format_version 1\n"
-      << "name " << name << "\n"
-      << "scheme " << s.layout.word << "\n"
-      << "split " << (s.layout.split == bch::splitting::abc ? "ABC" : "RS") << "\n"
-      << "word " << s.layout.permuted << "\n"
-      << "permutation " << s.layout.permutation << "\n"
-      << "order 4\n"
-      << "symmetric true\n"
-      << "inertia " << lie::inertia_text(body) << "\n"
-      << "digits " << digits << "\n"
-      << "residual " << lie::to_decimal(m.order_residual, 3) << "\n"
-      << "# a local minimum of ||H_R5|| on the surface H_R3 = 0; projected gradient "
-      << lie::to_decimal(m.projected_gradient, 3) << " of its terms\n"
-      << "analytic_remainder " << m.remainder << "\n"
-      << "source " << source << "\n"
-      << "stages " << s.layout.stages.size() << "\n";
-  for (const auto& st : s.layout.stages)
-    out << "stage " << st.letter << " " << st.coefficient << " " << lie::to_decimal(m.values.at(st.coefficient), digits) << "\n";
-  return out.str();
+  std::ostringstream remainder;
+  remainder << m.remainder;
+  return searched_table_text(s.layout, body, m.values,
+                             {name, 4, digits, m.order_residual,
+                              " a local minimum of ||H_R5|| on the surface H_R3 = 0; projected gradient " +
+                                  lie::to_decimal(m.projected_gradient, 3) + " of its terms",
+                              remainder.str(), source});
 }
 
 std::vector<std::string> two_parameter_words(bch::splitting split) {

@@ -3,8 +3,10 @@
 // to the numeric side (docs/scheme_table_format.md). Plain text, one stage per line, every
 // coefficient as a decimal string of at least 40 significant digits, with provenance. The
 // `order` line states what the written decimals certify (table_certificate.hpp), never more.
+#include <map>
 #include <string>
 
+#include "rotlie/bch/scheme_word.hpp"
 #include "rotlie/lie/rigid_body.hpp"
 #include "rotlie/schemes/scheme_table.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
@@ -22,6 +24,22 @@ std::map<std::string, cln::cl_RA> written_coefficients(const dedicated_solution&
 /// `order` and `residual` lines are the certificate of the printed decimals; body is the body as
 /// given (any unit), written on the `inertia` line.
 std::string scheme_table_text(const dedicated_solution& s, const lie::moments_of_inertia& body, int digits);
+
+/// What a searched (not eliminated) solution's table states beside its stages.
+struct searched_table_lines {
+  std::string name;
+  int order = 4;
+  int digits = 45;
+  cln::cl_RA residual;            ///< the certificate of the written decimals, relative to the terms
+  std::string comment;            ///< one line before analytic_remainder (without the '#')
+  std::string analytic_remainder;  ///< as written
+  std::string source;
+};
+
+/// The table text of a symmetric word's solution found by a numerical search: the layout's stages
+/// with `values` (every stage coefficient) written to `lines.digits` significant digits.
+std::string searched_table_text(const bch::scheme_layout& layout, const lie::moments_of_inertia& body,
+                                const std::map<std::string, cln::cl_RA>& values, const searched_table_lines& lines);
 
 /// The solution as the numeric side sees it: its table text (40 digits by default), parsed.
 schemes::scheme_table scheme_table_of(const dedicated_solution& s, const lie::moments_of_inertia& body, int digits = 40);
