@@ -14,6 +14,7 @@
 #include "rotlie/reports/map_io.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
+#include "rotlie/reports/triangle_contour.hpp"
 #include "rotlie/solver/body_grid.hpp"
 #include "rotlie/solver/continued_map.hpp"
 
@@ -121,18 +122,6 @@ const std::array<const char*, 15> palette = {"#1f77b4", "#ff7f0e", "#2ca02c", "#
 
 double point_size(int K) { return std::clamp(60.0 / K, 0.25, 3.0); }
 
-chart triangle_chart(const std::string& title) {
-  chart c;
-  c.title = title;
-  c.x_label = "I1 / I3";
-  c.y_label = "I2 / I3";
-  c.log_x = c.log_y = false;
-  c.equal_axes = true;
-  c.x_range = std::pair(0.0, 1.0);
-  c.y_range = std::pair(0.48, 1.02);
-  return c;
-}
-
 std::string categories_chart(const report_options& options, const family_map& m, bool by_permutation,
                              const std::string& name, const std::string& caption, std::vector<std::filesystem::path>& files) {
   std::map<std::string, chart_series> by;
@@ -164,43 +153,12 @@ std::string categories_chart(const report_options& options, const family_map& m,
   return chart_markdown(f, name, caption);
 }
 
-// The level log10(ratio) = 0 by marching squares on the (s, t) grid, drawn in (I1, I2).
+// The level log10(ratio) = 0 over the grid, drawn in (I1, I2).
 chart_series ratio_one_contour(const family_map& m) {
   std::map<std::pair<int, int>, double> level;
   for (const auto& b : m.bodies)
     if (b.ratio && *b.ratio > 0) level[{b.i, b.j}] = std::log10(*b.ratio);
-  const auto body_at = [&](double s, double t) {
-    const double I2 = 0.5 + s / 2, I1 = (1 - I2) + t * (2 * I2 - 1);
-    return std::pair(I1, I2);
-  };
-  chart_series c;
-  c.name = "ratio = 1";
-  c.segments = true;
-  const double K = m.K;
-  for (const auto& [ij, v00] : level) {
-    const auto [i, j] = ij;
-    const auto a = level.find({i + 1, j}), b = level.find({i, j + 1}), d = level.find({i + 1, j + 1});
-    if (a == level.end() || b == level.end() || d == level.end()) continue;
-    // corners in order around the cell, with their (s, t)
-    const std::array<std::tuple<double, double, double>, 4> corner = {
-        std::tuple(i / K, j / K, v00), std::tuple((i + 1) / K, j / K, a->second),
-        std::tuple((i + 1) / K, (j + 1) / K, d->second), std::tuple(i / K, (j + 1) / K, b->second)};
-    std::vector<std::pair<double, double>> crossings;
-    for (int e = 0; e < 4; ++e) {
-      const auto [s0, t0, z0] = corner[static_cast<std::size_t>(e)];
-      const auto [s1, t1, z1] = corner[static_cast<std::size_t>((e + 1) % 4)];
-      if ((z0 < 0) == (z1 < 0)) continue;
-      const double f = z0 / (z0 - z1);
-      crossings.push_back(body_at(s0 + f * (s1 - s0), t0 + f * (t1 - t0)));
-    }
-    for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
-      c.x.push_back(crossings[k].first);
-      c.y.push_back(crossings[k].second);
-      c.x.push_back(crossings[k + 1].first);
-      c.y.push_back(crossings[k + 1].second);
-    }
-  }
-  return c;
+  return zero_contour(level, m.K, "ratio = 1");
 }
 
 std::string ratio_chart(const report_options& options, const family_map& m, const std::string& name,

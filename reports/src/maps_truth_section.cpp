@@ -11,6 +11,7 @@
 #include "rotlie/reports/maps_truth.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
+#include "rotlie/reports/triangle_contour.hpp"
 #include "rotlie/solver/body_grid.hpp"
 
 namespace rotlie::reports {
@@ -87,55 +88,19 @@ bool grid_indices(const truth_row& r, int K, int& i, int& j) {
   return std::abs(s * K - i) < 1e-9 && std::abs(t * K - j) < 1e-9;
 }
 
-// The level log10(measured ratio) = 0 by marching squares on the (s, t) grid, drawn in (I1, I2).
+// The level log10(measured ratio) = 0 over the grid, drawn in (I1, I2).
 chart_series ratio_one_contour(const std::vector<truth_row>& rows, int K) {
   std::map<std::pair<int, int>, double> level;
   for (const auto& r : rows) {
     int i = 0, j = 0;
     if (r.measured_h > 0 && grid_indices(r, K, i, j)) level[{i, j}] = std::log10(r.measured_h);
   }
-  const auto body_at = [](double s, double t) {
-    const double I2 = 0.5 + s / 2;
-    return std::pair((1 - I2) + t * (2 * I2 - 1), I2);
-  };
-  chart_series c;
-  c.name = "measured ratio = 1";
-  c.segments = true;
-  for (const auto& [ij, v00] : level) {
-    const auto [i, j] = ij;
-    const auto a = level.find({i + 1, j}), b = level.find({i, j + 1}), d = level.find({i + 1, j + 1});
-    if (a == level.end() || b == level.end() || d == level.end()) continue;
-    const double k = K;
-    const std::array<std::array<double, 3>, 4> corner = {{{i / k, j / k, v00},
-                                                          {(i + 1) / k, j / k, a->second},
-                                                          {(i + 1) / k, (j + 1) / k, d->second},
-                                                          {i / k, (j + 1) / k, b->second}}};
-    std::vector<std::pair<double, double>> crossings;
-    for (std::size_t e = 0; e < 4; ++e) {
-      const auto& p = corner[e];
-      const auto& q = corner[(e + 1) % 4];
-      if ((p[2] < 0) == (q[2] < 0)) continue;
-      const double f = p[2] / (p[2] - q[2]);
-      crossings.push_back(body_at(p[0] + f * (q[0] - p[0]), p[1] + f * (q[1] - p[1])));
-    }
-    for (std::size_t n = 0; n + 1 < crossings.size(); n += 2) {
-      c.x.insert(c.x.end(), {crossings[n].first, crossings[n + 1].first});
-      c.y.insert(c.y.end(), {crossings[n].second, crossings[n + 1].second});
-    }
-  }
-  return c;
+  return zero_contour(level, K, "measured ratio = 1");
 }
 
 std::string measured_map_chart(const report_options& options, const std::vector<truth_row>& rows,
                                const std::string& family, int K, std::vector<std::filesystem::path>& files) {
-  chart c;
-  c.title = "log10 measured ratio R_RS4S5 / R_" + family + " at equal h/C (best analytic " + family + ")";
-  c.x_label = "I1 / I3";
-  c.y_label = "I2 / I3";
-  c.log_x = c.log_y = false;
-  c.equal_axes = true;
-  c.x_range = std::pair(0.0, 1.0);
-  c.y_range = std::pair(0.48, 1.02);
+  chart c = triangle_chart("log10 measured ratio R_RS4S5 / R_" + family + " at equal h/C (best analytic " + family + ")");
   c.colour_label = "log10 measured ratio";
   chart_series s;
   s.name = "log10 measured ratio";
