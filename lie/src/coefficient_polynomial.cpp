@@ -3,6 +3,7 @@
 #include <cln/integer.h>
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 
 namespace rotlie::lie {
@@ -29,6 +30,12 @@ coefficient_polynomial coefficient_polynomial::unknown(int k) {
 coefficient_polynomial coefficient_polynomial::monomial(const exponents& e, const cln::cl_RA& c) {
   coefficient_polynomial p;
   if (!cln::zerop(c)) p.terms_.push_back({pack(e), c});
+  return p;
+}
+
+coefficient_polynomial coefficient_polynomial::from_terms(std::vector<term> terms) {
+  coefficient_polynomial p;
+  p.combine_sorted(std::move(terms));
   return p;
 }
 
@@ -198,6 +205,34 @@ coefficient_polynomial power(const coefficient_polynomial& p, int n) {
   for (; n > 0; n >>= 1, base = base * base)
     if (n & 1) r = r * base;
   return r;
+}
+
+bool divide_exactly(const coefficient_polynomial& p, const coefficient_polynomial& f, coefficient_polynomial& q) {
+  if (f.is_zero()) return false;
+  using term = coefficient_polynomial::term;
+  const term& lead = f.terms().back();  // the largest key
+  const auto divides = [](std::uint32_t a, std::uint32_t b) {  // every exponent of a ≤ that of b
+    for (int k = 0; k < coefficient_polynomial::max_unknowns; ++k)
+      if (exponent_of(a, k) > exponent_of(b, k)) return false;
+    return true;
+  };
+  std::map<std::uint32_t, cln::cl_RA> rest;
+  for (const auto& t : p.terms()) rest.emplace(t.key, t.c);
+  std::vector<term> quotient;
+  while (!rest.empty()) {
+    const auto top = std::prev(rest.end());
+    if (!divides(lead.key, top->first)) return false;
+    const std::uint32_t key = top->first - lead.key;
+    const cln::cl_RA c = top->second / lead.c;
+    quotient.push_back({key, c});
+    for (const auto& t : f.terms()) {
+      const auto [at, fresh] = rest.emplace(t.key + key, -c * t.c);
+      if (!fresh) at->second = at->second - c * t.c;
+      if (cln::zerop(at->second)) rest.erase(at);
+    }
+  }
+  q = coefficient_polynomial::from_terms(std::move(quotient));
+  return true;
 }
 
 }  // namespace rotlie::lie

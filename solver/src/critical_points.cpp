@@ -86,26 +86,23 @@ bool nonconstant_gcd(const coefficient_polynomial& a, const coefficient_polynomi
 // Removes from p every factor it shares with A: those vanish where z = −B/A is undefined.
 coefficient_polynomial strip_common_factors(const coefficient_polynomial& p, const coefficient_polynomial& A) {
   if (A.is_constant()) return p;
-  // A is small (degree 2 here): its irreducible factors, then exact division by each while it
-  // divides. No multivariate gcd of the large p is needed.
+  // A is small (degree 2 here): its irreducible factors by GiNaC, then exact division of the large
+  // p by each while it divides, on the packed terms (GiNaC's division of p took most of the solve).
   const auto& s = gcd_symbols();
-  GiNaC::ex pe = to_ex(p, s);
   const GiNaC::ex factored = GiNaC::factor(to_ex(A, s));
   GiNaC::exvector factors;
   if (GiNaC::is_a<GiNaC::mul>(factored))
     for (std::size_t i = 0; i < factored.nops(); ++i) factors.push_back(factored.op(i));
   else
     factors.push_back(factored);
-  bool divided = false;
+  coefficient_polynomial out = p;
   for (GiNaC::ex f : factors) {
     if (GiNaC::is_a<GiNaC::power>(f)) f = f.op(0);
     if (GiNaC::is_a<GiNaC::numeric>(f)) continue;
-    for (GiNaC::ex quotient; GiNaC::divide(pe, f, quotient);) {
-      pe = quotient.expand();
-      divided = true;
-    }
+    const coefficient_polynomial factor = from_ex(f, s);
+    for (coefficient_polynomial quotient; lie::divide_exactly(out, factor, quotient);) out = std::move(quotient);
   }
-  return divided ? from_ex(pe, s) : p;
+  return out;
 }
 
 // |p(x)| / Σ |terms| in floating point of digits + 30 digits: vanishes to the refinement width at a
@@ -190,6 +187,16 @@ reduced_lagrange_system reduce_lagrange_system(const coefficient_polynomial& f, 
   return r;
 }
 
+int count_critical_candidates(const coefficient_polynomial& f, const coefficient_polynomial& g1,
+                              const coefficient_polynomial& g2) {
+  const reduced_lagrange_system reduced = reduce_lagrange_system(f, g1, g2);
+  if (reduced.degenerate) return -1;
+  const rational_polynomial spurious = reduced.A.is_constant()
+                                           ? rational_polynomial()
+                                           : resultant_in(reduced.A, reduced.B, reduced.rest[1], reduced.rest[0]);
+  return count_real_eliminant_roots(reduced.reduced_other, reduced.reduced_det, reduced.rest[0], reduced.rest[1], spurious);
+}
+
 critical_result constrained_critical_points(const coefficient_polynomial& f, const coefficient_polynomial& g1,
                                             const coefficient_polynomial& g2, int digits, solve_method method) {
   critical_result result;
@@ -213,6 +220,7 @@ critical_result constrained_critical_points(const coefficient_polynomial& f, con
   const system_result planar = solve_two_equations(reduced_other, reduced_det, rest[0], rest[1], digits,
                                                    method, spurious);
   result.eliminant_degree = planar.resultant_degree_u;
+  if (!planar.degenerate) result.eliminant_real_roots = planar.real_roots_u;
   const auto check_start = clock::now();
   result.seconds_elimination = std::chrono::duration<double>(check_start - start).count() - planar.seconds_roots;
   result.seconds_roots = planar.seconds_roots;
@@ -249,8 +257,10 @@ critical_result constrained_critical_points(const coefficient_polynomial& f, con
   if (result.discarded > 0)
     result.note = std::to_string(result.discarded) + " root(s) of the reduced system discarded: the linear solve for x_" +
                   std::to_string(z) + " is undefined there";
+  // By the first unknown, ties (several solutions above one root, on flat bodies) by the next: the
+  // labels must not depend on the order the roots were found in.
   std::sort(result.points.begin(), result.points.end(),
-            [](const critical_point& x, const critical_point& y) { return x.values[0] < y.values[0]; });
+            [](const critical_point& x, const critical_point& y) { return x.values < y.values; });
   result.seconds_roots += std::chrono::duration<double>(clock::now() - check_start).count();
   return result;
 }

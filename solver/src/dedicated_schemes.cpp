@@ -114,6 +114,7 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
         report.degenerate = crit.degenerate;
         report.note = crit.note;
         report.eliminant_degree = crit.eliminant_degree;
+        report.eliminant_real_roots = crit.eliminant_real_roots;
         if (crit.eliminated >= 0) report.eliminated = layout.free_coefficients[static_cast<std::size_t>(crit.eliminated)];
         report.discarded = crit.discarded;
         if (crit.discarded > 0)

@@ -144,6 +144,15 @@ rational_polynomial reduce_known_multiple_factors(rational_polynomial r, const r
 
 }  // namespace
 
+int count_real_eliminant_roots(const coefficient_polynomial& given1, const coefficient_polynomial& given2, int u, int v,
+                               const rational_polynomial& multiple_factor) {
+  const coefficient_polynomial e1 = given1.primitive_integer(), e2 = given2.primitive_integer();
+  if (e1.is_zero() || e2.is_zero()) return -1;
+  const rational_polynomial ru = resultant_in(e1, e2, v, u);
+  if (ru.is_zero() || share_factor_in_u(e1, e2, u, v)) return -1;
+  return static_cast<int>(isolate(reduce_known_multiple_factors(ru, multiple_factor)).intervals.size());
+}
+
 system_result solve_two_equations(const coefficient_polynomial& given1, const coefficient_polynomial& given2, int u, int v,
                                   int digits, solve_method method, const rational_polynomial& multiple_factor) {
   if (digits < 10) throw std::invalid_argument("at least 10 digits");
@@ -167,6 +176,7 @@ system_result solve_two_equations(const coefficient_polynomial& given1, const co
   result.seconds_elimination = since(start);
   const auto roots_start = clock_type::now();
   const eliminant_roots in_u = isolate(reduce_known_multiple_factors(ru, multiple_factor));
+  result.real_roots_u = static_cast<int>(in_u.intervals.size());
   std::optional<std::vector<real_point>> points;
   std::vector<cln::cl_RA> multiple_roots;
   if (method == solve_method::automatic) points = back_substitute(e1, e2, u, v, in_u, digits, multiple_roots);

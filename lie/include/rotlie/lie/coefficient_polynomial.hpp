@@ -31,6 +31,9 @@ class coefficient_polynomial {
   static coefficient_polynomial unknown(int k);
   static coefficient_polynomial monomial(const exponents& e, const cln::cl_RA& c);
 
+  /// The sum of the terms, in any order (equal keys added).
+  static coefficient_polynomial from_terms(std::vector<term> terms);
+
   static exponents unpack(std::uint32_t key);
   static std::uint32_t pack(const exponents& e);
 
@@ -68,6 +71,10 @@ class coefficient_polynomial {
 };
 
 coefficient_polynomial power(const coefficient_polynomial& p, int n);
+
+/// p / f when f divides p exactly, else false (q untouched): division on the leading term, which
+/// leaves no remainder exactly when f | p because the packed key is a monomial order.
+bool divide_exactly(const coefficient_polynomial& p, const coefficient_polynomial& f, coefficient_polynomial& q);
 
 template <>
 struct ring_traits<coefficient_polynomial> {

@@ -37,6 +37,7 @@ struct system_report {
   bool degenerate = false;
   std::string note;
   int eliminant_degree = 0;  ///< degree of the univariate resultant whose real roots were isolated
+  int eliminant_real_roots = -1;  ///< R, P: its distinct real roots (count_critical_candidates); −1 degenerate
   std::string eliminated;    ///< R, P: the coefficient solved linearly from one condition
   int discarded = 0;         ///< R, P: roots of the reduced system where that linear solve is undefined
   int uncertified = 0;       ///< roots dropped because their written coefficients do not certify order 4

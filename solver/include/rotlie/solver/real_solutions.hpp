@@ -43,6 +43,7 @@ struct system_result {
   std::string note;         ///< why, when degenerate
   std::vector<real_point> points;  ///< sorted by u, then v
   int resultant_degree_u = 0;      ///< degree of Res_v(e1, e2)
+  int real_roots_u = 0;            ///< distinct real roots of it that were isolated (count_real_eliminant_roots)
   bool paired = false;             ///< every root paired (requested, or the fallback)
   int multiple_roots = 0;          ///< irrational real multiple roots of R, paired against Res_u
   double seconds_elimination = 0;  ///< common-factor check and resultant(s)
@@ -55,5 +56,11 @@ struct system_result {
 system_result solve_two_equations(const lie::coefficient_polynomial& e1, const lie::coefficient_polynomial& e2, int u,
                                   int v, int digits, solve_method method = solve_method::automatic,
                                   const rational_polynomial& multiple_factor = rational_polynomial());
+
+/// The number of distinct real roots of the eliminant that solve_two_equations isolates (the same
+/// reduction), without solving: −1 where it reports the system degenerate. Cheaper than a solve by
+/// the back-substitution, the pairing and the refinement.
+int count_real_eliminant_roots(const lie::coefficient_polynomial& e1, const lie::coefficient_polynomial& e2, int u, int v,
+                               const rational_polynomial& multiple_factor = rational_polynomial());
 
 }  // namespace rotlie::solver
