@@ -4,6 +4,7 @@
 //   map_bench FAMILY K ROWS...   (rows are the grid index i of s = i/K, 1 ≤ i ≤ K − 1)
 //   map_bench FAMILY K ROWS... --exact-every M   (also times the exact solver at every M-th body)
 //   map_bench FAMILY K ROWS... --out FILE        (also writes those rows as a map file, for map_check)
+//   map_bench FAMILY K ROWS... --screened [--per-permutation]   (the screened path, screened_map.hpp)
 #include <ctime>
 #include <fstream>
 #include <iostream>
@@ -15,6 +16,7 @@
 #include "rotlie/solver/body_map.hpp"
 #include "rotlie/solver/continued_map.hpp"
 #include "rotlie/solver/family_systems.hpp"
+#include "rotlie/solver/screened_map.hpp"
 
 namespace {
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
@@ -30,9 +32,12 @@ int main(int argc, char** argv) {
   std::vector<int> rows;
   int exact_every = 0;
   std::string out_file;
+  bool screened = false, per_permutation = false;
   for (int a = 3; a < argc; ++a) {
     if (std::string(argv[a]) == "--exact-every" && a + 1 < argc) exact_every = std::stoi(argv[++a]);
     else if (std::string(argv[a]) == "--out" && a + 1 < argc) out_file = argv[++a];
+    else if (std::string(argv[a]) == "--screened") screened = true;
+    else if (std::string(argv[a]) == "--per-permutation") per_permutation = true;
     else rows.push_back(std::stoi(argv[a]));
   }
   double t = cpu_seconds();
@@ -42,7 +47,7 @@ int main(int argc, char** argv) {
   std::ofstream out;
   if (!out_file.empty()) {
     out.open(out_file);
-    out << rotlie::reports::map_header(family, K, rows.size() * static_cast<std::size_t>(K), "fast").dump() << "\n";
+    out << rotlie::reports::map_header(family, K, rows.size() * static_cast<std::size_t>(K), screened ? "screened" : "fast").dump() << "\n";
   }
   rotlie::solver::continuation_counts counts;
   double fast = 0, exact = 0;
@@ -52,7 +57,10 @@ int main(int argc, char** argv) {
     for (int j = 0; j < K; ++j) row.push_back(rotlie::solver::grid_point(K, i, j));
     t = cpu_seconds();
     rotlie::solver::continuation_counts c;
-    const auto points = rotlie::solver::continued_map_points(row, family, &c);
+    rotlie::solver::screening_counts sc;
+    const auto points = screened ? rotlie::solver::screened_map_points(row, family, per_permutation, &sc)
+                                 : rotlie::solver::continued_map_points(row, family, &c);
+    if (screened) c.system_solves = sc.system_solves;
     if (out)
       for (std::size_t k = 0; k < row.size(); ++k) out << rotlie::reports::map_line(row[k], points[k]).dump() << "\n" << std::flush;
     const double dt = cpu_seconds() - t;
@@ -63,7 +71,11 @@ int main(int argc, char** argv) {
     counts.system_solves += c.system_solves;
     std::cout << "row i = " << i << ": " << row.size() << " bodies in " << dt << " s CPU, " << c.exact
               << " wholly by the exact solver, " << c.system_solves << " exact system solves of "
-              << row.size() * rotlie::solver::family_systems(family).size() << "\n" << std::flush;
+              << row.size() * rotlie::solver::family_systems(family).size();
+    if (screened)
+      std::cout << " (" << sc.confirmations << " bests completed, " << sc.counts << " by a count of real eliminant roots), "
+                << sc.dropped << " solutions dropped by chains, " << sc.checkpoints << " systems completed at checkpoints";
+    std::cout << "\n" << std::flush;
     if (exact_every > 0)
       for (std::size_t j = 0; j < row.size(); j += static_cast<std::size_t>(exact_every)) {
         t = cpu_seconds();

@@ -82,8 +82,8 @@ namespace rotlie::app {
 struct map_options {
   std::string family, grid, out;
   bool resume = false, json = false;
-  bool exact = false;  ///< every body by the exact solver (default for R and P)
-  bool fast = false;   ///< continuation along rows, confirmed by the exact solver (default for N, the only family checked)
+  bool exact = false;  ///< every body by the exact solver (default for R)
+  bool fast = false;   ///< continuation along rows (default for N and P, the families checked against the exact solver)
 };
 int run_map(const map_options& options);
 

@@ -202,8 +202,8 @@ int main(int argc, char** argv) {
   map_cmd->add_option("--out", map.out, "Folder of the map file map-<family>.jsonl (default rotlie-map; none with --json alone)");
   map_cmd->add_flag("--resume", map.resume, "Continue the map file in --out where a killed run stopped");
   map_cmd->add_flag("--json", map.json, "The body lines on stdout");
-  auto* map_exact = map_cmd->add_flag("--exact", map.exact, "Every body by the exact solver (the default for R and P; for N slower, the check of the default)");
-  map_cmd->add_flag("--fast", map.fast, "N only: continuation along each row, both ends and every doubtful chain by the exact solver (default)")
+  auto* map_exact = map_cmd->add_flag("--exact", map.exact, "Every body by the exact solver (the default for R; for N and P slower, the check of the default)");
+  map_cmd->add_flag("--fast", map.fast, "N and P: continuation along each row (default). N: both ends and every doubtful chain by the exact solver; P: both ends and each body's best by the exact solver")
       ->excludes(map_exact);
   map_cmd->footer("Under mpirun (mpirun -n 4 rotlie map ...) the bodies are shared among the processes; the file is the same.");
   best_options best;

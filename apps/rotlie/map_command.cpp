@@ -5,9 +5,10 @@
 // turn) and sends each line to rank 0, which writes the lines in the grid's order: the file of a run
 // on any number of processes, killed and resumed or not, is the file of one uninterrupted process.
 // A line is appended with one write and is whole or absent; a resume drops a torn last line.
-// By default (--fast) a row is computed as a whole by continuation (solver/continued_map.hpp), so a
-// resume recomputes a row it finds incomplete and writes only its missing lines: the result of a
-// body never depends on where a run stopped or on the number of processes.
+// By default (--fast) a row is computed as a whole, by continuation (N: solver/continued_map.hpp;
+// P: the screened path, solver/screened_map.hpp), so a resume recomputes a row it finds incomplete
+// and writes only its missing lines: the result of a body never depends on where a run stopped or
+// on the number of processes.
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -29,6 +30,7 @@
 #include "rotlie/solver/body_grid.hpp"
 #include "rotlie/solver/body_map.hpp"
 #include "rotlie/solver/continued_map.hpp"
+#include "rotlie/solver/screened_map.hpp"
 
 namespace rotlie::app {
 namespace {
@@ -41,17 +43,18 @@ constexpr const char* default_folder = "rotlie-map";
 // indices r K … r K + K − 1. Rows are dealt out to the ranks in turn.
 int owner_of_row(std::size_t row, int ranks) { return static_cast<int>(row % static_cast<std::size_t>(ranks)); }
 
-std::string method_name(bool exact) { return exact ? "exact" : "fast"; }
-
 // The fast path is the default where it has been checked against the exact solver at random
-// bodies with no disagreement: the N family. For R and P the chains still miss real solutions at
-// some bodies (a pair born and dying again between two exact bodies), so their maps are exact.
+// bodies with no disagreement: N (complete continuation) and P (the screened path, which confirms
+// each body's best by the exact solver). R is not checked: its map is exact (0.2 s per body).
 bool exact_method(const map_options& o) {
-  if (o.fast && o.family != "N")
-    throw usage_error("--fast: the fast path is checked against the exact solver for the N family only; the " + o.family +
-                      " map uses the exact solver (drop --fast)");
-  return o.exact || o.family != "N";
+  if (o.fast && o.family == "R")
+    throw usage_error("--fast: the fast path is checked against the exact solver for the N and P families only; the R "
+                      "map uses the exact solver (drop --fast)");
+  return o.exact || o.family == "R";
 }
+
+// The header's method: a resume continues a map of the same method only.
+std::string method_name(bool exact, const std::string& family) { return exact ? "exact" : family == "P" ? "screened" : "fast"; }
 
 std::string checked_family(const std::string& family) {
   if (family != "N" && family != "R" && family != "P") throw usage_error("--family must be N, R or P, got '" + family + "'");
@@ -98,9 +101,11 @@ existing_map read_existing(const fs::path& path, const std::string& family, int 
         throw usage_error(refusal + "holds the map of family " + j.value("family", "?") + " at --grid " +
                           std::to_string(j.value("grid", 0)) + ", not " + family + " at --grid " + std::to_string(K) +
                           "; it is left as it is");
-      if (j.value("method", "exact") != method)
-        throw usage_error(refusal + "was computed with --" + j.value("method", "exact") + ", not --" + method +
+      if (j.value("method", "exact") != method) {
+        const auto flag = [](const std::string& m) { return m == "exact" ? std::string("--exact") : std::string("--fast"); };
+        throw usage_error(refusal + "was computed with " + flag(j.value("method", "exact")) + ", not " + flag(method) +
                           "; it is left as it is");
+      }
       out.has_header = true;
     } else {
       const auto ij = j.is_discarded() ? std::nullopt : reports::map_line_indices(j, K);
@@ -176,7 +181,7 @@ std::vector<std::pair<std::size_t, std::string>> row_lines(const std::vector<sol
     try {
       const std::vector<solver::grid_body> row(bodies.begin() + static_cast<std::ptrdiff_t>(first),
                                                bodies.begin() + static_cast<std::ptrdiff_t>(first + count));
-      const auto points = solver::continued_map_points(row, family);
+      const auto points = family == "P" ? solver::screened_map_points(row, family) : solver::continued_map_points(row, family);
       for (std::size_t k = 0; k < count; ++k)
         if (done[first + k] == 0) out.emplace_back(first + k, reports::map_line(row[k], points[k]).dump());
       return out;
@@ -235,7 +240,7 @@ struct prepared_map {
 prepared_map prepare(const map_options& o) {
   prepared_map p;
   p.family = checked_family(o.family);
-  exact_method(o);  // refuses --fast for R and P before anything is written
+  exact_method(o);  // refuses --fast for R before anything is written
   p.K = checked_grid(o.grid);
   std::string folder = o.out;
   if (folder.empty() && !o.json) folder = default_folder;
@@ -249,7 +254,7 @@ prepared_map prepare(const map_options& o) {
   if (exists && !o.resume)
     throw usage_error("--out: " + reports::printable_path(p.path) +
                       " exists: continue it with --resume, or choose another folder; it is left as it is");
-  if (exists) p.existing = read_existing(p.path, p.family, p.K, method_name(exact_method(o)), p.bodies);
+  if (exists) p.existing = read_existing(p.path, p.family, p.K, method_name(exact_method(o), p.family), p.bodies);
   fs::create_directories(folder);
   return p;
 }
@@ -297,7 +302,7 @@ int run_rank0(const map_options& o, process_group& group) {
 
   std::optional<map_output> file;
   if (!p.path.empty())
-    file.emplace(p.path, p.existing, reports::map_header(p.family, p.K, p.bodies.size(), method_name(exact_method(o))).dump());
+    file.emplace(p.path, p.existing, reports::map_header(p.family, p.K, p.bodies.size(), method_name(exact_method(o), p.family)).dump());
   if (o.json)
     for (const auto& line : p.existing.lines) std::cout << line << "\n";
   std::vector<std::size_t> todo;

@@ -53,13 +53,15 @@ nlohmann::ordered_json map_line(const solver::grid_body& g, const solver::map_po
   nlohmann::ordered_json singular = nlohmann::ordered_json::array();
   for (const auto& s : p.singular) singular.push_back(s.scheme + ":" + s.permutation);
   j["singular"] = singular;
-  j["real_solutions"] = p.real_solutions;
+  // The screened path knows the solutions of the systems it confirmed only (screened_map.hpp).
+  j["real_solutions"] = p.complete ? nlohmann::ordered_json(p.real_solutions) : nlohmann::ordered_json();
   nlohmann::ordered_json perms = nlohmann::ordered_json::array();
   for (std::size_t k = 0; k < p.per_permutation.size(); ++k) {
     const auto& b = p.per_permutation[k];
     nlohmann::ordered_json e;
     e["perm"] = b.permutation;
-    e["best"] = b.best ? nlohmann::ordered_json(solver::scheme_table_name(*b.best)) : nlohmann::ordered_json();
+    e["best"] = b.best && b.confirmed ? nlohmann::ordered_json(solver::scheme_table_name(*b.best)) : nlohmann::ordered_json();
+    if (b.best && !b.confirmed) e["unconfirmed_best"] = b.best->scheme + ":" + b.best->permutation;  // label unknown
     e["remainder"] = b.best ? nlohmann::ordered_json(b.best->analytic_remainder) : nlohmann::ordered_json();
     e["reference_remainder"] = p.reference_remainders[k];
     perms.push_back(std::move(e));

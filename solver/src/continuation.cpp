@@ -53,25 +53,72 @@ jet evaluate_jet(const numeric_polynomial& p, const point3& x, bool hessian) {
   return out;
 }
 
+// The jets of every polynomial of a stacked set at x (out[j] for polynomial j): the powers and
+// derivative factors of each monomial are formed once and shared by all the polynomials.
+constexpr std::size_t max_stacked = 24;
+void evaluate_stacked(const stacked_polynomials& p, const point3& x, bool hessian, std::array<jet, max_stacked>& out) {
+  const int d = p.max_degree;
+  if (d >= max_power) throw std::invalid_argument("a condition of degree above 31 in one coefficient");
+  if (p.count > max_stacked) throw std::invalid_argument("more polynomials in one system than the stacked evaluation holds");
+  std::array<std::array<long double, max_power>, 3> power;  // no allocation: this is the inner loop
+  for (int k = 0; k < 3; ++k) {
+    power[k][0] = 1.0L;
+    for (int e = 1; e <= d; ++e) power[k][e] = power[k][e - 1] * x[k];
+  }
+  for (std::size_t j = 0; j < p.count; ++j) out[j] = jet{};
+  const long double* c = p.c.data();
+  for (const auto& e : p.monomials) {
+    const long double m0 = power[0][e[0]], m1 = power[1][e[1]], m2 = power[2][e[2]];
+    const long double f0 = e[0] >= 1 ? e[0] * power[0][e[0] - 1] : 0.0L;
+    const long double f1 = e[1] >= 1 ? e[1] * power[1][e[1] - 1] : 0.0L;
+    const long double f2 = e[2] >= 1 ? e[2] * power[2][e[2] - 1] : 0.0L;
+    const long double v = m0 * m1 * m2, g0 = f0 * m1 * m2, g1 = m0 * f1 * m2, g2 = m0 * m1 * f2;
+    long double h00 = 0, h11 = 0, h22 = 0, h01 = 0, h02 = 0, h12 = 0;
+    if (hessian) {
+      h00 = (e[0] >= 2 ? e[0] * (e[0] - 1) * power[0][e[0] - 2] : 0.0L) * m1 * m2;
+      h11 = m0 * (e[1] >= 2 ? e[1] * (e[1] - 1) * power[1][e[1] - 2] : 0.0L) * m2;
+      h22 = m0 * m1 * (e[2] >= 2 ? e[2] * (e[2] - 1) * power[2][e[2] - 2] : 0.0L);
+      h01 = f0 * f1 * m2;
+      h02 = f0 * m1 * f2;
+      h12 = m0 * f1 * f2;
+    }
+    for (std::size_t j = 0; j < p.count; ++j, ++c) {
+      const long double k = *c;
+      if (k == 0) continue;
+      jet& o = out[j];
+      o.value += k * v;
+      o.gradient[0] += k * g0;
+      o.gradient[1] += k * g1;
+      o.gradient[2] += k * g2;
+      if (!hessian) continue;
+      o.hessian[0][0] += k * h00;
+      o.hessian[1][1] += k * h11;
+      o.hessian[2][2] += k * h22;
+      o.hessian[0][1] += k * h01;
+      o.hessian[0][2] += k * h02;
+      o.hessian[1][2] += k * h12;
+    }
+  }
+  for (std::size_t j = 0; j < p.count; ++j) {
+    out[j].hessian[1][0] = out[j].hessian[0][1];
+    out[j].hessian[2][0] = out[j].hessian[0][2];
+    out[j].hessian[2][1] = out[j].hessian[1][2];
+  }
+}
+
 long double det3(const vec3& a, const vec3& b, const vec3& c) {
   return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
 }
 
-// The residual F(x) and Jacobian J(x) of the square system (2 × 2 for N, 3 × 3 for R and P).
-void system_at(const numeric_system& s, const point3& x, vec3& F, mat3& J) {
-  const bool lagrange = s.unknowns == 3;
-  const jet g1 = evaluate_jet(s.p1, x, lagrange), g2 = evaluate_jet(s.p2, x, lagrange);
+// The Lagrange system P1 = P2 = det[∇f; ∇P1; ∇P2] = 0 and its Jacobian from the jets of P1, P2 and
+// of the terms q of H_R5: f = ‖H_R5‖² = Σ q², ∇f = 2 Σ q ∇q, Hf = 2 Σ (∇q ∇qᵀ + q Hq).
+void lagrange_at(const jet& g1, const jet& g2, const jet* q, std::size_t terms, vec3& F, mat3& J) {
   F = {g1.value, g2.value, 0};
   J = {g1.gradient, g2.gradient, vec3{}};
-  if (!lagrange) {
-    J[2] = {0, 0, 1};
-    return;
-  }
-  // f = ‖H_R5‖² = Σ q², ∇f = 2 Σ q ∇q, Hf = 2 Σ (∇q ∇qᵀ + q Hq)
   vec3 gf{};
   mat3 hf{};
-  for (const auto& q : s.h5) {
-    const jet j = evaluate_jet(q, x, true);
+  for (std::size_t m = 0; m < terms; ++m) {
+    const jet& j = q[m];
     for (int a = 0; a < 3; ++a) {
       gf[a] += 2 * j.value * j.gradient[a];
       for (int b = 0; b < 3; ++b) hf[a][b] += 2 * (j.gradient[a] * j.gradient[b] + j.value * j.hessian[a][b]);
@@ -81,6 +128,28 @@ void system_at(const numeric_system& s, const point3& x, vec3& F, mat3& J) {
   for (int k = 0; k < 3; ++k)  // ∂_k det: one row differentiated at a time (Hessians are symmetric)
     J[2][k] = det3(hf[k], g1.gradient, g2.gradient) + det3(gf, g1.hessian[k], g2.gradient) +
               det3(gf, g1.gradient, g2.hessian[k]);
+}
+
+// The residual F(x) and Jacobian J(x) of the square system (2 × 2 for N, 3 × 3 for R and P).
+void system_at(const numeric_system& s, const point3& x, vec3& F, mat3& J) {
+  const bool lagrange = s.unknowns == 3;
+  if (lagrange && s.stacked.count >= 2) {
+    std::array<jet, max_stacked> j;
+    evaluate_stacked(s.stacked, x, true, j);
+    lagrange_at(j[0], j[1], j.data() + 2, s.stacked.count - 2, F, J);
+    return;
+  }
+  const jet g1 = evaluate_jet(s.p1, x, lagrange), g2 = evaluate_jet(s.p2, x, lagrange);
+  F = {g1.value, g2.value, 0};
+  J = {g1.gradient, g2.gradient, vec3{}};
+  if (!lagrange) {
+    J[2] = {0, 0, 1};
+    return;
+  }
+  if (s.h5.size() > max_stacked) throw std::invalid_argument("more terms of H_R5 than the Lagrange system holds");
+  std::array<jet, max_stacked> q;  // no allocation: this is the inner loop
+  for (std::size_t m = 0; m < s.h5.size(); ++m) q[m] = evaluate_jet(s.h5[m], x, true);
+  lagrange_at(g1, g2, q.data(), s.h5.size(), F, J);
 }
 
 // J⁻¹ F by Gauss–Jordan with partial pivoting on the row-equilibrated system, and the reciprocal

@@ -8,14 +8,13 @@
 #include <optional>
 #include <stdexcept>
 
+#include "continued_rows.hpp"
 #include "rotlie/solver/continuation.hpp"
 #include "rotlie/solver/family_systems.hpp"
 #include "rotlie/solver/resultant.hpp"
 
 namespace rotlie::solver {
-namespace {
-
-using body_point = std::array<long double, 2>;  ///< (w1, w2) = (1/I1, 1/I2) at I3 = 1
+namespace detail {
 
 body_point inverse_moments(const grid_body& g) {
   const auto unit = scaled_to_unit_I3(g.body);
@@ -25,20 +24,13 @@ body_point inverse_moments(const grid_body& g) {
 
 bool by_first_coefficient(const point3& a, const point3& b) { return a[0] < b[0]; }
 
-// One system at one body: its real solutions from the exact solver, or carried along a confirmed chain.
-struct system_state {
-  std::vector<point3> x;  ///< exact: sorted by x_0; carried: in the order of the chain's start
-  bool exact = false;
-  bool can_seed = false;  ///< not singular: a start for continuation
-  std::vector<dedicated_solution> solutions;  ///< exact only: the exact solver's, with their remainders
-  system_report report;                       ///< exact only
-};
-
 system_state solve_system_exactly(const body_system& sys, const grid_body& g) {
   const auto r = solve_dedicated(g.body, {sys.scheme}, {sys.permutation}, map_digits);
   system_state out;
   out.exact = true;
+  out.complete = true;
   out.report = r.systems.at(0);
+  out.count = out.report.eliminant_real_roots;
   // A singular system has no isolated solutions to carry. Roots the exact solver sets aside (a
   // reduced-system root where the linear solve fails, a root that does not certify order 4) are
   // not carried either: should one become a solution further on, the chain's exact end differs.
@@ -55,15 +47,14 @@ system_state solve_system_exactly(const body_system& sys, const grid_body& g) {
   return out;
 }
 
-// The solutions of one system carried from w_from to w_to along the segment between them in
-// (w1, w2): in one step, else in 2, 4, …, 64 equal steps (the first that holds at every step). The
-// first step starts from a linear extrapolation of the chain (`before`: the solutions one grid step
-// earlier) when there is one. nullopt when no subdivision holds: a real solution is born or dies, or
-// runs off, near this step; the exact solver decides there.
+
+// A chain step (continued_rows.hpp). Subdivision first: a step that fails in one piece may hold in
+// smaller ones. nullopt when no subdivision holds: a real solution is born or dies, or runs off,
+// near this step; the exact solver decides there.
 std::optional<std::vector<point3>> carry(const body_system& system, const std::vector<point3>& from,
-                                         const std::vector<point3>* before, body_point w_from, body_point w_to) {
-  constexpr int finest = 6;
-  for (int level = 0; level <= finest; ++level) {
+                                         const std::vector<point3>* before, body_point w_from, body_point w_to,
+                                         int finest_level) {
+  for (int level = 0; level <= finest_level; ++level) {
     const int steps = 1 << level;
     std::vector<point3> x = from, predicted;
     if (before && before->size() == from.size()) {
@@ -90,6 +81,12 @@ std::optional<std::vector<point3>> carry(const body_system& system, const std::v
   }
   return std::nullopt;
 }
+
+}  // namespace detail
+
+namespace {
+
+using namespace detail;
 
 // The carried solutions are the exact ones: as many, each within 1e-8.
 bool same_solutions(std::vector<point3> carried, const std::vector<point3>& exact) {
@@ -296,6 +293,10 @@ class system_row {
   continuation_counts* counts_ = nullptr;
 };
 
+}  // namespace
+
+namespace detail {
+
 // The map point of one body from the states of its systems, as solve_dedicated + summarize_family
 // build it: solutions in system order, each system's by label, then a stable sort by ‖H_R5‖.
 map_point assemble(const grid_body& g, body_point w, const std::string& family, const std::vector<body_system>& systems,
@@ -336,7 +337,7 @@ map_point assemble(const grid_body& g, body_point w, const std::string& family, 
   return summarize_family(g.body, family, result);
 }
 
-}  // namespace
+}  // namespace detail
 
 std::vector<map_point> continued_map_points(const std::vector<grid_body>& row, const std::string& family,
                                             continuation_counts* counts) {
@@ -344,6 +345,7 @@ std::vector<map_point> continued_map_points(const std::vector<grid_body>& row, c
     if (row[k].i != row[0].i || row[k].j != row[k - 1].j + 1)
       throw std::invalid_argument("continued_map_points needs consecutive bodies of one grid row");
   if (row.empty()) return {};
+  using namespace detail;
   const auto& systems = family_systems(family);
   std::vector<body_point> w;
   for (const auto& g : row) w.push_back(inverse_moments(g));

@@ -84,6 +84,18 @@ body_system interpolate_system(const std::string& scheme, const std::string& per
   s.p1 = interpolate(std::move(p1));
   s.p2 = interpolate(std::move(p2));
   for (auto& [m, q] : h5) s.h5.push_back(interpolate(std::move(q)));
+  std::map<std::array<int, 3>, std::size_t> row_of;
+  std::vector<const body_polynomial*> all{&s.p1, &s.p2};
+  for (const auto& q : s.h5) all.push_back(&q);
+  for (const auto* p : all) {
+    std::vector<std::size_t> rows;
+    for (const auto& t : p->terms) {
+      const auto [at, fresh] = row_of.try_emplace(t.x, s.monomials.size());
+      if (fresh) s.monomials.push_back(t.x);
+      rows.push_back(at->second);
+    }
+    s.rows.push_back(std::move(rows));
+  }
   return s;
 }
 
@@ -115,17 +127,23 @@ const std::vector<body_system>& family_systems(const std::string& family) {
 
 namespace {
 
+long double coefficient_at(const body_polynomial::term& t, const std::array<long double, n>& n1,
+                           const std::array<long double, n>& n2) {
+  long double c = 0;
+  for (int a = 0; a < n; ++a) {
+    long double inner = 0;
+    for (int b = 0; b < n; ++b) inner += t.approx[static_cast<std::size_t>(a * n + b)] * n2[b];
+    c += inner * n1[a];
+  }
+  return c;
+}
+
 numeric_polynomial evaluate(const body_polynomial& p, const std::array<long double, n>& n1,
                             const std::array<long double, n>& n2) {
   numeric_polynomial out;
   out.terms.reserve(p.terms.size());
   for (const auto& t : p.terms) {
-    long double c = 0;
-    for (int a = 0; a < n; ++a) {
-      long double inner = 0;
-      for (int b = 0; b < n; ++b) inner += t.approx[static_cast<std::size_t>(a * n + b)] * n2[b];
-      c += inner * n1[a];
-    }
+    const long double c = coefficient_at(t, n1, n2);
     if (c == 0) continue;
     out.terms.push_back({t.x, c});
     out.max_degree = std::max({out.max_degree, t.x[0], t.x[1], t.x[2]});
@@ -139,9 +157,34 @@ numeric_system evaluate_system(const body_system& system, long double w1, long d
   const auto n1 = newton_basis(w1), n2 = newton_basis(w2);
   numeric_system out;
   out.unknowns = system.unknowns;
-  out.p1 = evaluate(system.p1, n1, n2);
-  out.p2 = evaluate(system.p2, n1, n2);
-  for (const auto& q : system.h5) out.h5.push_back(evaluate(q, n1, n2));
+  if (system.rows.empty()) {
+    out.p1 = evaluate(system.p1, n1, n2);
+    out.p2 = evaluate(system.p2, n1, n2);
+    for (const auto& q : system.h5) out.h5.push_back(evaluate(q, n1, n2));
+    return out;
+  }
+  // Each coefficient once, into the stacked form; the polynomials one by one from it.
+  auto& st = out.stacked;
+  st.monomials = system.monomials;
+  st.count = system.rows.size();
+  st.c.assign(st.monomials.size() * st.count, 0.0L);
+  std::vector<const body_polynomial*> all{&system.p1, &system.p2};
+  for (const auto& q : system.h5) all.push_back(&q);
+  for (const auto& m : st.monomials) st.max_degree = std::max({st.max_degree, m[0], m[1], m[2]});
+  for (std::size_t j = 0; j < all.size(); ++j) {
+    numeric_polynomial p;
+    for (std::size_t k = 0; k < all[j]->terms.size(); ++k) {
+      const auto& t = all[j]->terms[k];
+      const long double c = coefficient_at(t, n1, n2);
+      st.c[system.rows[j][k] * st.count + j] = c;
+      if (c == 0) continue;
+      p.terms.push_back({t.x, c});
+      p.max_degree = std::max({p.max_degree, t.x[0], t.x[1], t.x[2]});
+    }
+    if (j == 0) out.p1 = std::move(p);
+    else if (j == 1) out.p2 = std::move(p);
+    else out.h5.push_back(std::move(p));
+  }
   return out;
 }
 

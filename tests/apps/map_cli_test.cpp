@@ -137,7 +137,7 @@ BOOST_AUTO_TEST_CASE(a_file_of_another_grid_or_family_is_refused_and_left_as_it_
   fs::copy_file(reference_map() / "map-N.jsonl", dir / "map-R.jsonl", fs::copy_options::overwrite_existing);
   for (const auto& args : {"map --family N --grid 9 --resume --out ", "map --family R --grid 8 --resume --out ",
                            "map --family N --grid 8 --out ", "map --family N --grid 8 --exact --resume --out ",
-                           "map --family P --grid 2 --fast --out "}) {
+                           "map --family R --grid 2 --fast --out "}) {
     const auto r = run(args + dir.string());
     BOOST_TEST_CONTEXT(args) {
       BOOST_TEST(r.status == 2);

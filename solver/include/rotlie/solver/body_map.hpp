@@ -31,6 +31,9 @@ int reference_cost(const std::string& name);
 struct permutation_best {
   std::string permutation;
   std::optional<dedicated_solution> best;  ///< absent when no system of the family has a solution here
+  /// Its system was solved by the exact solver at this body (always, but on the screened path):
+  /// else its label counts only the solutions continuation carried there.
+  bool confirmed = true;
 };
 
 struct singular_system {
@@ -47,6 +50,7 @@ struct map_point {
   std::optional<double> ratio;                    ///< R_M / R_best × (C_M / C)^4; absent without a best
   std::vector<singular_system> singular;          ///< systems without isolated solutions at this body
   int real_solutions = 0;                         ///< over all systems
+  bool complete = true;  ///< every real solution of every system known (real_solutions counts them); not on the screened path
 };
 
 /// Builds the map point from a solved family (solve_dedicated over every permutation of the family).

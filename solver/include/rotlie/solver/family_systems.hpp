@@ -38,6 +38,10 @@ struct body_system {
   int unknowns = 0;  ///< 2 (N) or 3 (R, P)
   body_polynomial p1, p2;
   std::vector<body_polynomial> h5;
+  /// Every monomial of p1, p2 and h5 once, and for each polynomial the row of each of its terms:
+  /// Newton's method evaluates all of them at one point, sharing the monomials (numeric_system::stacked).
+  std::vector<std::array<int, 3>> monomials;
+  std::vector<std::vector<std::size_t>> rows;  ///< [polynomial: p1, p2, h5…][term]
 };
 
 /// One system, interpolated from its 36 exact expansions.
@@ -57,10 +61,19 @@ struct numeric_polynomial {
   int max_degree = 0;
 };
 
+/// Several polynomials on one list of monomials: c[i * count + j] is polynomial j's coefficient of x^monomials[i].
+struct stacked_polynomials {
+  std::vector<std::array<int, 3>> monomials;
+  std::vector<long double> c;
+  std::size_t count = 0;
+  int max_degree = 0;
+};
+
 struct numeric_system {
   int unknowns = 0;
   numeric_polynomial p1, p2;
   std::vector<numeric_polynomial> h5;
+  stacked_polynomials stacked;  ///< p1, p2, h5… (empty for a system built by hand)
 };
 
 /// The system at the body (1/w1, 1/w2, 1), rounded to long double.
