@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include <cln/float.h>
+#include <cln/integer.h>
 
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/solver/continued_map.hpp"
@@ -263,10 +264,21 @@ BOOST_AUTO_TEST_CASE(the_candidate_count_is_the_exact_solvers) {
     const auto r = solver::solve_dedicated(g.body, {scheme}, {perm}, solver::map_digits);
     BOOST_TEST_CONTEXT(scheme << " " << perm) {
       BOOST_TEST(count == r.systems.at(0).eliminant_real_roots);
-      // Every real solution, and every discarded root of the reduced system, lies above its own real
-      // root here (no two share one at this body); real roots may also carry complex solutions only.
-      BOOST_TEST(count >= r.systems.at(0).real_solutions + r.systems.at(0).discarded);
+      // Every real solution lies above a real root of the eliminant in the first unknown left after
+      // the linear one is eliminated: there are at least as many roots as distinct such values.
+      const std::string eliminated = r.systems.at(0).eliminated;
+      std::vector<cl_RA> us;
+      for (const auto& sol : r.solutions) {
+        const auto first = std::find_if(sol.free.begin(), sol.free.end(), [&](const std::string& n) { return n != eliminated; });
+        BOOST_REQUIRE(first != sol.free.end());
+        for (const auto& [name, value] : sol.coefficients)
+          if (name == *first && std::none_of(us.begin(), us.end(), [&](const cl_RA& u) {
+                return cln::abs(u - value) <= cl_RA(1) / cln::expt_pos(cln::cl_I(10), 30) * (1 + cln::abs(value));
+              }))
+            us.push_back(value);
+      }
       BOOST_TEST(r.systems.at(0).real_solutions > 0);
+      BOOST_TEST(count >= static_cast<int>(us.size()));
     }
   }
 }
