@@ -309,9 +309,9 @@ std::string fast_path_check(const report_options& options, const std::vector<fam
     for (const auto& d : r.differences) differences.push_back(m.family + ": " + d);
   }
   md << "\nBodies drawn at random (seed 14) from each fast map; " << full_checks
-     << " per map with --full or a map file. The screened path (P) confirms each body's best by the exact solver, so "
-        "its best, label and remainder are the exact solver's wherever the screening found the right system; the "
-        "check tests that screening. Its per-permutation bests other than the best are labelled only where their system "
+     << " per map with --full or a map file. The screened path (P) makes each body's best complete (the exact solver, or a "
+        "complete state carried over with an unchanged count of real eliminant roots), so its best, label and remainder "
+        "are exact wherever the screening found the right system; the check tests that screening. Its per-permutation bests other than the best are labelled only where their system "
         "was confirmed too, and the count of real solutions is left out.\n\n";
   for (const auto& d : differences) md << "- " << d << "\n";
   if (!differences.empty()) md << "\n";
@@ -362,7 +362,7 @@ report_section maps_section(const report_options& options) {
   }
   md << "the paper's grid is --grid 200 (40,401 points). The default report computes coarse grids (N by continuation "
         "confirmed by the exact solver; P by the screened path: every system solved exactly at both ends of each row, "
-        "the best of each body confirmed by the exact solver); `rotlie report --full` computes --grid 200 here (about "
+        "the best of each body made complete); `rotlie report --full` computes --grid 200 here (about "
         "2 CPU hours for P, 2 minutes for N), and "
         "`--maps DIR` draws the files `map-N.jsonl`, `map-P.jsonl` of `rotlie map --out DIR` instead. Each body is "
         "placed at (I1, I2) of its image in the triangle; the map files are in this folder.\n\n";
