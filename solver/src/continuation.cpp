@@ -132,24 +132,16 @@ void lagrange_at(const jet& g1, const jet& g2, const jet* q, std::size_t terms, 
 
 // The residual F(x) and Jacobian J(x) of the square system (2 × 2 for N, 3 × 3 for R and P).
 void system_at(const numeric_system& s, const point3& x, vec3& F, mat3& J) {
-  const bool lagrange = s.unknowns == 3;
-  if (lagrange && s.stacked.count >= 2) {
-    std::array<jet, max_stacked> j;
+  if (s.unknowns == 3) {  // P1, P2 and H_R5's terms, stacked by evaluate_system
+    if (s.stacked.count < 2) throw std::invalid_argument("a Lagrange system without its stacked polynomials");
+    std::array<jet, max_stacked> j;  // no allocation: this is the inner loop
     evaluate_stacked(s.stacked, x, true, j);
     lagrange_at(j[0], j[1], j.data() + 2, s.stacked.count - 2, F, J);
     return;
   }
-  const jet g1 = evaluate_jet(s.p1, x, lagrange), g2 = evaluate_jet(s.p2, x, lagrange);
+  const jet g1 = evaluate_jet(s.p1, x, false), g2 = evaluate_jet(s.p2, x, false);
   F = {g1.value, g2.value, 0};
-  J = {g1.gradient, g2.gradient, vec3{}};
-  if (!lagrange) {
-    J[2] = {0, 0, 1};
-    return;
-  }
-  if (s.h5.size() > max_stacked) throw std::invalid_argument("more terms of H_R5 than the Lagrange system holds");
-  std::array<jet, max_stacked> q;  // no allocation: this is the inner loop
-  for (std::size_t m = 0; m < s.h5.size(); ++m) q[m] = evaluate_jet(s.h5[m], x, true);
-  lagrange_at(g1, g2, q.data(), s.h5.size(), F, J);
+  J = {g1.gradient, g2.gradient, {0, 0, 1}};
 }
 
 // J⁻¹ F by Gauss–Jordan with partial pivoting on the row-equilibrated system, and the reciprocal
@@ -235,17 +227,36 @@ newton_result newton_solve(const numeric_system& system, const point3& start, co
   return r;
 }
 
+namespace {
+
+// Start i moved by Newton, within the limits: its travel bounded by its distance to the other starts.
+std::optional<point3> continue_one(const numeric_system& system, const std::vector<point3>& starts, std::size_t i,
+                                   const std::vector<point3>& predicted, const newton_limits& limits) {
+  long double nearest = 4 * (1 + size(starts[i]));
+  for (std::size_t j = 0; j < starts.size(); ++j)
+    if (j != i) nearest = std::min(nearest, distance(starts[i], starts[j]));
+  const point3& guess = predicted.empty() ? starts[i] : predicted[i];
+  const auto r = newton_solve(system, guess, limits);
+  if (!r.converged || distance(r.x, guess) > limits.max_travel * nearest) return std::nullopt;
+  return r.x;
+}
+
+}  // namespace
+
+std::vector<std::optional<point3>> continue_each(const numeric_system& system, const std::vector<point3>& starts,
+                                                 const newton_limits& limits) {
+  std::vector<std::optional<point3>> out;
+  for (std::size_t i = 0; i < starts.size(); ++i) out.push_back(continue_one(system, starts, i, {}, limits));
+  return out;
+}
+
 std::optional<std::vector<point3>> continue_solutions(const numeric_system& system, const std::vector<point3>& starts,
                                                       const std::vector<point3>& predicted, const newton_limits& limits) {
   std::vector<point3> out;
   for (std::size_t i = 0; i < starts.size(); ++i) {
-    long double nearest = 4 * (1 + size(starts[i]));
-    for (std::size_t j = 0; j < starts.size(); ++j)
-      if (j != i) nearest = std::min(nearest, distance(starts[i], starts[j]));
-    const point3& guess = predicted.empty() ? starts[i] : predicted[i];
-    const auto r = newton_solve(system, guess, limits);
-    if (!r.converged || distance(r.x, guess) > limits.max_travel * nearest) return std::nullopt;
-    out.push_back(r.x);
+    const auto x = continue_one(system, starts, i, predicted, limits);
+    if (!x) return std::nullopt;
+    out.push_back(*x);
   }
   for (std::size_t i = 0; i + 1 < out.size(); ++i)
     for (std::size_t j = i + 1; j < out.size(); ++j)

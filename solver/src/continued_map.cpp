@@ -24,6 +24,12 @@ body_point inverse_moments(const grid_body& g) {
 
 bool by_first_coefficient(const point3& a, const point3& b) { return a[0] < b[0]; }
 
+bool same_point(const point3& x, const point3& y) {
+  for (int c = 0; c < 3; ++c)
+    if (std::fabs(x[c] - y[c]) > 1e-8L * (1 + std::fabs(y[c]))) return false;
+  return true;
+}
+
 system_state solve_system_exactly(const body_system& sys, const grid_body& g) {
   const auto r = solve_dedicated(g.body, {sys.scheme}, {sys.permutation}, map_digits);
   system_state out;
@@ -93,8 +99,7 @@ bool same_solutions(std::vector<point3> carried, const std::vector<point3>& exac
   if (carried.size() != exact.size()) return false;
   std::sort(carried.begin(), carried.end(), by_first_coefficient);
   for (std::size_t i = 0; i < exact.size(); ++i)
-    for (int c = 0; c < 3; ++c)
-      if (std::fabs(carried[i][c] - exact[i][c]) > 1e-8L * (1 + std::fabs(exact[i][c]))) return false;
+    if (!same_point(carried[i], exact[i])) return false;
   return true;
 }
 
@@ -191,12 +196,7 @@ class system_row {
   // Every solution of `part` is one of `all`.
   static bool within(const std::vector<point3>& part, const std::vector<point3>& all) {
     for (const auto& x : part)
-      if (std::none_of(all.begin(), all.end(), [&](const point3& y) { return close(x, y); })) return false;
-    return true;
-  }
-  static bool close(const point3& x, const point3& y) {
-    for (int c = 0; c < 3; ++c)
-      if (std::fabs(x[c] - y[c]) > 1e-8L * (1 + std::fabs(y[c]))) return false;
+      if (std::none_of(all.begin(), all.end(), [&](const point3& y) { return same_point(x, y); })) return false;
     return true;
   }
 
@@ -230,7 +230,7 @@ class system_row {
           system_state s;
           s.x = forward[k - a - 1];
           for (const auto& y : backward[b - k - 1])
-            if (std::none_of(s.x.begin(), s.x.end(), [&](const point3& x) { return close(x, y); })) s.x.push_back(y);
+            if (std::none_of(s.x.begin(), s.x.end(), [&](const point3& x) { return same_point(x, y); })) s.x.push_back(y);
           s.can_seed = true;
           state_[k] = std::move(s);
         }

@@ -20,6 +20,9 @@ body_point inverse_moments(const grid_body& g);
 
 bool by_first_coefficient(const point3& a, const point3& b);
 
+/// The same solution: every coefficient within 1e-8 relative.
+bool same_point(const point3& x, const point3& y);
+
 /// One system at one body: its real solutions from the exact solver, or carried along a chain.
 struct system_state {
   std::vector<point3> x;  ///< exact: sorted by x_0; carried: in the order of the chain's start

@@ -187,14 +187,22 @@ reduced_lagrange_system reduce_lagrange_system(const coefficient_polynomial& f, 
   return r;
 }
 
+namespace {
+
+// Where A = B = 0 both reduced equations vanish to high order: those points are multiple roots of
+// the eliminant, at the roots of Res(A, B) (none for a constant A).
+rational_polynomial spurious_factor(const reduced_lagrange_system& r) {
+  return r.A.is_constant() ? rational_polynomial() : resultant_in(r.A, r.B, r.rest[1], r.rest[0]);
+}
+
+}  // namespace
+
 int count_critical_candidates(const coefficient_polynomial& f, const coefficient_polynomial& g1,
                               const coefficient_polynomial& g2) {
   const reduced_lagrange_system reduced = reduce_lagrange_system(f, g1, g2);
   if (reduced.degenerate) return -1;
-  const rational_polynomial spurious = reduced.A.is_constant()
-                                           ? rational_polynomial()
-                                           : resultant_in(reduced.A, reduced.B, reduced.rest[1], reduced.rest[0]);
-  return count_real_eliminant_roots(reduced.reduced_other, reduced.reduced_det, reduced.rest[0], reduced.rest[1], spurious);
+  return count_real_eliminant_roots(reduced.reduced_other, reduced.reduced_det, reduced.rest[0], reduced.rest[1],
+                                    spurious_factor(reduced));
 }
 
 critical_result constrained_critical_points(const coefficient_polynomial& f, const coefficient_polynomial& g1,
@@ -213,10 +221,8 @@ critical_result constrained_critical_points(const coefficient_polynomial& f, con
   const std::array<int, 2> rest = reduced.rest;
   result.eliminated = z;
   const coefficient_polynomial &reduced_other = reduced.reduced_other, &reduced_det = reduced.reduced_det;
-  // Where A = B = 0 both reduced equations vanish to high order: those points are multiple roots of
-  // the eliminant, at the roots of Res(A, B). Kept once (then discarded below), not certified away.
-  const rational_polynomial spurious =
-      A.is_constant() ? rational_polynomial() : resultant_in(A, B, rest[1], rest[0]);
+  // The spurious multiple roots (A = B = 0) are kept once (then discarded below), not certified away.
+  const rational_polynomial spurious = spurious_factor(reduced);
   const system_result planar = solve_two_equations(reduced_other, reduced_det, rest[0], rest[1], digits,
                                                    method, spurious);
   result.eliminant_degree = planar.resultant_degree_u;

@@ -66,6 +66,15 @@ lie::moments_of_inertia scaled_to_unit_I3(const lie::moments_of_inertia& body) {
   return {{body.I[0] / body.I[2], body.I[1] / body.I[2], cln::cl_RA(1)}};
 }
 
+order_conditions conditions_of(const bch::exact_modified_hamiltonian& k) {
+  order_conditions c;
+  c.p1 = k.remainder[3].coefficient(lie::monomial(2, 2, 0));
+  c.p2 = k.remainder[3].coefficient(lie::monomial(2, 0, 2));
+  if (k.remainder.size() > 5)
+    for (const auto& [m, q] : k.remainder[5].terms()) c.norm_squared += q * q;
+  return c;
+}
+
 family_result solve_dedicated(const lie::moments_of_inertia& body, const std::vector<std::string>& schemes,
                               const std::vector<std::string>& permutations, int digits) {
   if (digits < 10) throw std::invalid_argument("--digits must be at least 10");
@@ -87,8 +96,8 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
                                     " free coefficients; this solver takes two (N) or three (R, P)");
       // H_R3 for the conditions; H_R5 as well when it is minimised (R, P), else only at each solution.
       const auto k = bch::compute_exact_modified_hamiltonian(layout, w, unknowns == 3 ? 5 : 3);
-      const auto& h3 = k.remainder[3];
-      const auto p1 = h3.coefficient(lie::monomial(2, 2, 0)), p2 = h3.coefficient(lie::monomial(2, 0, 2));
+      const order_conditions conditions = conditions_of(k);
+      const auto &p1 = conditions.p1, &p2 = conditions.p2;
       result.seconds_conditions += since(t);
 
       // Two free coefficients: H_R3 = 0 has isolated solutions. Three (R, P; section 3.4): the critical
@@ -106,9 +115,7 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
         report.eliminant_degree = sys.resultant_degree_u;
         for (const auto& p : sys.points) points.push_back({p.u, p.v});  // sorted by u: labels follow Tables 2 and 4
       } else {
-        lie::coefficient_polynomial norm_squared;
-        for (const auto& [m, q] : k.remainder[5].terms()) norm_squared += q * q;
-        const auto crit = constrained_critical_points(norm_squared, p1, p2, digits);
+        const auto crit = constrained_critical_points(conditions.norm_squared, p1, p2, digits);
         result.seconds_elimination += crit.seconds_elimination;
         result.seconds_roots += crit.seconds_roots;
         report.degenerate = crit.degenerate;

@@ -138,31 +138,12 @@ long double coefficient_at(const body_polynomial::term& t, const std::array<long
   return c;
 }
 
-numeric_polynomial evaluate(const body_polynomial& p, const std::array<long double, n>& n1,
-                            const std::array<long double, n>& n2) {
-  numeric_polynomial out;
-  out.terms.reserve(p.terms.size());
-  for (const auto& t : p.terms) {
-    const long double c = coefficient_at(t, n1, n2);
-    if (c == 0) continue;
-    out.terms.push_back({t.x, c});
-    out.max_degree = std::max({out.max_degree, t.x[0], t.x[1], t.x[2]});
-  }
-  return out;
-}
-
 }  // namespace
 
 numeric_system evaluate_system(const body_system& system, long double w1, long double w2) {
   const auto n1 = newton_basis(w1), n2 = newton_basis(w2);
   numeric_system out;
   out.unknowns = system.unknowns;
-  if (system.rows.empty()) {
-    out.p1 = evaluate(system.p1, n1, n2);
-    out.p2 = evaluate(system.p2, n1, n2);
-    for (const auto& q : system.h5) out.h5.push_back(evaluate(q, n1, n2));
-    return out;
-  }
   // Each coefficient once, into the stacked form; the polynomials one by one from it.
   auto& st = out.stacked;
   st.monomials = system.monomials;

@@ -15,38 +15,23 @@ namespace {
 
 using namespace detail;
 
-long double gap(const point3& x, const point3& y) {
-  return std::max({std::fabs(x[0] - y[0]), std::fabs(x[1] - y[1]), std::fabs(x[2] - y[2])});
-}
-long double size(const point3& x) { return std::max({std::fabs(x[0]), std::fabs(x[1]), std::fabs(x[2])}); }
-bool same_point(const point3& x, const point3& y) { return gap(x, y) <= 1e-8L * (1 + size(y)); }
-
 void add_new(std::vector<point3>& to, const std::vector<point3>& from) {
   for (const auto& y : from)
     if (std::none_of(to.begin(), to.end(), [&](const point3& x) { return same_point(x, y); })) to.push_back(y);
 }
 
 // One step of a chain where carrying every solution at once failed: in `substeps` equal steps, each
-// solution on its own (its travel bounded by its distance to the others, as continue_solutions
-// does), and those Newton refuses are dropped; two that reach one solution are kept once.
+// solution on its own (continue_each), those Newton refuses dropped; two that reach one solution
+// are kept once.
 std::vector<point3> carry_each(const body_system& system, std::vector<point3> x, body_point a, body_point b, int& dropped) {
   constexpr int substeps = 8;
-  const newton_limits limits;
   for (int step = 1; step <= substeps && !x.empty(); ++step) {
     const long double f = static_cast<long double>(step) / substeps;
     const auto numeric = evaluate_system(system, a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]));
-    std::vector<point3> moved;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      long double nearest = 4 * (1 + size(x[i]));
-      for (std::size_t j = 0; j < x.size(); ++j)
-        if (j != i) nearest = std::min(nearest, gap(x[i], x[j]));
-      const auto r = newton_solve(numeric, x[i], limits);
-      if (r.converged && gap(r.x, x[i]) <= limits.max_travel * nearest) moved.push_back(r.x);
-    }
-    const std::size_t carried = moved.size();
     std::vector<point3> distinct;
-    add_new(distinct, moved);
-    dropped += static_cast<int>(x.size() - carried + (carried - distinct.size()));
+    for (const auto& moved : continue_each(numeric, x))
+      if (moved) add_new(distinct, {*moved});
+    dropped += static_cast<int>(x.size() - distinct.size());
     x = std::move(distinct);
   }
   return x;
@@ -113,11 +98,8 @@ long double smallest_remainder(const system_state& s, const body_system& system,
 int candidate_count(const body_system& system, const grid_body& g) {
   const auto unit = scaled_to_unit_I3(g.body);
   const std::array<cln::cl_RA, 3> w{cln::recip(unit.I[0]), cln::recip(unit.I[1]), cln::cl_RA(1)};
-  const auto k = bch::compute_exact_modified_hamiltonian(system.layout, w, 5);
-  const auto& h3 = k.remainder[3];
-  lie::coefficient_polynomial norm_squared;
-  for (const auto& [m, q] : k.remainder[5].terms()) norm_squared += q * q;
-  return count_critical_candidates(norm_squared, h3.coefficient(lie::monomial(2, 2, 0)), h3.coefficient(lie::monomial(2, 0, 2)));
+  const order_conditions c = conditions_of(bch::compute_exact_modified_hamiltonian(system.layout, w, 5));
+  return count_critical_candidates(c.norm_squared, c.p1, c.p2);
 }
 
 // Makes the state of one system at body k complete: carried whole from its complete state at the
@@ -167,6 +149,64 @@ void confirm_best(const std::vector<body_system>& systems, const std::vector<std
   }
 }
 
+// Solutions of system s found at body k and missing from the chains, carried to the bodies after
+// and before k, each way until none goes on or an exact body is reached; added to the states there.
+void carry_unseen(const body_system& system, std::size_t s, std::size_t k, const std::vector<point3>& unseen,
+                  const std::vector<body_point>& w, std::vector<std::vector<system_state>>& states, screening_counts& counts) {
+  const std::size_t n = states.size();
+  for (const int direction : {1, -1}) {
+    std::vector<point3> carried = unseen;
+    for (std::size_t at = k; !carried.empty();) {
+      const std::size_t next = direction > 0 ? at + 1 : at - 1;
+      if (next >= n || states[next][s].exact) break;
+      auto moved = carry(system, carried, nullptr, w[at], w[next], 2);
+      carried = moved ? std::move(*moved) : carry_each(system, carried, w[at], w[next], counts.dropped);
+      std::vector<point3> fresh;  // those the chains hold already go on in the chains
+      for (const auto& x : carried)
+        if (std::none_of(states[next][s].x.begin(), states[next][s].x.end(), [&](const point3& y) { return same_point(x, y); }))
+          fresh.push_back(x);
+      carried = std::move(fresh);
+      add_new(states[next][s].x, carried);
+      at = next;
+    }
+  }
+}
+
+// Checkpoints: a minimum born and dying again between the row's ends is in neither chain. Every
+// `checkpoint_gap` bodies, each system within a factor `competitive` of the body's best is made
+// complete (complete_state, from its complete state at its last checkpoint or the row's start), and
+// the solutions it has that the chains lacked are carried both ways until they stop.
+void complete_at_checkpoints(const std::vector<body_system>& systems, const std::vector<grid_body>& row,
+                             const std::vector<body_point>& w, std::vector<std::vector<system_state>>& states,
+                             screening_counts& counts) {
+  constexpr std::size_t checkpoint_gap = 20;
+  constexpr long double competitive = 2;
+  const std::size_t n = row.size();
+  std::vector<std::size_t> last_complete(systems.size(), 0);  // the row's first body is exact
+  for (std::size_t k = checkpoint_gap; k + 1 < n; k += checkpoint_gap) {
+    std::vector<long double> smallest(systems.size());
+    long double best = std::numeric_limits<long double>::infinity();
+    for (std::size_t s = 0; s < systems.size(); ++s) {
+      smallest[s] = smallest_remainder(states[k][s], systems[s], w[k]);
+      best = std::min(best, smallest[s]);
+    }
+    for (std::size_t s = 0; s < systems.size(); ++s) {
+      if (states[k][s].complete || !(smallest[s] <= competitive * best)) continue;
+      system_state complete;
+      const std::size_t from = last_complete[s];
+      complete_state(systems[s], row[k], w[k], &states[from][s], w[from], complete, counts, 6);
+      ++counts.checkpoints;
+      last_complete[s] = k;
+      std::vector<point3> unseen;
+      for (const auto& x : complete.x)
+        if (std::none_of(states[k][s].x.begin(), states[k][s].x.end(), [&](const point3& y) { return same_point(x, y); }))
+          unseen.push_back(x);
+      states[k][s] = std::move(complete);
+      carry_unseen(systems[s], s, k, unseen, w, states, counts);
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<map_point> screened_map_points(const std::vector<grid_body>& row, const std::string& family,
@@ -206,51 +246,7 @@ std::vector<map_point> screened_map_points(const std::vector<grid_body>& row, co
     }
   }
 
-  // Checkpoints: a minimum born and dying again between the row's ends is in neither chain. Every
-  // `checkpoint_gap` bodies, each system within a factor `competitive` of the body's best is solved
-  // exactly, and the solutions it has that the chains lacked are carried both ways until they stop.
-  // The exact solve is spared where the system's complete state at its last checkpoint carries over
-  // whole with an unchanged count of real eliminant roots (complete_state).
-  constexpr std::size_t checkpoint_gap = 20;
-  constexpr long double competitive = 2;
-  std::vector<std::size_t> last_complete(systems.size(), 0);  // the row's first body is exact
-  for (std::size_t k = checkpoint_gap; k + 1 < n; k += checkpoint_gap) {
-    std::vector<long double> smallest(systems.size());
-    long double best = std::numeric_limits<long double>::infinity();
-    for (std::size_t s = 0; s < systems.size(); ++s) {
-      smallest[s] = smallest_remainder(states[k][s], systems[s], w[k]);
-      best = std::min(best, smallest[s]);
-    }
-    for (std::size_t s = 0; s < systems.size(); ++s) {
-      if (states[k][s].complete || !(smallest[s] <= competitive * best)) continue;
-      system_state complete;
-      const std::size_t from = last_complete[s];
-      complete_state(systems[s], row[k], w[k], &states[from][s], w[from], complete, local, 6);
-      ++local.checkpoints;
-      last_complete[s] = k;
-      std::vector<point3> unseen;
-      for (const auto& x : complete.x)
-        if (std::none_of(states[k][s].x.begin(), states[k][s].x.end(), [&](const point3& y) { return same_point(x, y); }))
-          unseen.push_back(x);
-      states[k][s] = std::move(complete);
-      for (const int direction : {1, -1}) {
-        std::vector<point3> carried = unseen;
-        for (std::size_t at = k; !carried.empty();) {
-          const std::size_t next = direction > 0 ? at + 1 : at - 1;
-          if (next >= n || states[next][s].exact) break;
-          auto moved = carry(systems[s], carried, nullptr, w[at], w[next], 2);
-          carried = moved ? std::move(*moved) : carry_each(systems[s], carried, w[at], w[next], local.dropped);
-          std::vector<point3> fresh;
-          for (const auto& x : carried)
-            if (std::none_of(states[next][s].x.begin(), states[next][s].x.end(), [&](const point3& y) { return same_point(x, y); }))
-              fresh.push_back(x);
-          carried = fresh;
-          add_new(states[next][s].x, carried);
-          at = next;
-        }
-      }
-    }
-  }
+  complete_at_checkpoints(systems, row, w, states, local);
 
   std::vector<map_point> out;
   for (std::size_t k = 0; k < n; ++k) {

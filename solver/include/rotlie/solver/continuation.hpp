@@ -38,6 +38,10 @@ std::optional<std::vector<point3>> continue_solutions(const numeric_system& syst
                                                       const std::vector<point3>& predicted = {},
                                                       const newton_limits& limits = {});
 
+/// Each start moved as continue_solutions moves it, or nullopt where Newton refuses it (the others go on).
+std::vector<std::optional<point3>> continue_each(const numeric_system& system, const std::vector<point3>& starts,
+                                                 const newton_limits& limits = {});
+
 /// ‖H_R5‖ (eq. 64) at x: sqrt(Σ q_m(x)²), body scaled to I3 = 1.
 long double remainder_norm(const numeric_system& system, const point3& x);
 

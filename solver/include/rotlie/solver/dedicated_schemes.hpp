@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/bch/scheme_word.hpp"
 #include "rotlie/lie/rigid_body.hpp"
 
@@ -54,6 +55,13 @@ struct family_result {
 /// Throws std::invalid_argument for an unknown scheme or permutation or digits < 10.
 family_result solve_dedicated(const lie::moments_of_inertia& body, const std::vector<std::string>& schemes,
                               const std::vector<std::string>& permutations, int digits);
+
+/// The order conditions of an exact expansion: P1, P2 (the coefficients of G1²G2² and G1²G3² in
+/// H_R3), and ‖H_R5‖² = Σ q² over H_R5's coefficients when the expansion reaches order 5 (else 0).
+struct order_conditions {
+  lie::coefficient_polynomial p1, p2, norm_squared;
+};
+order_conditions conditions_of(const bch::exact_modified_hamiltonian& k);
 
 /// ‖H_R5‖ from its coefficients q for the body scaled to I3 = 1: the normalisation that reproduces
 /// Tables 3 and 4 (see the implementation).

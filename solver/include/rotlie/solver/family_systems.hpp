@@ -73,7 +73,7 @@ struct numeric_system {
   int unknowns = 0;
   numeric_polynomial p1, p2;
   std::vector<numeric_polynomial> h5;
-  stacked_polynomials stacked;  ///< p1, p2, h5… (empty for a system built by hand)
+  stacked_polynomials stacked;  ///< p1, p2, h5…, for Newton on the Lagrange system
 };
 
 /// The system at the body (1/w1, 1/w2, 1), rounded to long double.
