@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "rotlie/reports/map_io.hpp"
+#include "rotlie/runs/map_file.hpp"
 #include "rotlie/solver/body_grid.hpp"
 #include "rotlie/solver/body_map.hpp"
 #include "rotlie/solver/continued_map.hpp"
@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
   std::ofstream out;
   if (!out_file.empty()) {
     out.open(out_file);
-    out << rotlie::reports::map_header(family, K, rows.size() * static_cast<std::size_t>(K), screened ? "screened" : "fast").dump() << "\n";
+    out << rotlie::runs::map_header(family, K, rows.size() * static_cast<std::size_t>(K), screened ? "screened" : "fast").dump() << "\n";
   }
   rotlie::solver::continuation_counts counts;
   double fast = 0, exact = 0;
@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
                                  : rotlie::solver::continued_map_points(row, family, &c);
     if (screened) c.system_solves = sc.system_solves;
     if (out)
-      for (std::size_t k = 0; k < row.size(); ++k) out << rotlie::reports::map_line(row[k], points[k]).dump() << "\n" << std::flush;
+      for (std::size_t k = 0; k < row.size(); ++k) out << rotlie::runs::map_line(row[k], points[k]).dump() << "\n" << std::flush;
     const double dt = cpu_seconds() - t;
     fast += dt;
     bodies += static_cast<int>(row.size());

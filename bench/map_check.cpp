@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "rotlie/reports/map_check.hpp"
+#include "rotlie/runs/map_check.hpp"
 
 int main(int argc, char** argv) {
   if (argc < 3) {
@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   const int K = header.at("grid");
   std::vector<nlohmann::json> bodies;
   while (std::getline(in, line)) bodies.push_back(nlohmann::json::parse(line));
-  const auto r = rotlie::reports::check_map_lines(family, K, bodies, std::stoul(argv[2]), argc > 3 ? std::stoull(argv[3]) : 14);
+  const auto r = rotlie::runs::check_map_lines(family, K, bodies, std::stoul(argv[2]), argc > 3 ? std::stoull(argv[3]) : 14);
   for (const auto& d : r.differences) std::cout << d << "\n";
   std::cout << "family " << family << " at --grid " << K << ": " << r.checked << " bodies checked against the exact solver, "
             << r.disagreements << " disagreement(s)\n";

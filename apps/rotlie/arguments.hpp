@@ -5,6 +5,8 @@
 #include <string>
 #include <string_view>
 
+#include "rotlie/runs/user_input.hpp"
+
 namespace rotlie::app {
 
 /// A bad command-line value: reported as one line on stderr, exit status 2.
@@ -16,13 +18,11 @@ struct usage_error : std::runtime_error {
 inline constexpr int exit_failure = 1;  ///< the run failed: a write error, a numerical failure
 inline constexpr int exit_usage = 2;    ///< bad arguments: nothing was computed
 
-/// Parses a decimal integer in [lo, hi]; throws usage_error naming `option` otherwise.
-long parse_integer_in_range(std::string_view text, std::string_view option, long lo, long hi);
-
-/// Why `text` is not a usable number, for a message: "is out of range" when it is written like a
-/// number whose exponent or digit count is too large, "is not a finite number" for nan/inf, and
-/// "is not a number" otherwise.
-std::string why_not_a_number(std::string_view text);
+/// Parses a decimal integer in [lo, hi]; throws runs::bad_input naming `option` otherwise.
+inline long parse_integer_in_range(std::string_view text, std::string_view option, long lo, long hi) {
+  return runs::integer_in_range(text, option, lo, hi);
+}
+using runs::why_not_a_number;
 
 /// Throws usage_error naming `option` and the path unless `folder` is, or can be created as, a
 /// folder that accepts new files. Leaves the file system as it found it (a probe file and any
@@ -36,9 +36,7 @@ void route_standard_output();
 /// left on device"), else "".
 std::string flush_standard_output();
 
-/// `message` on one line: control characters (a newline in a value, an escape sequence) are
-/// shown as \n, \r, \t or \xHH so that no value can add lines or drive the terminal.
-std::string one_line(std::string_view message);
+using runs::one_line;
 
 /// True for a message worded by a library rather than by rotlie (Boost, CLN, GiNaC, the C++
 /// standard library): such text is never shown to the user.

@@ -14,7 +14,8 @@
 #include "commands.hpp"
 #include "progress.hpp"
 #include "rotlie/bch/scheme_word.hpp"
-#include "rotlie/reports/map_io.hpp"
+#include "rotlie/bch/families.hpp"
+#include "rotlie/runs/map_file.hpp"
 #include "rotlie/reports/measured_best.hpp"
 #include "rotlie/solver/body_grid.hpp"
 #include "rotlie/solver/body_map.hpp"
@@ -76,13 +77,15 @@ int run_best(const best_options& options) {
   {
     progress_line progress;  // cleared before the answer is printed
     const reports::fixed_reduced_step_protocol protocol(body);
-    for (const char* family : {"N", "R", "P"}) {
-      progress.show(std::string("best: solving the ") + family + " family at every permutation");
+    for (const auto& f : bch::families()) {
+      if (f.kind != bch::family_kind::one_free_parameter) continue;  // the maps' families: N, R, P
+      const std::string family(f.name);
+      progress.show("best: solving the " + family + " family at every permutation");
       const auto solved =
           solver::solve_dedicated(body, solver::family_schemes(family), bch::permutation_names(), 40);
       points.push_back(solver::summarize_family(body, family, solved));
       if (!options.analytic_only) {
-        progress.show(std::string("best: measuring every ") + family + " solution");
+        progress.show("best: measuring every " + family + " solution");
         measured.push_back(measure_family(protocol, body, solved, points.back()));
       }
     }
@@ -115,9 +118,9 @@ int run_best(const best_options& options) {
 
   if (options.json) {
     nlohmann::ordered_json j;
-    j["inertia"] = {reports::fraction_text(body.I[0]), reports::fraction_text(body.I[1]), reports::fraction_text(body.I[2])};
-    j["s"] = reports::fraction_text(s);
-    j["t"] = reports::fraction_text(t);
+    j["inertia"] = {runs::fraction_text(body.I[0]), runs::fraction_text(body.I[1]), runs::fraction_text(body.I[2])};
+    j["s"] = runs::fraction_text(s);
+    j["t"] = runs::fraction_text(t);
     for (const auto& p : points) {
       nlohmann::ordered_json f;
       f["best"] = p.best ? nlohmann::ordered_json(solver::scheme_table_name(*p.best)) : nlohmann::ordered_json();
@@ -166,8 +169,8 @@ int run_best(const best_options& options) {
     std::cout << j.dump(2) << "\n";
     return 0;
   }
-  std::cout << "Body " << options.inertia << ": in the triangle of LV section 5 at s = " << reports::fraction_text(s)
-            << ", t = " << reports::fraction_text(t) << "\n"
+  std::cout << "Body " << options.inertia << ": in the triangle of LV section 5 at s = " << runs::fraction_text(s)
+            << ", t = " << runs::fraction_text(t) << "\n"
             << "Ranked by the analytic remainder ||H_R5|| (eq. 64); gain = R_M / R x (C_M / C)^4 at equal cost "
                "(> 1: better than the reference).\n\n";
   for (const auto& p : points) {

@@ -47,7 +47,6 @@ struct solve_options {
   std::string starts = "40", seed = "1";  ///< Q, QRS: random starts per (word, permutation)
 };
 int run_solve(const solve_options& options);
-bool is_two_parameter_family(const std::string& family);
 int run_solve_two_parameter(const solve_options& options);
 
 }  // namespace rotlie::app

@@ -14,7 +14,7 @@
 #include "arguments.hpp"
 #include "commands.hpp"
 #include "md_liquid_water.hpp"
-#include "scheme_lookup.hpp"
+#include "rotlie/runs/numeric_inputs.hpp"
 
 namespace {
 
@@ -263,15 +263,15 @@ int main(int argc, char** argv) {
       return finished(run_solve(solve));
     }
     if (*integrate_cmd) {
-      check_numeric_scales(integrate.inertia, integrate.G0, integrate.T);
+      rotlie::runs::check_numeric_scales(integrate.inertia, integrate.G0, integrate.T);
       return finished(run_integrate(integrate));
     }
     if (*order_cmd) {
-      check_numeric_scales(order.inertia, order.G0, order.T);
+      rotlie::runs::check_numeric_scales(order.inertia, order.G0, order.T);
       return finished(run_order(order));
     }
     if (*exact_cmd) {
-      check_numeric_scales(exact.inertia, exact.G0, exact.T);
+      rotlie::runs::check_numeric_scales(exact.inertia, exact.G0, exact.T);
       return finished(run_exact(exact));
     }
     if (*md_cmd) {
@@ -298,6 +298,8 @@ int main(int argc, char** argv) {
       return finished(run_sixth(sixth));
     }
   } catch (const usage_error& e) {
+    return fail(e.what(), exit_usage);
+  } catch (const rotlie::runs::bad_input& e) {  // a name or value the library refused
     return fail(e.what(), exit_usage);
   } catch (const std::filesystem::filesystem_error& e) {
     // "filesystem error: cannot …: Reason [path]" said without the library's prefix

@@ -15,7 +15,9 @@
 #include "progress.hpp"
 #include "rotlie/models/experiments/dipole_field_experiment.hpp"
 #include "rotlie/models/experiments/free_water_experiment.hpp"
-#include "scheme_lookup.hpp"
+#include "rotlie/runs/body_names.hpp"
+#include "rotlie/runs/numeric_inputs.hpp"
+#include "rotlie/runs/scheme_names.hpp"
 
 namespace rotlie::app {
 namespace {
@@ -129,8 +131,8 @@ int run_md(const md_options& o) {
   if (spec.rotor == models::rotor_kind::table) {
     // a reference name or a dedicated SCHEME:PERM:LABEL, solved for the scene's water molecule
     try {
-      r.rotor = lookup_scheme(spec.rotor_table, parse_inertia_option(water_body_text()), foreign_table::refuse);
-    } catch (const usage_error& e) {
+      r.rotor = runs::scheme_named(spec.rotor_table, runs::numeric_body(water_body_text()), runs::foreign_table::refuse);
+    } catch (const runs::bad_input& e) {
       std::string why = e.what();
       if (why.rfind("--scheme: ", 0) == 0) why = why.substr(10);
       throw usage_error("--integrator " + o.integrator + ": " + why);
@@ -139,8 +141,8 @@ int run_md(const md_options& o) {
   }
   const bool free = o.scene == "free-water";
   r.run.integrator = o.integrator;
-  r.run.h_fs = parse_positive(o.h, "--h");
-  r.run.T_ps = parse_positive(o.T.empty() ? shortest(free ? models::free_water_default_T_ps : models::dipole_field_default_T_ps) : o.T, "--T");
+  r.run.h_fs = runs::positive_number(o.h, "--h");
+  r.run.T_ps = runs::positive_number(o.T.empty() ? shortest(free ? models::free_water_default_T_ps : models::dipole_field_default_T_ps) : o.T, "--T");
   r.run.runs = o.runs.empty() ? (free ? models::free_water_default_runs : models::dipole_field_default_runs)
                               : parse_integer_in_range(o.runs, "--runs", 1, 1'000'000);
   r.run.seed = static_cast<std::uint64_t>(parse_integer_in_range(o.seed, "--seed", 0, std::numeric_limits<long>::max()));
@@ -151,8 +153,8 @@ int run_md(const md_options& o) {
                       shortest(max_total_steps));
   if (!free || o.dipole != "1.84" || o.field != "2.7") {
     if (free) throw usage_error("--dipole and --field apply to the dipole-field scene only");
-    r.dipole = shortest(parse_positive(o.dipole, "--dipole"));
-    r.field = shortest(parse_positive(o.field, "--field"));
+    r.dipole = shortest(runs::positive_number(o.dipole, "--dipole"));
+    r.field = shortest(runs::positive_number(o.field, "--field"));
   }
   progress_line progress;
   r.run.progress = [&progress](long done, long runs) {

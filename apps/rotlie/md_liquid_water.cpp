@@ -10,7 +10,9 @@
 #include "progress.hpp"
 #include "rotlie/models/scenes/liquid_water_experiment.hpp"
 #include "rotlie/models/scenes/water_model.hpp"
-#include "scheme_lookup.hpp"
+#include "rotlie/runs/body_names.hpp"
+#include "rotlie/runs/numeric_inputs.hpp"
+#include "rotlie/runs/scheme_names.hpp"
 
 namespace rotlie::app {
 
@@ -25,8 +27,8 @@ models::liquid_water_run_options checked(const md_liquid_water_options& o) {
     throw usage_error(std::string("--integrator: ") + e.what());
   }
   if (o.h.empty()) throw usage_error("--h is required (the step in fs)");
-  r.h_fs = parse_positive(o.h, "--h");
-  r.T_ps = parse_positive(o.T, "--T");
+  r.h_fs = runs::positive_number(o.h, "--h");
+  r.T_ps = runs::positive_number(o.T, "--T");
   r.runs = static_cast<int>(parse_integer_in_range(o.runs, "--runs", 1, 1000));
   r.molecules = parse_integer_in_range(o.molecules, "--molecules", 2, 10000000);
   r.threads = static_cast<int>(parse_integer_in_range(o.threads, "--threads", 1, 64));
@@ -48,8 +50,8 @@ std::optional<schemes::scheme_table> rotor_of(const std::string& integrator) {
   const auto spec = models::md_integrator_named(integrator);
   if (spec.rotor != models::rotor_kind::table) return std::nullopt;
   try {
-    return lookup_scheme(spec.rotor_table, parse_inertia_option(models::tip3p_body_text()), foreign_table::refuse);
-  } catch (const usage_error& e) {
+    return runs::scheme_named(spec.rotor_table, runs::numeric_body(models::tip3p_body_text()), runs::foreign_table::refuse);
+  } catch (const runs::bad_input& e) {
     std::string why = e.what();
     if (why.rfind("--scheme: ", 0) == 0) why = why.substr(10);
     throw usage_error("--integrator " + integrator + ": " + why);

@@ -10,7 +10,7 @@
 #include "rotlie/bch/remainder_request.hpp"
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/reports/remainder_io.hpp"
-#include "scheme_lookup.hpp"
+#include "rotlie/runs/body_names.hpp"
 
 namespace rotlie::app {
 namespace {
@@ -134,7 +134,7 @@ int run_remainder(const remainder_options& options) {
   check_word(options.scheme, request.split);
   request.permutation = options.perm;
   request.order = static_cast<int>(parse_integer_in_range(options.order, "--order", 1, bch::max_remainder_order));
-  if (!options.inertia.empty()) request.inertia = parse_moments_option(options.inertia);
+  if (!options.inertia.empty()) request.inertia = runs::exact_body(options.inertia);
   request.coefficients = parse_coefficients(options.coeffs);
   check_size(request);
   bch::remainder_result result;

@@ -4,37 +4,26 @@
 
 #include "arguments.hpp"
 #include "commands.hpp"
-#include "scheme_lookup.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/solve_io.hpp"
 #include "rotlie/solver/scheme_table.hpp"
+#include "rotlie/runs/body_names.hpp"
+#include "rotlie/runs/family_names.hpp"
+#include "rotlie/runs/scheme_names.hpp"
 
 namespace rotlie::app {
 namespace {
 
 constexpr int max_digits = 300;  // beyond this the exact bisection dominates for no use
 
-std::vector<std::string> schemes_of(const solve_options& o) {
-  if (o.family != "N" && o.family != "R" && o.family != "P")
-    throw usage_error("--family must be N, R, P, Q or QRS, got '" + o.family + "'");
-  std::vector<std::string> all;
-  if (o.family == "R") all.push_back("R");
-  const int members = o.family == "N" ? 7 : o.family == "P" ? 15 : 0;
-  for (int i = 1; i <= members; ++i) all.push_back(o.family + std::to_string(i));
-  if (o.scheme.empty()) return all;
-  if (std::find(all.begin(), all.end(), o.scheme) == all.end())
-    throw usage_error("--scheme '" + o.scheme + "' is not in the " + o.family + " family (" + all.front() +
-                      (all.size() > 1 ? " … " + all.back() : std::string()) + ")");
-  return {o.scheme};
-}
-
 }  // namespace
 
 int run_solve(const solve_options& options) {
-  if (is_two_parameter_family(options.family)) return run_solve_two_parameter(options);
-  const auto schemes = schemes_of(options);
-  const std::vector<std::string> perms = permutations_option(options.perm);
-  const lie::moments_of_inertia body = required_moments_option(options.inertia);
+  const auto& family = runs::family_to_solve(options.family);
+  if (family.kind == bch::family_kind::two_free_parameters) return run_solve_two_parameter(options);
+  const auto schemes = runs::members_asked(family, options.scheme);
+  const std::vector<std::string> perms = runs::permutations_named(options.perm);
+  const lie::moments_of_inertia body = runs::required_body(options.inertia);
   const int digits = static_cast<int>(parse_integer_in_range(options.digits, "--digits", 10, max_digits));
 
   const auto result = solver::solve_dedicated(body, schemes, perms, digits);

@@ -5,15 +5,17 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "arguments.hpp"
 #include "commands.hpp"
-#include "scheme_lookup.hpp"
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/reports/output_file.hpp"
+#include "rotlie/reports/two_parameter_io.hpp"
 #include "rotlie/solver/two_parameter.hpp"
+#include "rotlie/runs/body_names.hpp"
+#include "rotlie/runs/family_names.hpp"
+#include "rotlie/runs/scheme_names.hpp"
 
 namespace rotlie::app {
 namespace {
@@ -21,18 +23,12 @@ namespace {
 constexpr int max_digits = 300;
 constexpr long max_starts = 100000;
 
-std::string scheme_name(const solver::two_parameter_entry& e) {
-  return std::string(e.split == bch::splitting::abc ? "Q" : "QRS") + ":" + e.word + ":" + e.permutation;
-}
-
 std::string decimal(const cln::cl_RA& x) { return lie::to_decimal(x, 2); }
 
 }  // namespace
 
-bool is_two_parameter_family(const std::string& family) { return family == "Q" || family == "QRS"; }
-
 int run_solve_two_parameter(const solve_options& options) {
-  const auto split = options.family == "Q" ? bch::splitting::abc : bch::splitting::rs;
+  const auto split = runs::family_to_solve(options.family).split;
   auto words = solver::two_parameter_words(split);
   if (!options.scheme.empty()) {
     if (std::find(words.begin(), words.end(), options.scheme) == words.end())
@@ -40,8 +36,8 @@ int run_solve_two_parameter(const solve_options& options) {
                         " … " + words.back() + ")");
     words = {options.scheme};
   }
-  const std::vector<std::string> perms = permutations_option(options.perm);
-  const lie::moments_of_inertia body = required_moments_option(options.inertia);
+  const std::vector<std::string> perms = runs::permutations_named(options.perm);
+  const lie::moments_of_inertia body = runs::required_body(options.inertia);
   const int digits = static_cast<int>(parse_integer_in_range(options.digits, "--digits", 10, max_digits));
   solver::minimum_search_options search;
   search.starts = static_cast<int>(parse_integer_in_range(options.starts, "--starts", 1, max_starts));
@@ -55,42 +51,15 @@ int run_solve_two_parameter(const solve_options& options) {
     for (const auto& e : result.entries) {
       if (!e.polished) continue;
       const auto s = solver::two_parameter_conditions(bch::layout_scheme(e.word, split, e.permutation), body);
-      std::string file = scheme_name(e);
+      std::string file = runs::two_parameter_name(e);
       std::replace(file.begin(), file.end(), ':', '_');
       reports::write_file_atomically(std::filesystem::path(options.out) / (file + ".scheme"),
-                                     solver::two_parameter_table_text(s, e.best, digits, body, scheme_name(e),
+                                     solver::two_parameter_table_text(s, e.best, digits, body, runs::two_parameter_name(e),
                                                                       "rotlie solve --family " + options.family));
     }
   }
   if (options.json) {
-    nlohmann::ordered_json j;
-    j["family"] = options.family;
-    j["inertia"] = lie::inertia_text(body);
-    j["digits"] = digits;
-    j["starts"] = search.starts;
-    j["cpu_seconds"] = result.seconds;
-    j["systems"] = nlohmann::ordered_json::array();
-    for (const auto& e : result.entries) {
-      nlohmann::ordered_json s;
-      s["name"] = scheme_name(e);
-      s["on_surface"] = e.search.on_surface;
-      s["converged"] = e.search.converged;
-      s["distinct_minima"] = e.search.minima.size();
-      s["polished"] = e.polished;
-      if (e.polished) {
-        s["remainder"] = e.best.remainder;
-        s["order_residual"] = decimal(e.best.order_residual);
-        s["projected_gradient"] = decimal(e.best.projected_gradient);
-        s["reduced_hessian"] = e.best.reduced_hessian;
-        nlohmann::ordered_json c;
-        for (const auto& [name, v] : e.best.values) c[name] = lie::to_decimal(v, digits);
-        s["coefficients"] = c;
-      } else {
-        s["note"] = e.note;
-      }
-      j["systems"].push_back(s);
-    }
-    std::cout << j.dump(2) << "\n";
+    std::cout << reports::two_parameter_json(result, options.family, body, digits, search.starts).dump(2) << "\n";
     return 0;
   }
   std::cout << "Two free parameters at order 4 (" << options.family << ", " << result.entries.size() << " systems, "
@@ -100,7 +69,7 @@ int run_solve_two_parameter(const solve_options& options) {
   int rank = 0;
   for (const auto& e : result.entries) {
     ++rank;
-    std::cout << std::setw(4) << rank << "  " << scheme_name(e) << "  ";
+    std::cout << std::setw(4) << rank << "  " << runs::two_parameter_name(e) << "  ";
     if (!e.polished) {
       std::cout << "-  (" << e.note << ")\n";
       continue;
@@ -110,7 +79,7 @@ int run_solve_two_parameter(const solve_options& options) {
               << decimal(e.best.projected_gradient) << "  " << decimal(e.best.order_residual) << "\n";
   }
   if (result.entries.size() == 1) {  // one system: every distinct local minimum the search reached
-    std::cout << "local minima of " << scheme_name(result.entries.front()) << " (||H_R5||, hits, free coefficients):\n";
+    std::cout << "local minima of " << runs::two_parameter_name(result.entries.front()) << " (||H_R5||, hits, free coefficients):\n";
     for (const auto& m : result.entries.front().search.minima) {
       std::cout << "  " << std::setprecision(10) << m.remainder << "  " << m.hits << " ";
       for (long double v : m.x) std::cout << " " << std::setprecision(12) << static_cast<double>(v);

@@ -3,26 +3,19 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "rotlie/bch/families.hpp"
 #include "rotlie/lie/exact_number.hpp"
 
 namespace rotlie::bch {
 
 const std::vector<named_scheme>& named_schemes() {
-  static const std::vector<named_scheme> schemes = {
-      {"N1", "ABABCBABA", splitting::abc},     {"N2", "ABACACABA", splitting::abc},
-      {"N3", "ABACBCABA", splitting::abc},     {"N4", "ABCABACBA", splitting::abc},
-      {"N5", "ABCACACBA", splitting::abc},     {"N6", "ABCBABCBA", splitting::abc},
-      {"N7", "ABCBCBCBA", splitting::abc},     {"R", "RSRSRSRSR", splitting::rs},
-      {"P1", "ABABACABABA", splitting::abc},   {"P2", "ABABCACBABA", splitting::abc},
-      {"P3", "ABABCBCBABA", splitting::abc},   {"P4", "ABACABACABA", splitting::abc},
-      {"P5", "ABACACACABA", splitting::abc},   {"P6", "ABACBABCABA", splitting::abc},
-      {"P7", "ABACBCBCABA", splitting::abc},   {"P8", "ABCABABACBA", splitting::abc},
-      {"P9", "ABCABCBACBA", splitting::abc},   {"P10", "ABCACACACBA", splitting::abc},
-      {"P11", "ABCACBCACBA", splitting::abc},  {"P12", "ABCBABABCBA", splitting::abc},
-      {"P13", "ABCBACABCBA", splitting::abc},  {"P14", "ABCBCACBCBA", splitting::abc},
-      {"P15", "ABCBCBCBCBA", splitting::abc},  {"RSRSRSR", "RSRSRSR", splitting::rs},
-      {"SRSRSRS", "SRSRSRS", splitting::rs},
-  };
+  static const std::vector<named_scheme> schemes = [] {
+    std::vector<named_scheme> all;
+    for (const auto& f : families()) all.insert(all.end(), f.members.begin(), f.members.end());
+    all.push_back({"RSRSRSR", "RSRSRSR", splitting::rs});  // eq. (41)
+    all.push_back({"SRSRSRS", "SRSRSRS", splitting::rs});
+    return all;
+  }();
   return schemes;
 }
 

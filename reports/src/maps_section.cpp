@@ -11,14 +11,14 @@
 #include <set>
 #include <sstream>
 
-#include "rotlie/reports/map_check.hpp"
-#include "rotlie/reports/map_io.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/reports/triangle_contour.hpp"
+#include "rotlie/runs/family_names.hpp"
+#include "rotlie/runs/map_check.hpp"
+#include "rotlie/runs/map_file.hpp"
+#include "rotlie/runs/map_rows.hpp"
 #include "rotlie/solver/body_grid.hpp"
-#include "rotlie/solver/continued_map.hpp"
-#include "rotlie/solver/screened_map.hpp"
 
 namespace rotlie::reports {
 namespace {
@@ -50,7 +50,7 @@ struct family_map {
 
 body_result from_line(const nlohmann::json& j, int K) {
   body_result b;
-  const auto ij = map_line_indices(j, K);
+  const auto ij = runs::map_line_indices(j, K);
   if (!ij) throw std::runtime_error("a map line is not a body of its grid");
   b.i = ij->first;
   b.j = ij->second;
@@ -74,58 +74,46 @@ family_map compute_map(const report_options& options, const std::string& family,
   family_map m;
   m.family = family;
   m.K = K;
-  // The fast paths, as rotlie map's defaults: N continued, P screened; see rotlie map.
-  const bool fast = family == "N" || family == "P";
-  m.method = !fast ? "exact" : family == "P" ? "screened" : "fast";
-  m.source = std::string("computed here (") + (!fast ? "exact solver" : family == "P" ? "screened fast path" : "fast path") +
+  // The path rotlie map takes by default for the family (N continued, P screened, R exact).
+  const auto method = runs::family_to_map(family).map;
+  m.method = runs::map_method_name(method);
+  m.source = std::string("computed here (") +
+             (method == bch::map_method::exact ? "exact solver" : method == bch::map_method::screened ? "screened fast path" : "fast path") +
              ", --grid " + std::to_string(K) + ")";
   const auto start = std::chrono::steady_clock::now();
   const auto grid = solver::asymmetric_grid(K);
+  const std::vector<char> none_done(grid.size(), 0);
   std::ostringstream jsonl;
-  jsonl << map_header(family, K, grid.size(), m.method).dump() << "\n";
+  jsonl << runs::map_header(family, K, grid.size(), m.method).dump() << "\n";
   for (std::size_t first = 0; first < grid.size(); first += static_cast<std::size_t>(K)) {
     if (options.progress)
       options.progress("Maps: family " + family + " at --grid " + std::to_string(K) + ", row " +
                        std::to_string(first / K + 1) + " of " + std::to_string(K - 1));
-    const std::vector<solver::grid_body> row(grid.begin() + static_cast<std::ptrdiff_t>(first),
-                                             grid.begin() + static_cast<std::ptrdiff_t>(first + K));
-    std::vector<solver::map_point> points;
-    if (family == "P") points = solver::screened_map_points(row, family);
-    else if (fast) points = solver::continued_map_points(row, family);
-    else
-      for (const auto& g : row) points.push_back(solver::compute_map_point(g.body, family, solver::map_digits));
-    for (std::size_t k = 0; k < row.size(); ++k) {
-      const auto line = map_line(row[k], points[k]);
-      jsonl << line.dump() << "\n";
-      m.lines.push_back(nlohmann::json::parse(line.dump()));
+    for (const auto& [k, line] : runs::map_row_lines(grid, first, static_cast<std::size_t>(K), none_done, family, method)) {
+      jsonl << line << "\n";
+      auto j = nlohmann::json::parse(line);
+      if (j.contains("failed")) continue;  // drawn as a map file is: without the bodies whose solve failed
+      m.lines.push_back(std::move(j));
       m.bodies.push_back(from_line(m.lines.back(), K));
     }
   }
   m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_file_atomically(options.out_dir / ("map-" + family + ".jsonl"), jsonl.str());
+  write_file_atomically(runs::map_file_path(options.out_dir, family), jsonl.str());
   return m;
 }
 
 family_map read_map(const std::filesystem::path& file, const std::string& family) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error("cannot read the map file " + printable_path(file));
-  std::string line;
-  std::getline(in, line);
-  const auto header = nlohmann::json::parse(line, nullptr, false);
-  if (header.is_discarded() || header.value("family", "") != family || !header.contains("grid"))
-    throw std::runtime_error(printable_path(file) + " is not a map of family " + family);
+  const auto contents = runs::read_map_contents(file);
+  if (!contents || contents->family != family) throw std::runtime_error(printable_path(file) + " is not a map of family " + family);
   family_map m;
   m.family = family;
-  m.K = header["grid"].get<int>();
-  m.method = header.value("method", std::string("exact"));
+  m.K = contents->K;
+  m.method = contents->method;
   m.source = "read from " + file.filename().string() + " (--grid " + std::to_string(m.K) + ", " + m.method + ")";
   m.from_file = true;
-  while (std::getline(in, line)) {
-    const auto j = nlohmann::json::parse(line, nullptr, false);
-    if (!j.is_discarded() && !j.contains("failed")) {
-      m.bodies.push_back(from_line(j, m.K));
-      m.lines.push_back(j);
-    }
+  for (const auto& j : contents->bodies) {
+    m.bodies.push_back(from_line(j, m.K));
+    m.lines.push_back(j);
   }
   return m;
 }
@@ -296,7 +284,7 @@ std::string fast_path_check(const report_options& options, const std::vector<fam
     const bool many = options.full || m.from_file;
     const std::size_t count = many ? full_checks : m.family == "P" ? default_checks_P : default_checks_N;
     const auto start = std::chrono::steady_clock::now();
-    const auto r = check_map_lines(m.family, m.K, m.lines, count, 14, [&](int done, int of) {
+    const auto r = runs::check_map_lines(m.family, m.K, m.lines, count, 14, [&](int done, int of) {
       if (options.progress)
         options.progress("Maps: the " + m.family + " map against the exact solver, body " + std::to_string(done + 1) + " of " +
                          std::to_string(of));
@@ -344,7 +332,7 @@ report_section maps_section(const report_options& options) {
   md << bodies_chart(options, sec.files);
   std::vector<family_map> maps;
   for (const std::string family : {"N", "P"}) {
-    const auto file = options.maps_dir.empty() ? std::filesystem::path() : options.maps_dir / ("map-" + family + ".jsonl");
+    const auto file = options.maps_dir.empty() ? std::filesystem::path() : runs::map_file_path(options.maps_dir, family);
     if (!file.empty() && std::filesystem::exists(file)) {
       maps.push_back(read_map(file, family));
       continue;

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "rotlie/lie/exact_number.hpp"
+#include "rotlie/runs/family_names.hpp"
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/protocol_curves.hpp"
 #include "rotlie/reports/report.hpp"
@@ -27,14 +28,7 @@ std::string sig(double x, int n = 3) {
   return o.str();
 }
 
-std::string name_of(const solver::two_parameter_entry& e) {
-  return std::string(e.split == bch::splitting::abc ? "Q" : "QRS") + ":" + e.word + ":" + e.permutation;
-}
-
-int cost_of(const solver::two_parameter_entry& e) {
-  const int stages = static_cast<int>(e.word.size());
-  return e.split == bch::splitting::abc ? stages : stages + 1;  // LV section 4.1: RS costs N + 1 rotations
-}
+int cost_of(const solver::two_parameter_entry& e) { return bch::family_cost(runs::two_parameter_family(e.split)); }
 
 void ranking_table(std::ostringstream& md, const solver::two_parameter_result& r, std::size_t rows) {
   md << "| rank | scheme | C/C0 | ‖H_R5‖ | ‖H_R5‖·C^4 | distinct minima | hits of the best / converged / starts | "
@@ -43,7 +37,7 @@ void ranking_table(std::ostringstream& md, const solver::two_parameter_result& r
   for (const auto& e : r.entries) {
     if (!e.polished || rank == rows) continue;
     ++rank;
-    md << "| " << rank << " | " << name_of(e) << " | " << cost_of(e) << " | " << sig(e.best.remainder, 6) << " | "
+    md << "| " << rank << " | " << runs::two_parameter_name(e) << " | " << cost_of(e) << " | " << sig(e.best.remainder, 6) << " | "
        << sig(e.best.remainder * std::pow(cost_of(e), 4), 4) << " | " << e.search.minima.size() << " | "
        << e.search.minima.front().hits << " / " << e.search.converged << " / " << e.search.starts << " | "
        << lie::to_decimal(e.best.projected_gradient, 2) << " | " << lie::to_decimal(e.best.order_residual, 2) << " |\n";
@@ -53,7 +47,7 @@ void ranking_table(std::ostringstream& md, const solver::two_parameter_result& r
 std::string coefficients_block(const solver::two_parameter_entry& e) {
   std::ostringstream o;
   const auto layout = bch::layout_scheme(e.word, e.split, e.permutation);
-  o << "```\n" << name_of(e) << "   word " << layout.permuted << "   ‖H_R5‖ = " << sig(e.best.remainder, 10) << "\n";
+  o << "```\n" << runs::two_parameter_name(e) << "   word " << layout.permuted << "   ‖H_R5‖ = " << sig(e.best.remainder, 10) << "\n";
   std::vector<std::string> seen;
   for (const auto& st : layout.stages) {
     if (std::find(seen.begin(), seen.end(), st.coefficient) != seen.end()) continue;
@@ -152,16 +146,16 @@ report_section two_parameter_section(const report_options& options) {
   const protocol_runner runner(body, 1, max_level);
   const auto table_of = [&](const solver::two_parameter_entry& e) {
     const auto s = solver::two_parameter_conditions(bch::layout_scheme(e.word, e.split, e.permutation), body);
-    return schemes::parse_scheme_table(solver::two_parameter_table_text(s, e.best, digits, body, name_of(e), "report"));
+    return schemes::parse_scheme_table(solver::two_parameter_table_text(s, e.best, digits, body, runs::two_parameter_name(e), "report"));
   };
   std::vector<scheme_curve> curves;
   curves.push_back(runner.run(solver::scheme_table_of(p1, body)));
   curves.back().name = p1.name();
   curves.push_back(runner.run(*schemes::reference_scheme("RS4-S5-McLachlan:CBA")));
   curves.push_back(runner.run(table_of(*best_q)));
-  curves.back().name = name_of(*best_q);
+  curves.back().name = runs::two_parameter_name(*best_q);
   curves.push_back(runner.run(table_of(*best_rs)));
-  curves.back().name = name_of(*best_rs);
+  curves.back().name = runs::two_parameter_name(*best_rs);
   const auto& p1_curve = curves[0];
   md << "### Against P1 BAC (5) (cost 11, ‖H_R5‖ = " << sig(p1.analytic_remainder, 5) << ") at equal cost\n\n"
      << "Predicted: R_P1 / R_new × (11 / C_new)^4, the ratio of the errors at equal h/C if the error were "
@@ -196,7 +190,7 @@ report_section two_parameter_section(const report_options& options) {
       const double ratio = ratio_at_equal_reduced_step(p1_screen, k);
       ++measured;
       better += ratio > 1;
-      md << "| " << name_of(e) << " | " << sig(e.best.remainder, 4) << " | "
+      md << "| " << runs::two_parameter_name(e) << " | " << sig(e.best.remainder, 4) << " | "
          << sig(p1.analytic_remainder / e.best.remainder * std::pow(11.0 / cost_of(e), 4), 3) << " | " << sig(ratio, 3) << " |\n";
     }
   md << "\n" << better << " of " << measured << " polished systems are more accurate than P1 BAC (5) at equal h/C.\n\n";

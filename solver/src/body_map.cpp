@@ -6,32 +6,34 @@
 #include <map>
 #include <stdexcept>
 
+#include "rotlie/bch/families.hpp"
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/bch/scheme_word.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 
 namespace rotlie::solver {
 
+namespace {
+
+// A family whose members the exact solver takes (N, R, P).
+const bch::family& solved_family(const std::string& family) {
+  const auto* f = bch::find_family(family);
+  if (f == nullptr || f->kind != bch::family_kind::one_free_parameter)
+    throw std::invalid_argument("the family must be " +
+                                bch::family_names([](const bch::family& g) { return g.kind == bch::family_kind::one_free_parameter; }) +
+                                ", got '" + family + "'");
+  return *f;
+}
+
+}  // namespace
+
 std::vector<std::string> family_schemes(const std::string& family) {
-  if (family == "R") return {"R"};
-  const int members = family == "N" ? 7 : family == "P" ? 15 : 0;
-  if (members == 0) throw std::invalid_argument("the family must be N, R or P, got '" + family + "'");
   std::vector<std::string> out;
-  for (int i = 1; i <= members; ++i) out.push_back(family + std::to_string(i));
+  for (const auto& m : solved_family(family).members) out.emplace_back(m.name);
   return out;
 }
 
-int family_cost(const std::string& family) {
-  int cost = -1;
-  for (const auto& name : family_schemes(family)) {
-    const auto named = bch::find_named_scheme(name);
-    // ABC: one rotation per stage; RS: the rotations about G gathered into one per step (section 4.1).
-    const int c = static_cast<int>(named->word.size()) + (named->split == bch::splitting::rs ? 1 : 0);
-    if (cost >= 0 && c != cost) throw std::logic_error("the members of family " + family + " differ in cost");
-    cost = c;
-  }
-  return cost;
-}
+int family_cost(const std::string& family) { return bch::family_cost(solved_family(family)); }
 
 int reference_cost(const std::string& name) {
   const auto t = schemes::reference_scheme(name);

@@ -1,16 +1,16 @@
-#include "rotlie/reports/map_check.hpp"
+#include "rotlie/runs/map_check.hpp"
 
 #include <algorithm>
 #include <optional>
 #include <random>
 
-#include "rotlie/reports/map_io.hpp"
+#include "rotlie/runs/map_file.hpp"
 #include "rotlie/solver/body_grid.hpp"
 #include "rotlie/solver/body_map.hpp"
 #include "rotlie/solver/continued_map.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 map_check_result check_map_lines(const std::string& family, int K, std::vector<nlohmann::json> bodies, std::size_t count,
                                  std::uint64_t seed, const std::function<void(int, int)>& progress) {
@@ -56,4 +56,4 @@ map_check_result check_map_lines(const std::string& family, int K, std::vector<n
   return out;
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

@@ -1,4 +1,4 @@
-#include "rotlie/reports/output_file.hpp"
+#include "rotlie/runs/output_file.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 namespace {
 
 // The named temporaries being written now, for the signal handler: a folder descriptor and a
@@ -191,4 +191,4 @@ std::string printable_path(const std::filesystem::path& path) {
   return out + "'";
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 struct map_check_result {
   int checked = 0;
@@ -25,4 +25,4 @@ struct map_check_result {
 map_check_result check_map_lines(const std::string& family, int K, std::vector<nlohmann::json> bodies, std::size_t count,
                                  std::uint64_t seed, const std::function<void(int done, int of)>& progress = {});
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

@@ -1,0 +1,31 @@
+#pragma once
+// Output files are written whole or not at all. The content goes to an unnamed file in the
+// target's folder (O_TMPFILE; a hidden `.rotlie-tmp-<pid>-<n>` file where the file system has no
+// unnamed files), is flushed to disk, then renamed over the target (atomic on POSIX file
+// systems), and the folder itself is flushed. A run killed even by SIGKILL therefore leaves at
+// most a hidden `.rotlie-tmp-` file, which the next report into that folder removes.
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace rotlie::runs {
+
+/// The name prefix of every temporary file.
+inline constexpr std::string_view temporary_prefix = ".rotlie-tmp-";
+
+/// Throws std::runtime_error with the path and the system's reason when the file cannot be written.
+void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+/// Removes the temporaries left in `dir` by processes that no longer run (a killed earlier run).
+/// Returns how many were removed; errors are ignored (the files are hidden and harmless).
+std::size_t remove_stale_temporaries(const std::filesystem::path& dir);
+
+/// Unlinks the named temporaries this process is writing right now. Async-signal-safe: meant
+/// for a SIGINT/SIGTERM handler that then ends the process.
+void remove_pending_temporaries() noexcept;
+
+/// A path for a one-line message: quoted, with control characters and bytes that are not
+/// printable ASCII written as \n, \t, \xNN, so that no folder name can break a message in two.
+std::string printable_path(const std::filesystem::path& path);
+
+}  // namespace rotlie::runs

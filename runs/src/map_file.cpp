@@ -1,0 +1,223 @@
+#include "rotlie/runs/map_file.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cln/integer.h>
+#include <cln/rational.h>
+#include <cln/rational_io.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "rotlie/lie/exact_number.hpp"
+#include "rotlie/runs/output_file.hpp"
+#include "rotlie/runs/user_input.hpp"
+#include "rotlie/solver/scheme_table.hpp"
+
+namespace rotlie::runs {
+
+std::string fraction_text(const cln::cl_RA& x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+namespace {
+
+nlohmann::ordered_json body_fields(const solver::grid_body& g, const std::string& family) {
+  nlohmann::ordered_json j;
+  j["s"] = fraction_text(g.s);
+  j["t"] = fraction_text(g.t);
+  j["I"] = {fraction_text(g.body.I[0]), fraction_text(g.body.I[1]), fraction_text(g.body.I[2])};
+  j["family"] = family;
+  return j;
+}
+
+}  // namespace
+
+nlohmann::ordered_json map_header(const std::string& family, int K, std::size_t bodies, const std::string& method) {
+  nlohmann::ordered_json j;
+  j["rotlie_map"] = map_format_version;
+  j["family"] = family;
+  j["grid"] = K;
+  j["bodies"] = bodies;
+  j["reference"] = solver::map_reference_scheme;
+  j["method"] = method;
+  return j;
+}
+
+nlohmann::ordered_json map_line(const solver::grid_body& g, const solver::map_point& p) {
+  auto j = body_fields(g, p.family);
+  const std::string reference = solver::map_reference_scheme;
+  j["best"] = p.best ? nlohmann::ordered_json(solver::scheme_table_name(*p.best)) : nlohmann::ordered_json();
+  j["remainder"] = p.best ? nlohmann::ordered_json(p.best->analytic_remainder) : nlohmann::ordered_json();
+  j["reference"] = reference + ":" + p.reference_permutation;
+  j["reference_remainder"] = p.reference_remainder;
+  j["ratio"] = p.ratio ? nlohmann::ordered_json(*p.ratio) : nlohmann::ordered_json();
+  j["flat"] = g.flat;
+  nlohmann::ordered_json singular = nlohmann::ordered_json::array();
+  for (const auto& s : p.singular) singular.push_back(s.scheme + ":" + s.permutation);
+  j["singular"] = singular;
+  // The screened path knows the solutions of the systems it confirmed only (screened_map.hpp).
+  j["real_solutions"] = p.complete ? nlohmann::ordered_json(p.real_solutions) : nlohmann::ordered_json();
+  nlohmann::ordered_json perms = nlohmann::ordered_json::array();
+  for (std::size_t k = 0; k < p.per_permutation.size(); ++k) {
+    const auto& b = p.per_permutation[k];
+    nlohmann::ordered_json e;
+    e["perm"] = b.permutation;
+    e["best"] = b.best && b.confirmed ? nlohmann::ordered_json(solver::scheme_table_name(*b.best)) : nlohmann::ordered_json();
+    if (b.best && !b.confirmed) e["unconfirmed_best"] = b.best->scheme + ":" + b.best->permutation;  // label unknown
+    e["remainder"] = b.best ? nlohmann::ordered_json(b.best->analytic_remainder) : nlohmann::ordered_json();
+    e["reference_remainder"] = p.reference_remainders[k];
+    perms.push_back(std::move(e));
+  }
+  j["permutations"] = perms;
+  return j;
+}
+
+nlohmann::ordered_json map_failure_line(const solver::grid_body& g, const std::string& family, const std::string& why) {
+  auto j = body_fields(g, family);
+  j["failed"] = why;
+  return j;
+}
+
+std::optional<std::pair<int, int>> map_line_indices(const nlohmann::json& line, int K) {
+  if (!line.is_object() || !line.contains("s") || !line.contains("t") || !line["s"].is_string() || !line["t"].is_string())
+    return std::nullopt;
+  const auto s = lie::parse_exact_number(line["s"].get<std::string>());
+  const auto t = lie::parse_exact_number(line["t"].get<std::string>());
+  if (!s || !t) return std::nullopt;
+  const cln::cl_RA is = *s * K, jt = *t * K;
+  if (cln::denominator(is) != 1 || cln::denominator(jt) != 1) return std::nullopt;
+  if (is < 0 || is > K || jt < 0 || jt > K) return std::nullopt;
+  const long i = cln::cl_I_to_long(cln::the<cln::cl_I>(is)), j = cln::cl_I_to_long(cln::the<cln::cl_I>(jt));
+  if (i < 0 || i > K || j < 0 || j > K) return std::nullopt;
+  return std::pair<int, int>(static_cast<int>(i), static_cast<int>(j));
+}
+
+
+std::filesystem::path map_file_path(const std::filesystem::path& folder, const std::string& family) {
+  return folder / ("map-" + family + ".jsonl");
+}
+
+map_file_text read_map_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read the map file " + printable_path(path));
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  map_file_text out;
+  for (std::size_t at = 0;;) {
+    const auto end = text.find('\n', at);
+    if (end == std::string::npos) break;  // a torn last line (a killed write): dropped
+    out.lines.push_back(text.substr(at, end - at));
+    at = end + 1;
+    out.whole_length = at;
+  }
+  return out;
+}
+
+std::optional<map_contents> read_map_contents(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return std::nullopt;
+  const auto text = read_map_file(path);
+  if (text.lines.empty()) return std::nullopt;
+  map_contents m;
+  m.header = nlohmann::json::parse(text.lines.front(), nullptr, false);
+  if (m.header.is_discarded() || !m.header.is_object() || !m.header.contains("grid") || !m.header["grid"].is_number_integer() ||
+      !m.header.contains("family") || !m.header["family"].is_string())
+    throw std::runtime_error(printable_path(path) + " has no map header");
+  m.family = m.header["family"].get<std::string>();
+  m.K = m.header["grid"].get<int>();
+  m.method = m.header.value("method", std::string("exact"));
+  for (std::size_t k = 1; k < text.lines.size(); ++k) {
+    auto j = nlohmann::json::parse(text.lines[k], nullptr, false);
+    if (!j.is_discarded() && j.is_object() && !j.contains("failed")) m.bodies.push_back(std::move(j));
+  }
+  return m;
+}
+
+resumed_map resume_map_file(const std::filesystem::path& path, const std::string& family, int K, const std::string& method,
+                            const std::vector<solver::grid_body>& bodies) {
+  resumed_map out;
+  out.done.assign(bodies.size(), 0);
+  map_file_text text;
+  try {
+    text = read_map_file(path);
+  } catch (const std::runtime_error&) {
+    throw bad_input("--resume: cannot read '" + path.string() + "'");
+  }
+  out.whole_length = text.whole_length;
+  std::map<long, std::size_t> index_of;
+  for (std::size_t k = 0; k < bodies.size(); ++k) index_of[static_cast<long>(bodies[k].i) * (K + 1) + bodies[k].j] = k;
+  const std::string refusal = "--resume: " + printable_path(path) + " ";
+  for (std::size_t n = 0; n < text.lines.size(); ++n) {
+    const std::size_t line_number = n + 1;
+    const auto j = nlohmann::json::parse(text.lines[n], nullptr, false);
+    if (line_number == 1) {
+      if (j.is_discarded() || !j.is_object() || !j.contains("rotlie_map"))
+        throw bad_input(refusal + "is not a rotlie map file; it is left as it is");
+      if (j.value("rotlie_map", 0) != map_format_version || j.value("family", "") != family || j.value("grid", 0) != K)
+        throw bad_input(refusal + "holds the map of family " + j.value("family", "?") + " at --grid " +
+                        std::to_string(j.value("grid", 0)) + ", not " + family + " at --grid " + std::to_string(K) +
+                        "; it is left as it is");
+      if (j.value("method", "exact") != method) {
+        const auto flag = [](const std::string& m) { return m == "exact" ? std::string("--exact") : std::string("--fast"); };
+        throw bad_input(refusal + "was computed with " + flag(j.value("method", "exact")) + ", not " + flag(method) +
+                        "; it is left as it is");
+      }
+      out.has_header = true;
+      continue;
+    }
+    const auto ij = j.is_discarded() ? std::nullopt : map_line_indices(j, K);
+    const auto found = ij ? index_of.find(static_cast<long>(ij->first) * (K + 1) + ij->second) : index_of.end();
+    if (found == index_of.end() || j.value("family", "") != family)
+      throw bad_input(refusal + "line " + std::to_string(line_number) + " is not a body of this map; it is left as it is");
+    if (out.done[found->second] != 0)
+      throw bad_input(refusal + "line " + std::to_string(line_number) + " repeats a body; it is left as it is");
+    out.done[found->second] = 1;
+    out.lines.push_back(text.lines[n]);
+  }
+  return out;
+}
+
+namespace {
+
+void write_all(int fd, const std::string& text, const std::filesystem::path& path) {
+  std::size_t written = 0;
+  while (written < text.size()) {
+    const auto n = ::write(fd, text.data() + written, text.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw std::runtime_error("cannot write to '" + printable_path(path) + "': " + std::strerror(errno));
+    written += static_cast<std::size_t>(n);
+  }
+}
+
+}  // namespace
+
+map_file_writer::map_file_writer(const std::filesystem::path& path, const resumed_map& existing, const std::string& header)
+    : path_(path) {
+  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (fd_ < 0) throw std::runtime_error("cannot open '" + printable_path(path) + "': " + std::strerror(errno));
+  if (::ftruncate(fd_, static_cast<off_t>(existing.has_header ? existing.whole_length : 0)) != 0)
+    throw std::runtime_error("cannot truncate '" + printable_path(path) + "': " + std::strerror(errno));
+  if (!existing.has_header) write_all(fd_, header + "\n", path_);
+}
+
+map_file_writer::~map_file_writer() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void map_file_writer::append(const std::string& line) { write_all(fd_, line + "\n", path_); }
+
+void map_file_writer::finish() {
+  if (::fsync(fd_) != 0 && errno != EINVAL)
+    throw std::runtime_error("cannot flush '" + printable_path(path_) + "': " + std::strerror(errno));
+}
+
+}  // namespace rotlie::runs

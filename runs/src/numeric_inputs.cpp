@@ -1,0 +1,67 @@
+#include "rotlie/runs/numeric_inputs.hpp"
+
+#include <cln/real.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "exact_range.hpp"
+#include "rotlie/lie/exact_number.hpp"
+#include "rotlie/runs/body_names.hpp"
+#include "rotlie/runs/user_input.hpp"
+
+namespace rotlie::runs {
+
+double positive_number(const std::string& text, const std::string& what) {
+  const auto x = lie::parse_exact_number(text);
+  if (!x) {
+    const auto why = why_not_a_number(text);
+    if (why == "is not a number") throw bad_input(what + " must be a number such as 0.01 or 1/64, got '" + text + "'");
+    throw bad_input(what + " '" + text + "' " + why);
+  }
+  if (!cln::plusp(*x)) throw bad_input(what + " must be positive, got '" + text + "'");
+  if (!magnitude_in_range(*x)) throw bad_input(what + " '" + text + "' is outside the range " + range_text());
+  return cln::double_approx(*x);
+}
+
+models::vec3<double> initial_momentum(const std::string& text) {
+  models::vec3<double> g{};
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto comma = text.find(',', start);
+    if ((i < 2) == (comma == std::string::npos)) throw bad_input("--G0 takes three components g1,g2,g3, got '" + text + "'");
+    const std::string part = text.substr(start, i < 2 ? comma - start : std::string::npos);
+    const auto x = lie::parse_exact_number(part);
+    if (!x) throw bad_input("--G0: g" + std::to_string(i + 1) + " = '" + part + "' " + why_not_a_number(part));
+    if (!magnitude_in_range(*x) && cln::abs(*x) > 1)
+      throw bad_input("--G0: g" + std::to_string(i + 1) + " = '" + part + "' is outside the range " + range_text());
+    g[i] = cln::double_approx(*x);  // a component below the range may round to 0: only |G0| matters
+    start = comma + 1;
+  }
+  if (g[0] == 0 && g[1] == 0 && g[2] == 0) throw bad_input("--G0 must not be zero, got '" + text + "'");
+  const double length = std::hypot(g[0], g[1], g[2]), range = std::pow(10.0, max_decimal_exponent);
+  if (length * range < 1) throw bad_input("--G0: |G0| = " + shown(length) + " is outside the range " + range_text());
+  // Squares of smaller components underflow in double: the computation could not see them.
+  for (std::size_t i = 0; i < 3; ++i)
+    if (g[i] != 0 && std::abs(g[i]) * range < length)
+      throw bad_input("--G0: g" + std::to_string(i + 1) + " = " + shown(g[i]) + " is below 1e-" +
+                      std::to_string(max_decimal_exponent) + " |G0|; give 0 or a larger value");
+  return g;
+}
+
+void check_numeric_scales(const std::string& inertia, const std::string& g0, const std::string& total) {
+  const auto I = to_double(numeric_body(inertia));
+  const auto g = initial_momentum(g0);
+  const double T = positive_number(total, "--T");
+  const double smallest = std::min({I[0], I[1], I[2]});
+  const double rate = std::hypot(g[0], g[1], g[2]) / smallest;  // ≤ 1e300: finite
+  const double limit = std::pow(10.0, max_decimal_exponent);
+  if (rate > limit || rate < 1 / limit)
+    throw bad_input("the angular rate |G0|/I_min = " + shown(rate) + " of --G0 and --inertia is outside the range " +
+                    range_text());
+  if (rate * T > limit)
+    throw bad_input("--T: the body turns by |G0| T / I_min = " + shown(rate * T) + " radians, outside the range " +
+                    range_text());
+}
+
+}  // namespace rotlie::runs

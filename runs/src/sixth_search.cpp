@@ -1,0 +1,164 @@
+#include "rotlie/runs/sixth_search.hpp"
+
+#include <cln/real.h>
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "rotlie/runs/user_input.hpp"
+#include "rotlie/solver/sixth_order_search.hpp"
+
+namespace rotlie::runs {
+namespace {
+
+namespace fs = std::filesystem;
+
+double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream s(text);
+  for (std::string item; std::getline(s, item, ',');) out.push_back(item);
+  return out;
+}
+
+void save_state(const fs::path& file, const std::vector<solver::scanned_system>& done) {
+  const fs::path temporary = file.string() + ".part";
+  {
+    std::ofstream out(temporary);
+    solver::write_scan_state(out, done);
+    if (!out) throw std::runtime_error("cannot write " + temporary.string());
+  }
+  fs::rename(temporary, file);
+}
+
+// Systems already in the state file keep their starts and roots.
+std::vector<solver::scanned_system> resumed_state(const fs::path& state) {
+  if (state.empty() || !fs::exists(state)) return {};
+  std::ifstream in(state);
+  try {
+    return solver::read_scan_state(in);
+  } catch (const std::invalid_argument& e) {
+    throw bad_input(state.string() + ": " + e.what() + " (remove it to start again)");
+  }
+}
+
+// A root polished to the digits asked for and written as a table, or why it could not be (a root
+// whose Jacobian is singular is not isolated: a family).
+sixth_order_table polished_table(const solver::ranked_root& r, const sixth_search_request& q, int label) {
+  sixth_order_table t;
+  t.word = r.word;
+  t.permutation = r.permutation;
+  t.remainder7 = r.remainder7;
+  const auto system = solver::sixth_order_conditions(bch::layout_scheme(r.word, q.split, r.permutation), q.body);
+  std::vector<cln::cl_RA> x;
+  try {
+    x = solver::polished_root(system, r.x, q.digits);
+  } catch (const std::runtime_error& e) {
+    t.why = e.what();
+    t.jacobian_ratio = solver::jacobian_condition_ratio(system, r.x);
+    long double smallest = std::numeric_limits<long double>::infinity();
+    for (long double v : r.x) smallest = std::min(smallest, std::abs(v));
+    t.smallest_free_coefficient = static_cast<double>(smallest);
+    return t;
+  }
+  t.polished = true;
+  t.jacobian_ratio = solver::jacobian_condition_ratio(system, r.x);
+  t.residual = cln::double_approx(solver::sixth_order_residual(system, x, q.digits));
+  t.remainder7_at_equal_cost = r.remainder7_at_equal_cost();
+  t.cost = r.cost;
+  t.max_coefficient = r.max_coefficient;
+  t.hits = r.hits;
+  t.name = "D6:" + r.word + ":" + r.permutation + ":" + std::to_string(label);
+  if (!q.out.empty()) {
+    t.file = (q.out / ("D6-" + r.word + "-" + r.permutation + "-" + std::to_string(label) + ".table")).string();
+    std::ofstream out(t.file);
+    out << solver::sixth_order_table_text(system, x, q.digits, q.body, t.name,
+                                          "rotlie sixth: H_R3 = H_R5 = 0 solved by Newton from random starts, polished");
+    if (!out) throw std::runtime_error("cannot write " + t.file);
+  }
+  return t;
+}
+
+}  // namespace
+
+std::vector<solver::scanned_system> sixth_order_systems(const std::string& words, bool all, bch::splitting split,
+                                                        bool sphere) {
+  const int length = split == bch::splitting::abc ? 21 : 19;
+  const auto all_words = solver::palindromic_words(length, split);
+  const std::vector<std::string> perms = sphere ? std::vector<std::string>{"ABC"} : bch::permutation_names();
+  std::vector<solver::scanned_system> out;
+  if (all) {
+    for (const auto& w : all_words)
+      for (const auto& p : perms) out.push_back({w, p});
+    return out;
+  }
+  for (const auto& item : split_list(words)) {
+    const auto colon = item.find(':');
+    const std::string word = item.substr(0, colon);
+    if (std::find(all_words.begin(), all_words.end(), word) == all_words.end())
+      throw bad_input("--words: '" + one_line(word) + "' is not a " + std::to_string(length) +
+                      "-stage palindrome in first-appearance naming (letters " +
+                      (split == bch::splitting::abc ? "ABC, starting AB" : "RS, starting R") + ", no letter twice in a row)");
+    if (colon == std::string::npos) {
+      for (const auto& p : perms) out.push_back({word, p});
+    } else {
+      const std::string perm = item.substr(colon + 1);
+      if (!bch::is_permutation_name(perm)) throw bad_input("--words: unknown permutation '" + one_line(perm) + "' in '" + one_line(item) + "'");
+      out.push_back({word, perm});
+    }
+  }
+  return out;
+}
+
+sixth_search_result sixth_search(const sixth_search_request& q, const std::function<void(const std::string&)>& progress) {
+  const fs::path state = q.out.empty() ? fs::path() : q.out / "scan-state.txt";
+  if (!q.out.empty()) fs::create_directories(q.out);
+  auto done = resumed_state(state);
+  solver::scan_rule rule;
+  rule.budget = q.starts;
+  const double cpu0 = cpu_seconds();
+  std::size_t index = 0;
+  for (const auto& a : q.systems) {
+    ++index;
+    auto it = std::find_if(done.begin(), done.end(), [&](const auto& d) { return d.word == a.word && d.permutation == a.permutation; });
+    if (it == done.end()) {
+      done.push_back(a);
+      it = std::prev(done.end());
+    }
+    if (it->finished || it->starts >= rule.budget) continue;
+    if (progress)
+      progress("sixth: system " + std::to_string(index) + " of " + std::to_string(q.systems.size()) + ", " + a.word + ":" + a.permutation);
+    const auto system = solver::sixth_order_conditions(bch::layout_scheme(a.word, q.split, a.permutation), q.body);
+    solver::continue_scan(system, *it, rule);
+    if (!state.empty()) save_state(state, done);
+  }
+  // Only the systems asked for are reported (the state may hold more).
+  std::vector<solver::scanned_system> reported;
+  for (const auto& d : done)
+    if (std::any_of(q.systems.begin(), q.systems.end(), [&](const auto& a) { return a.word == d.word && a.permutation == d.permutation; }))
+      reported.push_back(d);
+  sixth_search_result result;
+  result.stats = solver::statistics_of(reported);
+  int written = 0;
+  std::map<std::string, int> labels;  // the k-th best root of a system is label k
+  for (const auto& r : solver::rank_roots(reported, q.body, q.split)) {
+    if (written >= q.best) break;
+    const int label = labels[r.word + ":" + r.permutation] + 1;
+    auto t = polished_table(r, q, label);
+    if (t.polished) {
+      ++written;
+      labels[r.word + ":" + r.permutation] = label;
+    }
+    result.best.push_back(std::move(t));
+  }
+  result.cpu_seconds = cpu_seconds() - cpu0;
+  return result;
+}
+
+}  // namespace rotlie::runs
