@@ -19,7 +19,7 @@
 #include "rotlie/models/exact_free_body.hpp"
 #include "rotlie/models/integrate.hpp"
 #include "rotlie/models/moments_from_text.hpp"
-#include "rotlie/reports/protocol_curves.hpp"
+#include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 
@@ -114,7 +114,7 @@ double seconds_per_run(const method& m, long n, double T) {
 
 schemes::scheme_table dedicated(const std::string& scheme, const std::string& perm, int label) {
   const auto body = lie::parse_moments("water");
-  return solver::scheme_table_of(reports::find_solution(solver::solve_dedicated(body, {scheme}, {perm}, 40), scheme, perm, label),
+  return solver::scheme_table_of(runs::find_solution(solver::solve_dedicated(body, {scheme}, {perm}, 40), scheme, perm, label),
                            body);
 }
 

@@ -14,7 +14,7 @@
 
 #include "rotlie/models/experiments/md_experiment.hpp"
 #include "rotlie/models/scenes/dipole_field.hpp"
-#include "rotlie/reports/protocol_curves.hpp"
+#include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
 namespace {
@@ -39,7 +39,7 @@ const schemes::scheme_table* dedicated(const std::string& key) {
     const auto first = key.find(':'), second = key.rfind(':');
     const std::string scheme = key.substr(0, first), perm = key.substr(first + 1, second - first - 1);
     const auto r = solver::solve_dedicated(water, {scheme}, {perm}, 40);
-    tables.emplace(key, solver::scheme_table_of(reports::find_solution(r, scheme, perm, std::stoi(key.substr(second + 1))), water));
+    tables.emplace(key, solver::scheme_table_of(runs::find_solution(r, scheme, perm, std::stoi(key.substr(second + 1))), water));
   }
   return &tables.at(key);
 }

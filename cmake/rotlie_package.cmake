@@ -1,5 +1,5 @@
 # The installed CMake package: find_package(rotlie) then rotlie::schemes, rotlie::models (component
-# numeric, always) and rotlie::lie, bch, solver, reports (component symbolic, when built).
+# numeric, always) and rotlie::lie, bch, solver, runs, reports (component symbolic, when built).
 include(CMakePackageConfigHelpers)
 set(ROTLIE_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/rotlie)
 

@@ -3,7 +3,7 @@
 // map's answer (LV section 5) for a body off the grid. Every name is one that `integrate` accepts
 // with the same --inertia. The measured column (unless --analytic-only): every real solution of
 // every system of each family and every reference scheme at every permutation, run with the
-// numeric protocol at the fixed reduced step h/C = 1/1980 (reports/measured_best.hpp).
+// numeric protocol at the fixed reduced step h/C = 1/1980 (runs/measured_best.hpp).
 #include <cmath>
 #include <ctime>
 #include <limits>
@@ -16,7 +16,7 @@
 #include "rotlie/bch/scheme_word.hpp"
 #include "rotlie/bch/families.hpp"
 #include "rotlie/runs/map_file.hpp"
-#include "rotlie/reports/measured_best.hpp"
+#include "rotlie/runs/measured_best.hpp"
 #include "rotlie/solver/body_grid.hpp"
 #include "rotlie/solver/body_map.hpp"
 #include "rotlie/solver/scheme_table.hpp"
@@ -41,7 +41,7 @@ struct measured_family {
   double analytic_best_error = 0;              ///< the measured error of the analytic best
 };
 
-measured_family measure_family(const reports::fixed_reduced_step_protocol& protocol, const lie::moments_of_inertia& body,
+measured_family measure_family(const runs::fixed_reduced_step_protocol& protocol, const lie::moments_of_inertia& body,
                                const solver::family_result& solved, const solver::map_point& point) {
   measured_family m;
   for (const auto& x : solved.solutions) {
@@ -73,10 +73,10 @@ int run_best(const best_options& options) {
   const double start = process_cpu_seconds();
   std::vector<solver::map_point> points;
   std::vector<measured_family> measured;
-  std::vector<reports::measured_reference> references;
+  std::vector<runs::measured_reference> references;
   {
     progress_line progress;  // cleared before the answer is printed
-    const reports::fixed_reduced_step_protocol protocol(body);
+    const runs::fixed_reduced_step_protocol protocol(body);
     for (const auto& f : bch::families()) {
       if (f.kind != bch::family_kind::one_free_parameter) continue;  // the maps' families: N, R, P
       const std::string family(f.name);
@@ -91,13 +91,13 @@ int run_best(const best_options& options) {
     }
     if (!options.analytic_only) {
       progress.show("best: measuring every reference scheme at every permutation");
-      references = reports::measure_references(protocol);
+      references = runs::measure_references(protocol);
     }
   }
   const double cpu_seconds = process_cpu_seconds() - start;
   // The measured reference of the gains: RS4 S5 McLachlan at its best measured permutation.
-  const reports::measured_reference* rs4 = nullptr;
-  const reports::measured_reference* best_reference = nullptr;
+  const runs::measured_reference* rs4 = nullptr;
+  const runs::measured_reference* best_reference = nullptr;
   for (const auto& r : references) {
     if (r.name.rfind(std::string(solver::map_reference_scheme) + ":", 0) == 0) rs4 = &r;
     if (!best_reference || r.error < best_reference->error) best_reference = &r;

@@ -1,17 +1,24 @@
 // Report section "Accuracy against cost": LV section 4 regenerated. Figs. 1-2 and Table 3's
 // numeric column (spherical top), Figs. 3-5 (water), each also against measured CPU time, and the
 // paper's accuracy claims next to ours. The curves and claims are computed by
-// compute_accuracy_curves (accuracy_curves.cpp); this file renders them.
+// compute_accuracy_curves (runs/accuracy_curves.cpp); this file renders them.
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 
-#include "rotlie/reports/accuracy_curves.hpp"
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/report.hpp"
+#include "rotlie/runs/accuracy_curves.hpp"
 
 namespace rotlie::reports {
+
+// From the runs library (rotlie::runs):
+using runs::compute_accuracy_curves;
+using runs::curve_named;
+using runs::ratio_at_equal_cpu_time;
+using runs::scheme_curve;
+
 namespace {
 
 enum class axis { reduced_step, cpu };

@@ -18,13 +18,18 @@
 #include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/reports/audit_table.hpp"
 #include "rotlie/reports/output_file.hpp"
-#include "rotlie/reports/protocol_curves.hpp"
 #include "rotlie/reports/report.hpp"
+#include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 #include "rotlie/solver/body_grid.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
 namespace rotlie::reports {
+
+// From the runs library (rotlie::runs):
+using runs::find_solution;
+using runs::protocol_runner;
+
 namespace {
 
 std::string fixed(double x, int digits) {

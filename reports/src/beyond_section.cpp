@@ -18,14 +18,22 @@
 #include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/output_file.hpp"
-#include "rotlie/reports/protocol_curves.hpp"
 #include "rotlie/reports/report.hpp"
+#include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 #include "rotlie/solver/sixth_order_scan.hpp"
 
 namespace rotlie::reports {
+
+// From the runs library (rotlie::runs):
+using runs::find_solution;
+using runs::protocol_runner;
+using runs::ratio_at_equal_cpu_time;
+using runs::ratio_at_equal_reduced_step;
+using runs::scheme_curve;
+
 namespace {
 
 using quad = boost::multiprecision::float128;

@@ -15,10 +15,14 @@
 #include "rotlie/models/scenes/water_model.hpp"
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/output_file.hpp"
-#include "rotlie/reports/protocol_curves.hpp"
+#include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
 namespace rotlie::reports {
+
+// From the runs library (rotlie::runs):
+using runs::find_solution;
+
 namespace {
 
 struct budget {

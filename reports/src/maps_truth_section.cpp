@@ -1,5 +1,5 @@
 // Section "maps-truth": do the maps tell the truth? (issue 14, item 6.) The maps' analytic ratio,
-// the measured ratio and two cheap predictors, over a fixed set of bodies (maps_truth.hpp).
+// the measured ratio and two cheap predictors, over a fixed set of bodies (runs/maps_truth.hpp).
 #include <algorithm>
 #include <cmath>
 #include <ctime>
@@ -8,13 +8,24 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "rotlie/reports/maps_truth.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/reports/triangle_contour.hpp"
+#include "rotlie/runs/maps_truth.hpp"
+#include "rotlie/runs/maps_truth_csv.hpp"
 #include "rotlie/solver/body_grid.hpp"
 
 namespace rotlie::reports {
+
+// From the runs library (rotlie::runs):
+using runs::measure_body_truth;
+using runs::spearman;
+using runs::truth_bodies;
+using runs::truth_csv_header;
+using runs::truth_csv_rows;
+using runs::truth_max_level;
+using runs::truth_min_level;
+
 namespace {
 
 constexpr int default_grid = 5;  // 20 asymmetric grid bodies and water: about 2 CPU minutes

@@ -6,12 +6,17 @@
 #include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/models/stability_scan.hpp"
 #include "rotlie/reports/chart.hpp"
-#include "rotlie/reports/protocol_curves.hpp"
+#include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 
 namespace rotlie::reports {
+
+// From the runs library (rotlie::runs):
+using runs::find_solution;
+using runs::protocol_runner;
+
 namespace {
 
 constexpr double threshold = 0.1;  // mean attitude error (or relative energy error) that counts as failure

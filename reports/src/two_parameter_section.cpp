@@ -11,13 +11,21 @@
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/runs/family_names.hpp"
 #include "rotlie/reports/chart.hpp"
-#include "rotlie/reports/protocol_curves.hpp"
 #include "rotlie/reports/report.hpp"
+#include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 #include "rotlie/solver/two_parameter.hpp"
 
 namespace rotlie::reports {
+
+// From the runs library (rotlie::runs):
+using runs::find_solution;
+using runs::protocol_runner;
+using runs::ratio_at_equal_cpu_time;
+using runs::ratio_at_equal_reduced_step;
+using runs::scheme_curve;
+
 namespace {
 
 constexpr int digits = 45;

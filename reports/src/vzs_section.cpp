@@ -17,10 +17,14 @@
 #include "rotlie/models/experiments/dipole_field_experiment.hpp"
 #include "rotlie/models/experiments/free_water_experiment.hpp"
 #include "rotlie/reports/chart.hpp"
-#include "rotlie/reports/protocol_curves.hpp"
+#include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
 namespace rotlie::reports {
+
+// From the runs library (rotlie::runs):
+using runs::find_solution;
+
 namespace {
 
 using quad = boost::multiprecision::float128;

@@ -8,7 +8,7 @@
 
 #include "rotlie/models/exact_free_body.hpp"
 #include "rotlie/models/remainder_predictor.hpp"
-#include "rotlie/reports/maps_truth.hpp"
+#include "rotlie/runs/maps_truth.hpp"
 
 using namespace rotlie;
 
@@ -40,11 +40,11 @@ BOOST_AUTO_TEST_CASE(a_remainder_proportional_to_H_is_a_time_rescaling) {
 }
 
 BOOST_AUTO_TEST_CASE(spearman_rank_correlation) {
-  BOOST_TEST(reports::spearman({1, 2, 3, 4}, {10, 20, 30, 1000}) == 1.0);
-  BOOST_TEST(reports::spearman({1, 2, 3, 4}, {4, 3, 2, 1}) == -1.0);
+  BOOST_TEST(runs::spearman({1, 2, 3, 4}, {10, 20, 30, 1000}) == 1.0);
+  BOOST_TEST(runs::spearman({1, 2, 3, 4}, {4, 3, 2, 1}) == -1.0);
   // ranks (1, 2, 3, 4, 5) against (2, 1, 4, 3, 5): Σd² = 4, ρ = 1 − 6·4 / (5·24) = 0.8
-  BOOST_TEST(std::abs(reports::spearman({1, 2, 3, 4, 5}, {2, 1, 4, 3, 5}) - 0.8) < 1e-12);
-  BOOST_TEST(std::isnan(reports::spearman({1, 2}, {1, 2})));
+  BOOST_TEST(std::abs(runs::spearman({1, 2, 3, 4, 5}, {2, 1, 4, 3, 5}) - 0.8) < 1e-12);
+  BOOST_TEST(std::isnan(runs::spearman({1, 2}, {1, 2})));
 }
 
 // Three bodies whose N ratios are far apart (spherical-top edge, water, a flat-edge body): the
@@ -55,7 +55,7 @@ BOOST_AUTO_TEST_CASE(the_transported_remainder_predicts_the_measured_ratio) {
                                                       lie::parse_moments("3/11,8/11,1")};
   std::vector<double> measured, predicted;
   for (const auto& body : bodies) {
-    const auto b = reports::measure_body_truth(body, {"N"});
+    const auto b = runs::measure_body_truth(body, {"N"});
     BOOST_TEST_REQUIRE(b.families.size() == 1u);
     const auto& f = b.families[0];
     BOOST_TEST_REQUIRE(f.best.has_value());
@@ -68,7 +68,7 @@ BOOST_AUTO_TEST_CASE(the_transported_remainder_predicts_the_measured_ratio) {
     measured.push_back(f.measured_ratio_h);
     predicted.push_back(f.predicted_ratio);
   }
-  BOOST_TEST(reports::spearman(measured, predicted) == 1.0);
+  BOOST_TEST(runs::spearman(measured, predicted) == 1.0);
   // the bodies were chosen so that the answer is clear: ratios at least 1.2× apart, far beyond
   // the 2 % the predictor is allowed
   BOOST_TEST(std::abs(std::log(measured[0] / measured[1])) > std::log(1.2));

@@ -1,4 +1,4 @@
-#include "rotlie/reports/measured_best.hpp"
+#include "rotlie/runs/measured_best.hpp"
 
 #include <cmath>
 #include <limits>
@@ -11,7 +11,7 @@
 #include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 namespace {
 
 long steps_for_cost(int cost) {
@@ -79,4 +79,4 @@ std::vector<measured_reference> measure_references(const fixed_reduced_step_prot
   return out;
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

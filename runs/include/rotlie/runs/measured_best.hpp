@@ -12,7 +12,7 @@
 #include "rotlie/lie/rigid_body.hpp"
 #include "rotlie/schemes/scheme_table.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 inline constexpr int measured_best_steps_per_cost = 1980;  ///< 1 / (h/C)
 
@@ -37,4 +37,4 @@ struct measured_reference {
 /// Every reference scheme (schemes::reference_scheme_names) at its best measured permutation.
 std::vector<measured_reference> measure_references(const fixed_reduced_step_protocol& protocol);
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

@@ -11,10 +11,10 @@
 
 #include "rotlie/lie/rigid_body.hpp"
 #include "rotlie/models/remainder_predictor.hpp"
-#include "rotlie/reports/protocol_curves.hpp"
+#include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 /// The protocol's step levels for the study: h = 2^-5 … 2^-9, constants fitted on the 3 finest.
 inline constexpr int truth_min_level = 5, truth_max_level = 9;
@@ -60,9 +60,4 @@ std::vector<lie::moments_of_inertia> truth_bodies(int K);
 /// Spearman's rank correlation (average ranks for ties); NaN for fewer than 3 pairs.
 double spearman(const std::vector<double>& x, const std::vector<double>& y);
 
-/// The CSV contract: I1,I2,I3,family,best,analytic_ratio,measured_ratio_h,measured_ratio_cpu, then
-/// predicted_ratio,gradient_ratio,slope,predicted_constant,measured_constant,reference.
-std::string truth_csv_header();
-std::string truth_csv_rows(const body_truth& b);
-
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

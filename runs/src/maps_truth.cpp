@@ -1,4 +1,4 @@
-#include "rotlie/reports/maps_truth.hpp"
+#include "rotlie/runs/maps_truth.hpp"
 
 #include <cln/real.h>
 
@@ -7,7 +7,6 @@
 #include <limits>
 #include <map>
 #include <numeric>
-#include <sstream>
 #include <stdexcept>
 
 #include <time.h>
@@ -22,7 +21,7 @@
 #include "rotlie/solver/body_map.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 namespace {
 
 std::array<cln::cl_RA, 3> unit_inverse_moments(const lie::moments_of_inertia& body) {
@@ -35,20 +34,6 @@ std::vector<models::remainder_term> terms_of(const lie::polynomial<double>& h5) 
   for (const auto& [m, c] : h5.terms())
     out.push_back({{static_cast<int>(m[0]), static_cast<int>(m[1]), static_cast<int>(m[2])}, c});
   return out;
-}
-
-std::string decimal(const cln::cl_RA& x) {
-  std::ostringstream s;
-  s.precision(17);
-  s << cln::double_approx(x);
-  return s.str();
-}
-
-std::string number(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
 }
 
 std::vector<double> ranks(const std::vector<double>& x) {
@@ -187,22 +172,4 @@ double spearman(const std::vector<double>& x, const std::vector<double>& y) {
   return sxy / std::sqrt(sxx * syy);
 }
 
-std::string truth_csv_header() {
-  return "I1,I2,I3,family,best,analytic_ratio,measured_ratio_h,measured_ratio_cpu,predicted_ratio,gradient_ratio,"
-         "slope,predicted_constant,measured_constant,reference\n";
-}
-
-std::string truth_csv_rows(const body_truth& b) {
-  std::string out;
-  for (const auto& f : b.families) {
-    if (!f.best) continue;  // no solution: nothing measured
-    out += decimal(b.body.I[0]) + "," + decimal(b.body.I[1]) + "," + decimal(b.body.I[2]) + "," + f.family + "," +
-           *f.best + "," + number(f.analytic_ratio) + "," + number(f.measured_ratio_h) + "," +
-           number(f.measured_ratio_cpu) + "," + number(f.predicted_ratio) + "," + number(f.gradient_ratio) + "," +
-           number(f.slope) + "," + number(f.predicted_constant) + "," + number(f.measured_constant) + "," +
-           b.reference + "\n";
-  }
-  return out;
-}
-
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

@@ -1,5 +1,5 @@
 // The paper's seven accuracy claims (LV section 4), each a ratio of two protocol curves computed
-// as the report computes them (reports::compute_accuracy_curves: the composition engine, the one
+// as the report computes them (runs::compute_accuracy_curves: the composition engine, the one
 // integrate loop, errors in long double, h = 2^-1 … 2^-10), checked against the paper's figure.
 // Tolerance 5 %: the paper prints its ratios to two significant figures (up to 3.3 % of rounding,
 // 6 % for its "8×"), and the report's own check allows 20 %.
@@ -8,12 +8,12 @@
 
 #include <cmath>
 
-#include "rotlie/reports/accuracy_curves.hpp"
+#include "rotlie/runs/accuracy_curves.hpp"
 
 using namespace rotlie;
 
 BOOST_AUTO_TEST_CASE(the_papers_seven_accuracy_claims_hold) {
-  const auto curves = reports::compute_accuracy_curves(10);
+  const auto curves = runs::compute_accuracy_curves(10);
   BOOST_TEST_REQUIRE(curves.claims.size() == 7u);
   for (const auto& c : curves.claims) {
     const double ours = c.at_equal_reduced_step();

@@ -11,7 +11,7 @@
 #include "rotlie/schemes/scheme_table.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 struct curve_point {
   double h = 0, h_over_cost = 0, error = 0, cpu_seconds = 0;  ///< cpu: per unit of simulated time
@@ -55,4 +55,4 @@ double ratio_at_equal_cpu_time(const scheme_curve& worse, const scheme_curve& be
 const solver::dedicated_solution& find_solution(const solver::family_result& r, const std::string& scheme,
                                                 const std::string& perm, int label);
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

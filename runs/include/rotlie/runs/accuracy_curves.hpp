@@ -1,15 +1,15 @@
 #pragma once
-// LV section 4 computed (the rendering is accuracy_section.cpp): the protocol curves of Figs. 1-5
-// for the spherical top and water, and the paper's seven accuracy claims as ratios of them.
+// LV section 4 computed (the rendering is reports/accuracy_section.cpp): the protocol curves of
+// Figs. 1-5 for the spherical top and water, and the paper's seven accuracy claims as ratios of them.
 #include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "rotlie/reports/protocol_curves.hpp"
+#include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 /// One of the paper's claims: `better` is `paper` times more accurate than `worse` (LV section 4).
 struct accuracy_claim {
@@ -46,4 +46,4 @@ const scheme_curve& curve_named(const std::vector<scheme_curve>& curves, const s
 /// std::logic_error when absent.
 const scheme_curve& best_permutation_of(const std::vector<scheme_curve>& curves, const std::string& base);
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

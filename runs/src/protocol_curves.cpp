@@ -1,4 +1,4 @@
-#include "rotlie/reports/protocol_curves.hpp"
+#include "rotlie/runs/protocol_curves.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 namespace {
 
 constexpr int fit_points = 3;
@@ -101,4 +101,4 @@ const solver::dedicated_solution& find_solution(const solver::family_result& r, 
   throw std::runtime_error("the solver found no " + scheme + " " + perm + " (" + std::to_string(label) + ")");
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

@@ -1,4 +1,4 @@
-#include "rotlie/reports/accuracy_curves.hpp"
+#include "rotlie/runs/accuracy_curves.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -8,7 +8,7 @@
 #include "rotlie/schemes/reference_schemes.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 namespace {
 
 const std::vector<std::string> n_family = {"N1", "N2", "N3", "N4", "N5", "N6", "N7"};
@@ -104,4 +104,4 @@ accuracy_curves compute_accuracy_curves(int max_level, const std::function<void(
   return a;
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs
