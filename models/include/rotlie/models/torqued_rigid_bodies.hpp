@@ -94,9 +94,11 @@ class torqued_rigid_bodies {
   void free_flight(const T& t, state& x) const {
     T v{};  // t/m of the current run of bodies of one type (one division per change of type)
     const type* ty = nullptr;
+    unsigned current = 0;
     for (auto& b : x.bodies) {
-      if (!ty || b.type != static_cast<unsigned>(ty - types_.data())) {
+      if (!ty || b.type != current) {
         ty = &type_of(b);
+        current = b.type;
         v = t / ty->mass;
       }
       for (std::size_t i = 0; i < 3; ++i) b.q[i] += v * b.p[i];
