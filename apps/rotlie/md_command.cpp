@@ -42,6 +42,7 @@ nlohmann::json number_or_null(double x) { return std::isfinite(x) ? nlohmann::js
 nlohmann::json pair_json(const models::mean_error& m) { return {number_or_null(m.mean), number_or_null(m.error)}; }
 
 struct resolved_run {
+  models::md_integrator integrator;  ///< --integrator, parsed once here
   models::md_run_options run;
   std::optional<schemes::scheme_table> rotor;  ///< the free-rotation table, resolved for the water body
   std::string dipole, field;
@@ -56,7 +57,7 @@ nlohmann::json run_json(const md_options& o, const resolved_run& r, int f, long 
 
 template <class T>
 int report_free_water(const md_options& o, const resolved_run& r) {
-  const auto result = models::run_free_water(models::free_water<T>{}, r.run);
+  const auto result = models::run_free_water(models::free_water<T>{}, r.integrator, r.run);
   if (!result.finite) throw std::runtime_error("the integration diverged (non-finite attitude): the step is beyond the integrator's stability limit");
   if (o.json) {
     nlohmann::json samples = nlohmann::json::array();
@@ -84,7 +85,7 @@ int report_free_water(const md_options& o, const resolved_run& r) {
 
 template <class T>
 int report_dipole_field(const md_options& o, const resolved_run& r) {
-  const auto result = models::run_dipole_field(models::dipole_field<T>(r.dipole, r.field), r.run);
+  const auto result = models::run_dipole_field(models::dipole_field<T>(r.dipole, r.field), r.integrator, r.run);
   if (result.failed_runs == r.run.runs)
     throw std::runtime_error("every run diverged (non-finite energy): the step is beyond the integrator's stability limit");
   if (o.json) {
@@ -122,16 +123,15 @@ int run_md(const md_options& o) {
   if (o.scalar != "double" && o.scalar != "long-double" && o.scalar != "float128")
     throw usage_error("--scalar must be double, long-double or float128, got '" + o.scalar + "'");
   resolved_run r;
-  models::md_integrator spec;
   try {
-    spec = models::md_integrator_named(o.integrator);
+    r.integrator = models::md_integrator_named(o.integrator);
   } catch (const std::invalid_argument& e) {
     throw usage_error(std::string("--integrator: ") + e.what());
   }
-  if (spec.rotor == models::rotor_kind::table) {
+  if (r.integrator.rotor == models::rotor_kind::table) {
     // a reference name or a dedicated SCHEME:PERM:LABEL, solved for the scene's water molecule
     try {
-      r.rotor = runs::scheme_named(spec.rotor_table, runs::numeric_body(water_body_text()), runs::foreign_table::refuse);
+      r.rotor = runs::scheme_named(r.integrator.rotor_table, runs::numeric_body(water_body_text()), runs::foreign_table::refuse);
     } catch (const runs::bad_input& e) {
       std::string why = e.what();
       if (why.rfind("--scheme: ", 0) == 0) why = why.substr(10);

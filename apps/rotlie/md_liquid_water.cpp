@@ -18,11 +18,18 @@ namespace rotlie::app {
 
 namespace {
 
-models::liquid_water_run_options checked(const md_liquid_water_options& o) {
-  models::liquid_water_run_options r;
+// The options checked, and --integrator parsed (once: everything below takes the parsed integrator).
+struct checked_options {
+  models::liquid_water_run_options run;
+  models::md_integrator integrator;
+};
+
+checked_options checked(const md_liquid_water_options& o) {
+  checked_options c;
+  auto& r = c.run;
   r.integrator = o.integrator;
   try {
-    (void)models::md_integrator_named(o.integrator);
+    c.integrator = models::md_integrator_named(o.integrator);
   } catch (const std::invalid_argument& e) {
     throw usage_error(std::string("--integrator: ") + e.what());
   }
@@ -40,29 +47,28 @@ models::liquid_water_run_options checked(const md_liquid_water_options& o) {
   } catch (const std::invalid_argument& e) {
     throw usage_error(e.what());
   }
-  return r;
+  return c;
 }
 
 // The rotor table of SIER2/X or SIER4/X (a reference name, or SCHEME:PERM:LABEL solved for the
 // TIP3P body); empty for the integrators with their own rotor. A table file solved for another
 // body is refused by the lookup.
-std::optional<schemes::scheme_table> rotor_of(const std::string& integrator) {
-  const auto spec = models::md_integrator_named(integrator);
-  if (spec.rotor != models::rotor_kind::table) return std::nullopt;
+std::optional<schemes::scheme_table> rotor_of(const models::md_integrator& integrator) {
+  if (integrator.rotor != models::rotor_kind::table) return std::nullopt;
   try {
-    return runs::scheme_named(spec.rotor_table, runs::numeric_body(models::tip3p_body_text()), runs::foreign_table::refuse);
+    return runs::scheme_named(integrator.rotor_table, runs::numeric_body(models::tip3p_body_text()), runs::foreign_table::refuse);
   } catch (const runs::bad_input& e) {
     std::string why = e.what();
     if (why.rfind("--scheme: ", 0) == 0) why = why.substr(10);
-    throw usage_error("--integrator " + integrator + ": " + why);
+    throw usage_error("--integrator " + integrator.name + ": " + why);
   }
 }
 
 }  // namespace
 
 int run_md_liquid_water(const md_liquid_water_options& options) {
-  auto o = checked(options);
-  const auto rotor = rotor_of(o.integrator);  // before the equilibration: a bad name costs nothing
+  auto [o, integrator] = checked(options);
+  const auto rotor = rotor_of(integrator);  // before the equilibration: a bad name costs nothing
   o.rotor_table = rotor ? &*rotor : nullptr;
   progress_line progress;
   auto show = [&](const std::string& line) { progress.show(line); };
@@ -72,7 +78,7 @@ int run_md_liquid_water(const md_liquid_water_options& options) {
   } catch (const std::invalid_argument& e) {  // a state file of another system, overlapping molecules
     throw usage_error(e.what());
   }
-  const auto r = models::run_liquid_water(o, start, show);
+  const auto r = models::run_liquid_water(o, integrator, start, show);
   if (options.json) {
     std::cout << nlohmann::json{{"scene", "liquid-water"},
                                 {"integrator", r.integrator},

@@ -5,6 +5,8 @@
 // bool (false stops the run early: a failure detected, a budget spent).
 #include <type_traits>
 
+#include "rotlie/models/scene_contracts.hpp"
+
 namespace rotlie::models {
 
 namespace detail {
@@ -21,6 +23,7 @@ bool notify(Observer& obs, long k, const T& t, const State& x) {
 
 /// Runs the composition; returns the number of steps done (< steps when an observer stopped it).
 template <class Composition, class... Observers>
+  requires(run_observer<Observers, typename Composition::state, typename Composition::scalar> && ...)
 long integrate(const Composition& method, typename Composition::state& x, const typename Composition::scalar& h,
                long steps, Observers&... observers) {
   using T = typename Composition::scalar;

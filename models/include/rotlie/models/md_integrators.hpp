@@ -76,38 +76,61 @@ inline md_integrator md_integrator_named(std::string_view name) {
                               "' (SIER2, SIER4, MRDL, MRDL-reversed, SEJ4, SIER2/TABLE, SIER4/TABLE)");
 }
 
-/// The composition of an integrator for bodies of mass m and moments I under `potential`, handed
-/// to visit(const composition<torqued_rigid_bodies<T, Potential, Rotor>>&) (every branch must
-/// return the same type). For rotor_kind::table the caller passes the resolved table, or nullptr
-/// to look the name up among the reference schemes. Throws std::invalid_argument when the table
-/// cannot be found or does not load.
+/// One body type as a scene states it; the rotor comes from the integrator. For rotor_kind::table,
+/// rotor_table is the table resolved for this body, or nullptr to look the name up among the
+/// reference schemes.
+template <class T>
+struct body_kind {
+  T mass;
+  vec3<T> moments;
+  const schemes::scheme_table* rotor_table = nullptr;
+};
+
+/// The composition of an integrator for bodies of several types under `potential`, in `units`, handed
+/// to visit(const composition<torqued_rigid_bodies<T, Potential, Rotor>>&) (every branch must return
+/// the same type). Throws std::invalid_argument when a table cannot be found or does not load.
+template <class T, class Potential, class Visitor>
+auto with_md_integrator(const md_integrator& spec, const std::vector<body_kind<T>>& kinds, const Potential& potential,
+                        const unit_system<T>& units, Visitor&& visit) {
+  static_assert(torque_potential<Potential, T>, "the scene's potential must be a torque_potential (scene_contracts.hpp)");
+  const auto tv = *schemes::reference_scheme(spec.tv_table);
+  // one rotor per body type, all of one kind
+  auto run = [&](auto rotor_of) {
+    using rotor = decltype(rotor_of(kinds.front()));
+    using system = torqued_rigid_bodies<T, Potential, rotor>;
+    static_assert(rigid_body_system<system>);
+    std::vector<body_type<T, rotor>> types;
+    types.reserve(kinds.size());
+    for (const auto& k : kinds) types.push_back({k.mass, k.moments, rotor_of(k)});
+    return visit(composition<system>(tv, system(std::move(types), potential, units)));
+  };
+  switch (spec.rotor) {
+    case rotor_kind::exact:
+      return run([](const body_kind<T>& k) { return exact_free_rotation<T>(k.moments); });
+    case rotor_kind::sej4:
+      return run([](const body_kind<T>& k) { return sej4_rotor<T>(k.moments); });
+    case rotor_kind::table:
+    default:
+      return run([&](const body_kind<T>& k) {
+        std::optional<schemes::scheme_table> table;
+        if (k.rotor_table)
+          table = *k.rotor_table;
+        else
+          table = schemes::reference_scheme(spec.rotor_table);
+        if (!table)
+          throw std::invalid_argument("integrator " + schemes::printable_text(spec.name) + ": '" + schemes::printable_text(spec.rotor_table) +
+                                      "' is not a reference scheme (a dedicated table must be solved for the body first)");
+        return table_rotor<T>(*table, k.moments);
+      });
+  }
+}
+
+/// The same for one body type of mass m and moments I in real units (the scenes of van Zon & Schofield).
 template <class T, class Potential, class Visitor>
 auto with_md_integrator(const md_integrator& spec, const schemes::scheme_table* rotor_table, const T& mass, const vec3<T>& I,
                         const Potential& potential, Visitor&& visit) {
-  const auto tv = *schemes::reference_scheme(spec.tv_table);
-  switch (spec.rotor) {
-    case rotor_kind::exact: {
-      using system = torqued_rigid_bodies<T, Potential, exact_free_rotation<T>>;
-      return visit(composition<system>(tv, system(mass, I, potential, exact_free_rotation<T>(I))));
-    }
-    case rotor_kind::sej4: {
-      using system = torqued_rigid_bodies<T, Potential, sej4_rotor<T>>;
-      return visit(composition<system>(tv, system(mass, I, potential, sej4_rotor<T>(I))));
-    }
-    case rotor_kind::table:
-    default: {
-      std::optional<schemes::scheme_table> table;
-      if (rotor_table)
-        table = *rotor_table;
-      else
-        table = schemes::reference_scheme(spec.rotor_table);
-      if (!table)
-        throw std::invalid_argument("integrator " + schemes::printable_text(spec.name) + ": '" + schemes::printable_text(spec.rotor_table) +
-                                    "' is not a reference scheme (a dedicated table must be solved for the body first)");
-      using system = torqued_rigid_bodies<T, Potential, table_rotor<T>>;
-      return visit(composition<system>(tv, system(mass, I, potential, table_rotor<T>(*table, I))));
-    }
-  }
+  return with_md_integrator<T>(spec, std::vector<body_kind<T>>{{mass, I, rotor_table}}, potential, unit_system<T>::real(),
+                               std::forward<Visitor>(visit));
 }
 
 }  // namespace rotlie::models

@@ -2,7 +2,9 @@
 // The state of N rigid bodies under forces and torques (van Zon & Schofield section III): per body
 // the centre q, momentum p and the rotation (Q body → lab, body angular momentum G = Qᵀ L), plus
 // the forces at the current configuration, cached between one step's last kick and the next
-// step's first (first-same-as-last). Units: real_units.hpp.
+// step's first (first-same-as-last), and the time t: the coordinate the free flights advance and the
+// kicks read, so that a time-dependent potential is evaluated at each kick stage's own time (H(x, t)
+// made autonomous by adding t to the phase space). Units: those of the system (unit_system.hpp).
 #include <vector>
 
 #include "rotlie/models/rigid_body.hpp"
@@ -13,14 +15,16 @@ template <class T>
 struct rigid_body_state {
   vec3<T> q{}, p{};
   body_state<T> rot;  ///< (Q, G)
+  unsigned type = 0;  ///< the body's type: an index into the system's body types (mass, moments, rotor)
 };
 
 template <class T>
 struct rigid_bodies_state {
   std::vector<rigid_body_state<T>> bodies;
+  T t{};  ///< time, advanced by the free flights
   // forces at the current configuration (valid while forces_current)
   std::vector<vec3<T>> force, torque;  ///< lab force (kcal/mol/Å), lab torque about the centre (kcal/mol)
-  T potential{};                       ///< V at the current configuration (kcal/mol)
+  T potential{};                       ///< V at the current configuration and time (kcal/mol)
   bool forces_current = false;
   unsigned long forces_of = 0;  ///< which system's potential the cached forces are of (its identity)
   long force_evaluations = 0;

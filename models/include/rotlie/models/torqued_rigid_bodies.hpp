@@ -5,12 +5,13 @@
 // Forces are evaluated only when a kick needs them and the configuration moved since the last
 // evaluation, so a table that ends and starts with V costs its V stages minus one (f).
 //
-// A Potential P provides
-//   T evaluate(const std::vector<rigid_body_state<T>>&, std::vector<vec3<T>>& force,
-//              std::vector<vec3<T>>& torque) const     fills the lab forces and torques, returns V
-//   bool acts() const                                  false for V = 0: kicks are skipped, nothing evaluated
-// A Rotor R provides advance(body_state<T>&, const T& t) const: the free rotation for time t
-// (exact_free_rotation, table_rotor, sej4_rotor), with the body's moments bound at construction.
+// The potential is a torque_potential, each body type's rotor a free_rotor (scene_contracts.hpp).
+// A kick evaluates V at the state's time, which the free flights advance: for Strang-TV the two
+// half kicks see t_n and t_n + h, as the splitting of H(x, t) + e in the extended phase space asks.
+//
+// Several body types: each body's `type` indexes a body_type (mass, moments, its own rotor); the
+// scenes of van Zon & Schofield have one. Units are data (unit_system): ftm2v in the kicks, mvv2e
+// in the kinetic energy.
 #include <atomic>
 #include <cmath>
 #include <optional>
@@ -19,34 +20,54 @@
 #include <vector>
 
 #include "rotlie/models/composition.hpp"
-#include "rotlie/models/real_units.hpp"
 #include "rotlie/models/rigid_bodies.hpp"
+#include "rotlie/models/scene_contracts.hpp"
+#include "rotlie/models/unit_system.hpp"
 
 namespace rotlie::models {
 
+/// One kind of body in a system: mass, principal moments (the rotor's own) and free rotor.
+template <class T, class Rotor>
+struct body_type {
+  T mass;
+  vec3<T> moments;
+  Rotor rotor;
+};
+
 template <class T, class Potential, class Rotor>
+  requires torque_potential<Potential, T> && free_rotor<Rotor, T>
 class torqued_rigid_bodies {
  public:
   using scalar = T;
   using state = rigid_bodies_state<T>;
+  using type = body_type<T, Rotor>;
   struct stage {
     bool kick = false;  ///< V (true) or T
     T c{};              ///< the stage's coefficient
   };
 
-  /// One body type: mass m (g/mol) and principal moments I (g/mol·Å², the rotor's own).
+  /// One body type in real units: mass m (g/mol) and principal moments I (g/mol·Å², the rotor's own).
   torqued_rigid_bodies(const T& mass, const vec3<T>& moments, Potential potential, Rotor rotor)
-      : mass_(mass), I_(moments), potential_(std::move(potential)), rotor_(std::move(rotor)), ftm2v_(real_units::ftm2v<T>()),
-        mvv2e_(real_units::mvv2e<T>()) {
+      : torqued_rigid_bodies({type{mass, moments, std::move(rotor)}}, std::move(potential), unit_system<T>::real()) {}
+
+  /// Several body types (a body's `type` is its index here), in the given units.
+  torqued_rigid_bodies(std::vector<type> types, Potential potential, unit_system<T> units)
+      : types_(std::move(types)), potential_(std::move(potential)), units_(units) {
     using std::isfinite;
-    if (!(mass_ > 0) || !isfinite(static_cast<double>(mass_))) throw std::invalid_argument("the mass must be finite and positive");
-    validate_moments(I_);
+    if (types_.empty()) throw std::invalid_argument("a system needs at least one body type");
+    for (const auto& ty : types_) {
+      if (!(ty.mass > 0) || !isfinite(static_cast<double>(ty.mass))) throw std::invalid_argument("the mass must be finite and positive");
+      validate_moments(ty.moments);
+    }
   }
 
-  const T& mass() const { return mass_; }
-  const vec3<T>& moments() const { return I_; }
+  /// The first body type's (the only one in a one-type scene).
+  const T& mass() const { return types_.front().mass; }
+  const vec3<T>& moments() const { return types_.front().moments; }
+  const Rotor& rotor() const { return types_.front().rotor; }
+  const std::vector<type>& body_types() const { return types_; }
+  const unit_system<T>& units() const { return units_; }
   const Potential& potential() const { return potential_; }
-  const Rotor& rotor() const { return rotor_; }
 
   void check(const schemes::scheme_table& table) const {
     if (table.splitting != schemes::split::tv)
@@ -69,21 +90,30 @@ class torqued_rigid_bodies {
   /// Force evaluations per step (first-same-as-last), the unit of h/f in vZS section V.
   int cost(const schemes::scheme_table& table) const { return schemes::force_evaluations(table); }
 
-  /// φ⁽⁰⁾ for time t: translation and the rotor's free rotation; the forces become stale.
+  /// φ⁽⁰⁾ for time t: translation, each body type's free rotation and the clock; the forces become stale.
   void free_flight(const T& t, state& x) const {
-    const T v = t / mass_;
+    T v{};  // t/m of the current run of bodies of one type (one division per change of type)
+    const type* ty = nullptr;
+    unsigned current = 0;
     for (auto& b : x.bodies) {
+      if (!ty || b.type != current) {
+        ty = &type_of(b);
+        current = b.type;
+        v = t / ty->mass;
+      }
       for (std::size_t i = 0; i < 3; ++i) b.q[i] += v * b.p[i];
-      rotor_.advance(b.rot, t);
+      ty->rotor.advance(b.rot, t);
     }
+    x.t += t;
     if (potential_.acts()) x.forces_current = false;
   }
 
-  /// φ⁽¹⁾ for time t: p += t ftm2v F, G += t ftm2v Qᵀτ (the lab torque seen in the body frame).
+  /// φ⁽¹⁾ for time t: p += t ftm2v F, G += t ftm2v Qᵀτ (the lab torque seen in the body frame), with
+  /// F and τ at the state's time.
   void kick(const T& t, state& x) const {
     if (!potential_.acts()) return;
     ensure_forces(x);
-    const T k = t * ftm2v_;
+    const T k = t * units_.ftm2v;
     for (std::size_t n = 0; n < x.bodies.size(); ++n) {
       auto& b = x.bodies[n];
       const vec3<T>& F = x.force[n];
@@ -104,26 +134,29 @@ class torqued_rigid_bodies {
       x.force.assign(x.bodies.size(), vec3<T>{});
       x.torque.assign(x.bodies.size(), vec3<T>{});
     }
-    x.potential = potential_.evaluate(x.bodies, x.force, x.torque);
+    x.potential = potential_at(potential_, x.bodies, x.force, x.torque, x.t);
     x.forces_current = true;
     x.forces_of = potential_id_;
     ++x.force_evaluations;
   }
 
-  /// Kinetic energy, kcal/mol: mvv2e Σ (p²/2m + Σ G_i²/2I_i).
+  /// Kinetic energy (kcal/mol in real units): mvv2e Σ (p²/2m + Σ G_i²/2I_i), each body with its type's m and I.
   T kinetic_energy(const state& x) const {
     T e = 0;
-    for (const auto& b : x.bodies) e += dot(b.p, b.p) / (2 * mass_) + models::kinetic_energy(I_, b.rot.G);
-    return mvv2e_ * e;
+    for (const auto& b : x.bodies) {
+      const type& ty = type_of(b);
+      e += dot(b.p, b.p) / (2 * ty.mass) + models::kinetic_energy(ty.moments, b.rot.G);
+    }
+    return units_.mvv2e * e;
   }
 
-  /// V at the state's configuration, kcal/mol (the cached value when current; else evaluated into
+  /// V at the state's configuration and time (the cached value when current; else evaluated into
   /// scratch vectors, not counted as a step's force evaluation).
   T potential_energy(const state& x) const {
     if (!potential_.acts()) return T(0);
     if (cached(x)) return x.potential;
     std::vector<vec3<T>> f(x.bodies.size()), tau(x.bodies.size());
-    return potential_.evaluate(x.bodies, f, tau);
+    return potential_at(potential_, x.bodies, f, tau, x.t);
   }
 
   T energy(const state& x) const { return kinetic_energy(x) + potential_energy(x); }
@@ -131,18 +164,22 @@ class torqued_rigid_bodies {
  private:
   bool cached(const state& x) const { return x.forces_current && x.forces_of == potential_id_; }
 
+  const type& type_of(const rigid_body_state<T>& b) const {
+    if (b.type >= types_.size())
+      throw std::out_of_range("body type " + std::to_string(b.type) + " of a system with " + std::to_string(types_.size()) + " body types");
+    return types_[b.type];
+  }
+
   // One identity per constructed system, shared by its copies (they hold the same potential).
   static unsigned long next_potential_id() {
     static std::atomic<unsigned long> last{0};
     return ++last;
   }
 
-  T mass_;
-  vec3<T> I_;
+  std::vector<type> types_;
   Potential potential_;
   unsigned long potential_id_ = next_potential_id();
-  Rotor rotor_;
-  T ftm2v_, mvv2e_;
+  unit_system<T> units_;
 };
 
 }  // namespace rotlie::models

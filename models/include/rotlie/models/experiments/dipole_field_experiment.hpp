@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "rotlie/models/experiments/md_experiment.hpp"
-#include "rotlie/models/integrate.hpp"
 #include "rotlie/models/scenes/dipole_field.hpp"
 
 namespace rotlie::models {
@@ -23,12 +22,9 @@ namespace rotlie::models {
 inline constexpr double dipole_field_default_T_ps = 100;
 inline constexpr long dipole_field_default_runs = 50;
 
-struct dipole_field_result {
-  int f = 0;
-  long steps = 0;
+struct dipole_field_result : md_ensemble_cost {
   std::vector<double> dH_over_dV_percent, dLz_over_Lz;  ///< per finished run
   mean_error dH, dLz;                                   ///< over the ensemble
-  double cpu_s_per_ps = 0;                              ///< stepping only
   long failed_runs = 0;                                 ///< runs that went non-finite (stopped there)
 };
 
@@ -44,17 +40,12 @@ T shifted_rms(const T& sum, const T& sum2, long n) {
 }  // namespace detail
 
 template <class T>
-dipole_field_result run_dipole_field(const dipole_field<T>& scene, const md_run_options& o) {
+dipole_field_result run_dipole_field(const dipole_field<T>& scene, const md_integrator& integrator, const md_run_options& o) {
   const long steps = md_steps(o);
-  return with_scene_integrator<T>(scene, o, [&](const auto& method) {
+  return with_scene_integrator<T>(scene, integrator, o, [&](const auto& method) {
     const auto& sys = method.system();
     dipole_field_result r;
-    r.f = method.cost();
-    r.steps = steps;
-    const T h = T(o.h_fs);
-    double cpu = 0;
-    for (long run = 0; run < o.runs; ++run) {
-      auto x = scene.initial(o.seed, static_cast<std::uint64_t>(run));
+    run_ensemble(scene, o, method, steps, r, [&](rigid_bodies_state<T>& x, auto& step) {
       sys.ensure_forces(x);  // V at the start (the first kick would evaluate it anyway)
       auto lz = [](const rigid_bodies_state<T>& s) { return lab_spin(s.bodies[0])[2]; };
       const T H0 = sys.kinetic_energy(x) + x.potential, V0 = x.potential, L0 = lz(x);
@@ -70,9 +61,7 @@ dipole_field_result run_dipole_field(const dipole_field<T>& scene, const md_run_
         return finite;
       };
       observe(0, T(0), x);
-      const double c0 = thread_cpu_seconds();
-      integrate(method, x, h, steps, observe);
-      cpu += thread_cpu_seconds() - c0;
+      step(x, observe);
       if (!finite) {
         ++r.failed_runs;
       } else {
@@ -82,13 +71,18 @@ dipole_field_result run_dipole_field(const dipole_field<T>& scene, const md_run_
         r.dH_over_dV_percent.push_back(static_cast<double>(100 * dH / dV));
         r.dLz_over_Lz.push_back(static_cast<double>(dL / abs(lsum / T(n))));
       }
-      if (o.progress) o.progress(run + 1, o.runs);
-    }
+      return true;  // a failed run is counted, and the ensemble goes on
+    });
     r.dH = ensemble_mean(r.dH_over_dV_percent);
     r.dLz = ensemble_mean(r.dLz_over_Lz);
-    r.cpu_s_per_ps = cpu / (static_cast<double>(o.runs) * o.T_ps);
     return r;
   });
+}
+
+/// The same with o.integrator parsed (throws std::invalid_argument for an unknown name).
+template <class T>
+dipole_field_result run_dipole_field(const dipole_field<T>& scene, const md_run_options& o) {
+  return run_dipole_field(scene, md_integrator_named(o.integrator), o);
 }
 
 }  // namespace rotlie::models

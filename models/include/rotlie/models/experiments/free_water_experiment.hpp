@@ -18,7 +18,6 @@
 #include "rotlie/models/error_protocol.hpp"
 #include "rotlie/models/exact_free_body.hpp"
 #include "rotlie/models/experiments/md_experiment.hpp"
-#include "rotlie/models/integrate.hpp"
 #include "rotlie/models/scenes/free_water.hpp"
 
 namespace rotlie::models {
@@ -28,9 +27,7 @@ namespace rotlie::models {
 inline constexpr double free_water_default_T_ps = 5;
 inline constexpr long free_water_default_runs = 100;
 
-struct free_water_result {
-  int f = 0;                    ///< force evaluations per step (the h/f of vZS)
-  long steps = 0;               ///< per run
+struct free_water_result : md_ensemble_cost {
   std::vector<double> t_ps;     ///< sample times
   std::vector<double> delta;    ///< ensemble δ at each sample
   std::vector<double> reference_delta;  ///< the exact reference's own estimated δ there
@@ -38,7 +35,6 @@ struct free_water_result {
   double tau_error_ps = std::nan("");  ///< jackknife standard error of tau over the runs
   int fitted_samples = 0;
   std::vector<std::vector<double>> run_d2;  ///< per run, Tr[(A − A_ex)(A − A_ex)ᵀ]/6 at each sample
-  double cpu_s_per_ps = 0;      ///< stepping only
   bool finite = true;           ///< every sampled attitude finite
 };
 
@@ -79,7 +75,7 @@ inline void fit_tau(free_water_result& r) {
 
 /// `samples` sample times evenly spread over the run (each a whole step).
 template <class T>
-free_water_result run_free_water(const free_water<T>& scene, const md_run_options& o, int samples = 32) {
+free_water_result run_free_water(const free_water<T>& scene, const md_integrator& integrator, const md_run_options& o, int samples = 32) {
   using quad = boost::multiprecision::float128;
   const long steps = md_steps(o);
   const long K = std::min<long>(samples, steps);
@@ -88,14 +84,10 @@ free_water_result run_free_water(const free_water<T>& scene, const md_run_option
   std::vector<double> sum2(at.size(), 0.0), ref2(at.size(), 0.0);
   const vec3<quad> Iq{quad(scene.moments[0]), quad(scene.moments[1]), quad(scene.moments[2])};
 
-  return with_scene_integrator<T>(scene, o, [&](const auto& method) {
+  return with_scene_integrator<T>(scene, integrator, o, [&](const auto& method) {
     free_water_result r;
-    r.f = method.cost();
-    r.steps = steps;
     const T h = T(o.h_fs);
-    double cpu = 0;
-    for (long run = 0; run < o.runs; ++run) {
-      auto x = scene.initial(o.seed, static_cast<std::uint64_t>(run));
+    run_ensemble(scene, o, method, steps, r, [&](rigid_bodies_state<T>& x, auto& step) {
       body_state<quad> start;
       for (std::size_t i = 0; i < 9; ++i) start.Q.a[i] = quad(x.bodies[0].rot.Q.a[i]);
       for (std::size_t i = 0; i < 3; ++i) start.G[i] = quad(x.bodies[0].rot.G[i]);
@@ -121,22 +113,24 @@ free_water_result run_free_water(const free_water<T>& scene, const md_run_option
         sum2[next++] += v;
         return r.finite;
       };
-      const double c0 = thread_cpu_seconds();
-      integrate(method, x, h, steps, observe);
-      cpu += thread_cpu_seconds() - c0;
-      if (!r.finite) break;
-      if (o.progress) o.progress(run + 1, o.runs);
-    }
+      step(x, observe);
+      return r.finite;  // a non-finite attitude ends the ensemble
+    });
     const double n = static_cast<double>(o.runs);
     for (std::size_t j = 0; j < at.size(); ++j) {
       r.t_ps.push_back(o.h_fs * static_cast<double>(at[j]) / 1000);
       r.delta.push_back(r.finite ? std::sqrt(sum2[j] / n) : std::nan(""));
       r.reference_delta.push_back(std::sqrt(ref2[j] / n));
     }
-    r.cpu_s_per_ps = cpu / (n * o.T_ps);
     fit_tau(r);
     return r;
   });
+}
+
+/// The same with o.integrator parsed (throws std::invalid_argument for an unknown name).
+template <class T>
+free_water_result run_free_water(const free_water<T>& scene, const md_run_options& o, int samples = 32) {
+  return run_free_water(scene, md_integrator_named(o.integrator), o, samples);
 }
 
 }  // namespace rotlie::models

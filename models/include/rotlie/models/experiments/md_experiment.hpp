@@ -10,12 +10,14 @@
 #include <vector>
 
 #include "rotlie/models/cpu_time.hpp"
+#include "rotlie/models/integrate.hpp"
 #include "rotlie/models/md_integrators.hpp"
 
 namespace rotlie::models {
 
+/// A run in the scene's units: h in its time unit (fs for the real-unit scenes), T in a thousand of them.
 struct md_run_options {
-  std::string integrator;                           ///< SIER2, SIER4, MRDL, SEJ4, SIER2/X, SIER4/X
+  std::string integrator;                           ///< SIER2, SIER4, MRDL, SEJ4, SIER2/X, SIER4/X (read when no parsed integrator is given)
   const schemes::scheme_table* rotor_table = nullptr;  ///< X resolved for the body (a dedicated table), or null
   double h_fs = 0;                                  ///< the step h itself (not h/f)
   double T_ps = 0;                                  ///< simulated time per run
@@ -49,11 +51,48 @@ inline mean_error ensemble_mean(const std::vector<double>& x) {
   return r;
 }
 
-/// The composition of o.integrator for the scene's body and potential, handed to visit.
+/// The composition of `integrator` for the scene's body, potential and units, handed to visit.
+template <class T, class Scene, class Visitor>
+auto with_scene_integrator(const Scene& scene, const md_integrator& integrator, const md_run_options& o, Visitor&& visit) {
+  return with_md_integrator<T>(integrator, std::vector<body_kind<T>>{{scene.mass, scene.moments, o.rotor_table}}, scene.potential,
+                               scene.units, std::forward<Visitor>(visit));
+}
+
+/// The same with o.integrator parsed (throws std::invalid_argument for an unknown name).
 template <class T, class Scene, class Visitor>
 auto with_scene_integrator(const Scene& scene, const md_run_options& o, Visitor&& visit) {
-  const md_integrator spec = md_integrator_named(o.integrator);
-  return with_md_integrator<T>(spec, o.rotor_table, scene.mass, scene.moments, scene.potential, std::forward<Visitor>(visit));
+  return with_scene_integrator<T>(scene, md_integrator_named(o.integrator), o, std::forward<Visitor>(visit));
+}
+
+/// What every ensemble measures of its integrator besides the physics.
+struct md_ensemble_cost {
+  int f = 0;                ///< force evaluations per step (the h/f of vZS)
+  long steps = 0;           ///< per run
+  double cpu_s_per_ps = 0;  ///< stepping only
+};
+
+/// The ensemble loop of the experiments: f and steps into `cost`, then each run from
+/// scene.initial(seed, run) handed to one_run(x, step), where step(x, observers...) integrates the
+/// run with its CPU time counted; one_run returns false to end the ensemble (progress is shown
+/// after each run that did not).
+template <class Scene, class Method, class OneRun>
+void run_ensemble(const Scene& scene, const md_run_options& o, const Method& method, long steps, md_ensemble_cost& cost, OneRun&& one_run) {
+  using T = typename Method::scalar;
+  cost.f = method.cost();
+  cost.steps = steps;
+  const T h = T(o.h_fs);
+  double cpu = 0;
+  auto step = [&](rigid_bodies_state<T>& x, auto&... observers) {
+    const double c0 = thread_cpu_seconds();
+    integrate(method, x, h, steps, observers...);
+    cpu += thread_cpu_seconds() - c0;
+  };
+  for (long run = 0; run < o.runs; ++run) {
+    auto x = scene.initial(o.seed, static_cast<std::uint64_t>(run));
+    if (!one_run(x, step)) break;
+    if (o.progress) o.progress(run + 1, o.runs);
+  }
+  cost.cpu_s_per_ps = cpu / (static_cast<double>(o.runs) * o.T_ps);
 }
 
 }  // namespace rotlie::models

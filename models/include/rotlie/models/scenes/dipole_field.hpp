@@ -9,6 +9,7 @@
 #include "rotlie/models/scenes/canonical_state.hpp"
 #include "rotlie/models/scenes/dipole_in_field.hpp"
 #include "rotlie/models/scenes/water.hpp"
+#include "rotlie/models/unit_system.hpp"
 
 namespace rotlie::models {
 
@@ -22,6 +23,7 @@ struct dipole_field {
 
   T mass = water::mass<T>();
   vec3<T> moments = water::moments<T>();
+  unit_system<T> units = unit_system<T>::real();
   dipole_in_field<T> potential;
 
   rigid_bodies_state<T> initial(std::uint64_t seed, std::uint64_t run) const {

@@ -7,6 +7,7 @@
 #include "rotlie/models/scenes/canonical_state.hpp"
 #include "rotlie/models/scenes/water.hpp"
 #include "rotlie/models/scenes/zero_potential.hpp"
+#include "rotlie/models/unit_system.hpp"
 
 namespace rotlie::models {
 
@@ -14,6 +15,7 @@ template <class T>
 struct free_water {
   T mass = water::mass<T>();
   vec3<T> moments = water::moments<T>();
+  unit_system<T> units = unit_system<T>::real();
   zero_potential<T> potential{};
 
   /// Run `run` of the ensemble with seed `seed`: one molecule.

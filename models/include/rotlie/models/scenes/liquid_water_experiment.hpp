@@ -22,7 +22,7 @@
 namespace rotlie::models {
 
 struct liquid_water_run_options {
-  std::string integrator = "SIER2";
+  std::string integrator = "SIER2";  ///< read by run_liquid_water when no parsed integrator is given
   /// SIER2/X and SIER4/X with a dedicated X: the table solved for TIP3P (tip3p_body_text); nullptr
   /// looks X up among the reference schemes.
   const schemes::scheme_table* rotor_table = nullptr;
@@ -63,7 +63,8 @@ using liquid_water_progress = std::function<void(const std::string&)>;
 
 inline double liquid_water_box(long molecules, double density) { return cubic_box_side<double>(molecules, tip3p<double>().mass, density); }
 
-/// Checks the numbers a user gives; throws std::invalid_argument with one line.
+/// Checks the numbers a user gives (the integrator is checked where its name is parsed); throws
+/// std::invalid_argument with one line.
 inline void check_liquid_water_options(const liquid_water_run_options& o) {
   auto finite_positive = [](double x) { return std::isfinite(x) && x > 0; };
   if (!finite_positive(o.h_fs)) throw std::invalid_argument("--h must be a positive number of fs");
@@ -77,7 +78,6 @@ inline void check_liquid_water_options(const liquid_water_run_options& o) {
   if (!(L > 22))
     throw std::invalid_argument("the box of " + std::to_string(o.molecules) + " molecules (" + std::to_string(L) +
                                 " Å) is smaller than twice the 11 Å cutoff: use at least 365 molecules");
-  (void)md_integrator_named(o.integrator);
 }
 
 /// The potential of the scene for n molecules.
@@ -133,15 +133,14 @@ inline rigid_bodies_state<double> liquid_water_start(const liquid_water_run_opti
   return s;
 }
 
-/// The NVE runs from `start` (see the header comment).
-inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& o, const rigid_bodies_state<double>& start,
-                                                const liquid_water_progress& progress) {
+/// The NVE runs of `spec` from `start` (see the header comment); o.integrator is not read.
+inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& o, const md_integrator& spec,
+                                                const rigid_bodies_state<double>& start, const liquid_water_progress& progress) {
   check_liquid_water_options(o);
   const auto model = tip3p<double>();
   const auto w = liquid_water_potential(o.molecules, o.density, o.threads);
-  const auto spec = md_integrator_named(o.integrator);
   liquid_water_run_result r;
-  r.integrator = o.integrator;
+  r.integrator = spec.name;
   r.h_fs = o.h_fs;
   r.f = spec.f;
   r.runs = o.runs;
@@ -200,6 +199,12 @@ inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& 
   r.ratio_mean = mean;
   r.ratio_error = r.runs > 1 ? std::sqrt(var / (r.runs - 1) / r.runs) : 0.0;
   return r;
+}
+
+/// The same with o.integrator parsed (throws std::invalid_argument for an unknown name).
+inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& o, const rigid_bodies_state<double>& start,
+                                                const liquid_water_progress& progress) {
+  return run_liquid_water(o, md_integrator_named(o.integrator), start, progress);
 }
 
 /// g_OO(r) up to 10 Å (bins of 0.05 Å) over `steps` NVE steps of MRDL at h fs from `start`,
