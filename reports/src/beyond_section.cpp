@@ -3,7 +3,6 @@
 // compositions of the literature at their best permutation and the 4th-order champions of LV section 4.
 // Everything shown is computed here: by default the search covers the systems of the words listed in
 // `searched_systems` (the best ones of the broad scan); `--full` scans every 21-stage palindrome.
-#include <boost/multiprecision/float128.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +19,7 @@
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/protocol_curves.hpp"
 #include "rotlie/reports/report.hpp"
+#include "rotlie/schemes/quad.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 #include "rotlie/solver/scheme_table.hpp"
@@ -27,8 +27,6 @@
 
 namespace rotlie::reports {
 namespace {
-
-using quad = boost::multiprecision::float128;
 
 // The systems the default search covers: the best (word, permutation) systems by ‖H_R7‖ of the broad
 // scan (`rotlie sixth --inertia water --all --starts 40`: 3 066 systems, 892 s of CPU) and of its

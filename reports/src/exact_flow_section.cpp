@@ -3,7 +3,6 @@
 // exact_flow_regimes_test checks against an independent float128 Runge-Kutta solution, over the
 // middle-axis offset, the anisotropy of near-spherical bodies, thin and flat bodies, the scale of
 // |G| and long times; with the flow's own error estimate beside every measured error.
-#include <boost/multiprecision/float128.hpp>
 
 #include <algorithm>
 #include <iomanip>
@@ -12,11 +11,11 @@
 #include "rotlie/models/exact_free_body.hpp"
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/report.hpp"
+#include "rotlie/schemes/quad.hpp"
 
 namespace rotlie::reports {
 namespace {
 
-using quad = boost::multiprecision::float128;
 using models::vec3;
 
 struct regime {

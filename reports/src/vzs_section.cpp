@@ -2,8 +2,6 @@
 // and the failure step, with the dedicated free rotors of Laskar & Vaillant beside the paper's integrators.
 #include "rotlie/reports/vzs_section.hpp"
 
-#include <boost/multiprecision/float128.hpp>
-
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -18,12 +16,11 @@
 #include "rotlie/models/experiments/free_water_experiment.hpp"
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/protocol_curves.hpp"
+#include "rotlie/schemes/quad.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
 namespace rotlie::reports {
 namespace {
-
-using quad = boost::multiprecision::float128;
 
 // The run sizes of the section (see budget_text for the CPU time they take).
 struct budget {
