@@ -98,8 +98,7 @@ double quad_slope(const schemes::scheme_table& t, const lie::moments_of_inertia&
 
 // ‖H_R7‖ of any palindromic table: its stages mapped onto the layout of its word by position.
 double remainder7_of(const schemes::scheme_table& t, const std::string& base_word, const lie::moments_of_inertia& body) {
-  const auto split = t.splitting == schemes::split::rs ? bch::splitting::rs : bch::splitting::abc;
-  const auto layout = bch::layout_scheme(base_word, split, t.permutation.empty() ? "ABC" : t.permutation);
+  const auto layout = bch::layout_scheme(base_word, solver::splitting_of(t.splitting), t.permutation.empty() ? "ABC" : t.permutation);
   std::map<std::string, double> values;
   for (std::size_t i = 0; i < layout.stages.size(); ++i) values[layout.stages[i].coefficient] = std::stod(t.stages[i].value);
   return solver::remainder7_norm(layout, body, values);
