@@ -17,6 +17,7 @@
 #include "rotlie/models/integrate.hpp"
 #include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/reports/audit_table.hpp"
+#include "rotlie/reports/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/protocol_curves.hpp"
 #include "rotlie/reports/report.hpp"
@@ -26,12 +27,6 @@
 
 namespace rotlie::reports {
 namespace {
-
-std::string fixed(double x, int digits) {
-  std::ostringstream o;
-  o << std::fixed << std::setprecision(digits) << x;
-  return o.str();
-}
 
 audit_row decided(std::string statement, std::string where, std::string tolerance, bool holds, std::string value) {
   audit_row r;
@@ -82,11 +77,11 @@ audit_row cost_model_row(const std::vector<schemes::scheme_table>& tables, const
     }
     const double per_rotation = best / schemes::cost_in_rotations(t);
     lo = std::min(lo, per_rotation), hi = std::max(hi, per_rotation);
-    v += (v.empty() ? "" : ", ") + t.name + " " + fixed(per_rotation * 1e9, 1) + " ns";
+    v += (v.empty() ? "" : ", ") + t.name + " " + fixed_text(per_rotation * 1e9, 1) + " ns";
   }
   return decided("Cost model: every rotation costs the same C0, so a step costs its number of rotations (RS: stages + 1)", "4.1",
                  "CPU time per rotation (per step / C) of N2 BAC (2), R ABC (4), P1 BAC (5) and RS4 S5 McLachlan within a factor 1.25",
-                 hi <= 1.25 * lo, "per rotation: " + v + " (spread " + fixed(hi / lo, 2) + "×; process CPU time, double stepper)");
+                 hi <= 1.25 * lo, "per rotation: " + v + " (spread " + fixed_text(hi / lo, 2) + "×; process CPU time, double stepper)");
 }
 
 // LV 4.3: Fassò's and Hairer-Vilmart's (0.345, 0.653, 1) is no physical body.
@@ -106,7 +101,7 @@ audit_row fasso_row() {
 audit_row water_row(const lie::moments_of_inertia& water) {
   const double I1 = cln::double_approx(water.I[0]), I2 = cln::double_approx(water.I[1]);
   return decided("Water: I1 = 10220/29376 ≃ 0.348, I2 = 19187/29376 ≃ 0.653, I3 = 1", "4.3", "rounded to 3 decimals",
-                 fixed(I1, 3) == "0.348" && fixed(I2, 3) == "0.653", "rotlie's \"water\": (" + fixed(I1, 5) + ", " + fixed(I2, 5) + ", 1)");
+                 fixed_text(I1, 3) == "0.348" && fixed_text(I2, 3) == "0.653", "rotlie's \"water\": (" + fixed_text(I1, 5) + ", " + fixed_text(I2, 5) + ", 1)");
 }
 
 // LV 4.2: for the spherical top R is the identity (its Hamiltonian part vanishes).
@@ -146,11 +141,7 @@ audit_row small_angle_row() {
     }
   return decided("For small angles the R^9 attitude error is √3 × the quadratic mean of the angular errors of the three principal axes",
                  "4.1", "relative difference below 1e-4 for rotations of 1e-2 and 1e-3 rad about three axes", worst < 1e-4,
-                 "largest relative difference " + [&] {
-                   std::ostringstream o;
-                   o << std::setprecision(2) << worst;
-                   return o.str();
-                 }());
+                 "largest relative difference " + significant_text(worst, 2));
 }
 
 // LV 4.1 (from 3.1.2): RSRSRSR with I1 and I3 swapped (permutation CBA) has the remainder of
@@ -208,7 +199,7 @@ audit_row best_r_row(const solver::family_result& water_r, const protocol_runner
   std::size_t analytic_rank = 0;
   for (std::size_t k = 0; k < water_r.solutions.size(); ++k)
     if (water_r.solutions[k].name() == "R ABC (4)") analytic_rank = k + 1;
-  const std::string second = ranked.size() > 1 ? "; next " + ranked[1].second + " at " + fixed(ranked[1].first / ranked[0].first, 2) + "×" : "";
+  const std::string second = ranked.size() > 1 ? "; next " + ranked[1].second + " at " + fixed_text(ranked[1].first / ranked[0].first, 2) + "×" : "";
   return decided("Water: the numerically best integrator R is R ABC (4)", "4.3, Fig. 5",
                  "smallest error/(h/C)^4 among all R solutions for water", !ranked.empty() && ranked[0].second == "R ABC (4)",
                  "best of " + std::to_string(ranked.size()) + ": " + ranked[0].second + second + "; R ABC (4) is #" +
@@ -253,7 +244,7 @@ audit_row best_p_row(const report_options& options, const protocol_runner& runne
   const auto favourite = measured.front();  // the smallest ‖H_R5‖
   std::sort(measured.begin(), measured.end());
   r.value = "best: " + measured[0].second + "; P1 BAC (5) is #" + std::to_string(p1_rank) + " of " + std::to_string(j.at("solutions").size()) +
-            " by ‖H_R5‖; the analytic favourite " + favourite.second + " is " + fixed(favourite.first / p1, 2) +
+            " by ‖H_R5‖; the analytic favourite " + favourite.second + " is " + fixed_text(favourite.first / p1, 2) +
             "× less accurate than P1 BAC (5)";
   r.verdict = measured[0].second == "P1 BAC (5)" ? audit_verdict::holds : audit_verdict::does_not_hold;
   return r;
@@ -312,7 +303,7 @@ report_section audit_section(const report_options& options) {
         "shows no number. Tolerances are per row; \"about N times\" is read as within 20 %. Files: [audit/audit.csv](audit/audit.csv), "
         "[audit/audit.json](audit/audit.json).\n\n"
      << counts[0] << " statements hold, " << counts[1] << " do not hold, " << counts[2] + counts[3]
-     << " are not checked in this run. The audit's own computations took " << fixed(cpu, 1) << " s of CPU time.\n\n"
+     << " are not checked in this run. The audit's own computations took " << fixed_text(cpu, 1) << " s of CPU time.\n\n"
      << "| statement (LV) | where | rotlie (this run) | tolerance | verdict |\n|:--|:--|:--|:--|:--|\n";
   for (const auto& r : rows)
     md << "| " << cell(r.statement) << " | " << cell(r.where) << " | " << cell(r.value) << " | " << cell(r.tolerance) << " | "

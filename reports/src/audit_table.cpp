@@ -16,6 +16,8 @@
 #include <optional>
 #include <sstream>
 
+#include "rotlie/reports/lv_paper_tables.hpp"
+#include "rotlie/reports/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report_csv_reader.hpp"
 
@@ -28,19 +30,7 @@ constexpr double ratio_tolerance = 0.20;  // the accuracy section's criterion fo
 constexpr double slope_tolerance = 0.1;
 constexpr int fit_points = 3;  // as protocol_curves.cpp: the three finest steps
 
-std::string fixed(double x, int digits) {
-  std::ostringstream o;
-  o << std::fixed << std::setprecision(digits) << x;
-  return o.str();
-}
-
-std::string general(double x, int digits = 3) {
-  std::ostringstream o;
-  o << std::setprecision(digits) << x;
-  return o.str();
-}
-
-std::string percent(double x) { return fixed(100 * x, 1) + " %"; }
+std::string percent(double x) { return fixed_text(100 * x, 1) + " %"; }
 
 audit_row row(std::string statement, std::string where, std::string tolerance) {
   audit_row r;
@@ -139,7 +129,7 @@ class reader {
 void ratio_claim(std::vector<audit_row>& rows, reader& rd, const std::string& statement, const std::string& where,
                  const std::string& file, const std::string& worse, const std::string& better, double paper) {
   auto r = row(statement, where, "our ratio of error/(h/C)^4 (three finest h) within " + percent(ratio_tolerance) + " of " +
-                                     general(paper) + "×");
+                                     significant_text(paper, 3) + "×");
   const auto* d = rd.ran("accuracy") ? rd.chart(file) : nullptr;
   const auto* w = d ? series(*d, worse) : nullptr;
   const auto* b = d ? series(*d, better) : nullptr;
@@ -149,8 +139,8 @@ void ratio_claim(std::vector<audit_row>& rows, reader& rd, const std::string& st
   }
   const double ours = fit(*w, 4).constant / fit(*b, 4).constant;
   rows.push_back(judge(r, std::abs(ours / paper - 1) <= ratio_tolerance,
-                       general(ours) + "× (" + series_name(*d, better) + " vs " + series_name(*d, worse) + ", " +
-                           fixed(100 * (ours / paper - 1), 1) + " % from the paper)"));
+                       significant_text(ours, 3) + "× (" + series_name(*d, better) + " vs " + series_name(*d, worse) + ", " +
+                           fixed_text(100 * (ours / paper - 1), 1) + " % from the paper)"));
 }
 
 // The N series of a chart (names "N<k> PERM (label)"), with their fits.
@@ -179,21 +169,15 @@ void accuracy_rows(std::vector<audit_row>& rows, reader& rd) {
       const double mine = fit(*n5, 4).constant;
       std::string runner_up;
       for (const auto& [n, f] : fits)
-        if (n != "N5 ABC (2)" && runner_up.empty()) runner_up = n + " at " + fixed(f.constant / mine, 3) + "× N5 (2)'s";
+        if (n != "N5 ABC (2)" && runner_up.empty()) runner_up = n + " at " + fixed_text(f.constant / mine, 3) + "× N5 (2)'s";
       rows.push_back(judge(r, mine <= 1.05 * fits.front().second.constant,
-                           "smallest: " + fits.front().first + "; N5 (2) at " + fixed(mine / fits.front().second.constant, 3) +
+                           "smallest: " + fits.front().first + "; N5 (2) at " + fixed_text(mine / fits.front().second.constant, 3) +
                                "× the smallest; next " + runner_up + quick));
     }
   }
   ratio_claim(rows, rd, "Spherical top: N5 (2) about 700 times more accurate than ABCBA4 SS3 Yoshida at equal h/C",
               "4.2, Fig. 1", "fig1_sphere", "ABCBA4-SS3-Yoshida", "N5 ABC (2)", 700);
 
-  // Table 3, numeric column: 11 ratios to N5 (2).
-  const std::vector<std::pair<std::string, std::pair<double, double>>> table3 = {
-      {"N1 ABC (1)", {119.85, 100.50}}, {"N2 ABC (1)", {3.97, 3.40}},   {"N3 ABC (1)", {27.04, 22.51}},
-      {"N3 ABC (2)", {107.78, 92.79}},  {"N3 ABC (3)", {1.00, 1}},      {"N4 ABC (1)", {1120.50, 991.42}},
-      {"N4 ABC (2)", {2.06, 1.58}},     {"N4 ABC (3)", {1.59, 1.18}},   {"N5 ABC (1)", {107.82, 92.79}},
-      {"N5 ABC (3)", {27.02, 22.51}},   {"N7 ABC (1)", {120.07, 100.50}}};  // LV Table 3 (numeric, analytic)
   {
     auto r = row("Table 3, numeric column: the 11 numeric remainders normalised by N5 (2) (1.00 to 1120.50)", "4.2, Table 3",
                  "every ratio within " + percent(ratio_tolerance) + " of the paper's");
@@ -204,17 +188,19 @@ void accuracy_rows(std::vector<audit_row>& rows, reader& rd) {
       int within = 0, found = 0;
       double worst = 0;
       std::string worst_name;
-      for (const auto& [name, lv] : table3) {
+      for (const auto& paper : lv_table3) {
+        const std::string name = paper.integrator;
+        const double lv = paper.numeric;
         const auto* c = series(*d, name);
         if (!c) continue;
         ++found;
-        const double dev = fit(*c, 4).constant / fit(*n5, 4).constant / lv.first - 1;
+        const double dev = fit(*c, 4).constant / fit(*n5, 4).constant / lv - 1;
         within += std::abs(dev) <= ratio_tolerance;
         if (std::abs(dev) >= std::abs(worst)) worst = dev, worst_name = name;
       }
-      rows.push_back(judge(r, within == static_cast<int>(table3.size()),
-                           std::to_string(within) + " of " + std::to_string(table3.size()) + " within tolerance (" +
-                               std::to_string(found) + " found); largest deviation " + fixed(100 * worst, 1) + " % (" +
+      rows.push_back(judge(r, within == static_cast<int>(lv_table3.size()),
+                           std::to_string(within) + " of " + std::to_string(lv_table3.size()) + " within tolerance (" +
+                               std::to_string(found) + " found); largest deviation " + fixed_text(100 * worst, 1) + " % (" +
                                worst_name + ")" + quick));
     }
   }
@@ -226,7 +212,7 @@ void accuracy_rows(std::vector<audit_row>& rows, reader& rd) {
     if (!ours) rows.push_back(not_computed(r, ran ? "series rotlie missing in fig2_sphere_remainders.csv" : absent));
     else {
       const double rho = rank_correlation(ours->x, ours->y);
-      rows.push_back(judge(r, rho >= 0.9, "Spearman ρ = " + fixed(rho, 3) + " over " + std::to_string(ours->x.size()) + " solutions"));
+      rows.push_back(judge(r, rho >= 0.9, "Spearman ρ = " + fixed_text(rho, 3) + " over " + std::to_string(ours->x.size()) + " solutions"));
     }
   }
 
@@ -242,7 +228,7 @@ void accuracy_rows(std::vector<audit_row>& rows, reader& rd) {
                                            (fits[0].first == "N2 ACB (1)" && fits[1].first == "N2 BAC (2)"));
       std::string v = "ranked by error/(h/C)^4: ";
       for (std::size_t k = 0; k < std::min<std::size_t>(3, fits.size()); ++k)
-        v += (k ? ", " : "") + fits[k].first + " (" + general(fits[k].second.constant) + ")";
+        v += (k ? ", " : "") + fits[k].first + " (" + significant_text(fits[k].second.constant, 3) + ")";
       rows.push_back(judge(r, ok, v + quick));
     }
   }
@@ -281,7 +267,7 @@ void accuracy_rows(std::vector<audit_row>& rows, reader& rd) {
       const auto fits = n_fits(*d);
       const double mine = fit(*n2, 4).constant;
       rows.push_back(judge(r, mine <= 1.05 * fits.front().second.constant,
-                           "smallest: " + fits.front().first + "; N2 BAC (2) at " + fixed(mine / fits.front().second.constant, 2) +
+                           "smallest: " + fits.front().first + "; N2 BAC (2) at " + fixed_text(mine / fits.front().second.constant, 2) +
                                "× its error at equal h/C" + quick));
     }
   }
@@ -301,7 +287,7 @@ void accuracy_rows(std::vector<audit_row>& rows, reader& rd) {
       std::sort(refs.begin(), refs.end());
       rows.push_back(judge(r, !refs.empty() && refs[0].second == "RS4-S5-McLachlan:CBA",
                            "best: " + refs[0].second + (refs.size() > 1 ? "; next " + refs[1].second + " at " +
-                                                                            fixed(refs[1].first / refs[0].first, 2) + "×"
+                                                                            fixed_text(refs[1].first / refs[0].first, 2) + "×"
                                                                       : std::string())));
     }
   }
@@ -349,7 +335,7 @@ void accuracy_rows(std::vector<audit_row>& rows, reader& rd) {
   // Slopes: all the integrators of Figs. 1, 3-5 are of order 4, the leapfrogs of order 2.
   {
     auto r = row("All dedicated and reference 4th-order schemes show slope 4 on Figs. 1, 3-5 (leapfrogs slope 2)", "4.2-4.3, Figs. 1, 3-5",
-                 "fitted log-log slope over the three finest h within " + fixed(slope_tolerance, 1) + " of the order");
+                 "fitted log-log slope over the three finest h within " + fixed_text(slope_tolerance, 1) + " of the order");
     if (!ran) rows.push_back(not_computed(r, absent));
     else {
       int total = 0, within = 0;
@@ -367,7 +353,7 @@ void accuracy_rows(std::vector<audit_row>& rows, reader& rd) {
       }
       rows.push_back(judge(r, total > 0 && within == total,
                            std::to_string(within) + " of " + std::to_string(total) + " curves within tolerance; largest deviation " +
-                               fixed(worst, 2) + " at " + worst_name + quick));
+                               fixed_text(worst, 2) + " at " + worst_name + quick));
     }
   }
 }
@@ -433,10 +419,6 @@ void dedicated_rows(std::vector<audit_row>& rows, reader& rd) {
   const std::string absent = "not computed in this run (section dedicated)";
   count_row(rows, rd, "Spherical top: the N integrators have 12 real solutions", "4.2, Table 2", "solutions_sphere.json", 12, false);
   {
-    const std::vector<std::pair<std::string, double>> table3 = {
-        {"N1 ABC (1)", 100.50}, {"N2 ABC (1)", 3.40}, {"N3 ABC (1)", 22.51}, {"N3 ABC (2)", 92.79},
-        {"N3 ABC (3)", 1},      {"N4 ABC (1)", 991.42}, {"N4 ABC (2)", 1.58}, {"N4 ABC (3)", 1.18},
-        {"N5 ABC (1)", 92.79},  {"N5 ABC (3)", 22.51},  {"N7 ABC (1)", 100.50}};  // LV Table 3, analytic column
     auto r = row("Table 3, analytic column: ‖H_R5‖ normalised by N5 (2) (1 to 991.42)", "4.2, Table 3",
                  "every ratio equal to the paper's to its two printed decimals (±0.005)");
     const auto* j = ran ? rd.json("solutions_sphere.json") : nullptr;
@@ -446,24 +428,22 @@ void dedicated_rows(std::vector<audit_row>& rows, reader& rd) {
       int within = 0;
       double worst = 0;
       std::string worst_name;
-      for (const auto& [name, lv] : table3) {
+      for (const auto& paper : lv_table3) {
+        const std::string name = paper.integrator;
+        const double lv = paper.analytic;
         const auto* s = find(*j, name);
         if (!s) continue;
         const double d = s->at("analytic_remainder").get<double>() / n5->at("analytic_remainder").get<double>() - lv;
         within += std::abs(d) <= 0.005 + 1e-9;
         if (std::abs(d) >= std::abs(worst)) worst = d, worst_name = name;
       }
-      rows.push_back(judge(r, within == static_cast<int>(table3.size()),
-                           std::to_string(within) + " of " + std::to_string(table3.size()) + " equal; largest difference " +
-                               general(worst, 2) + " (" + worst_name + ")"));
+      rows.push_back(judge(r, within == static_cast<int>(lv_table3.size()),
+                           std::to_string(within) + " of " + std::to_string(lv_table3.size()) + " equal; largest difference " +
+                               significant_text(worst, 2) + " (" + worst_name + ")"));
     }
   }
   count_row(rows, rd, "Water: the N integrators have 90 real solutions over the six permutations", "4.3", "solutions_water.json", 90, false);
 
-  const std::vector<std::pair<std::string, double>> table4 = {
-      {"N1 ABC (1)", 2.09}, {"N1 ABC (2)", 3.83}, {"N2 ABC (1)", 3.51}, {"N2 CAB (2)", 2.91}, {"N2 ACB (1)", 1.18},
-      {"N2 BAC (2)", 1.06}, {"N3 ABC (1)", 2.77}, {"N3 BAC (1)", 2.96}, {"N4 BCA (1)", 3.22}, {"N5 CAB (2)", 1.59},
-      {"N5 ACB (1)", 2.84}, {"N5 BAC (1)", 2.67}, {"N6 ABC (1)", 2.11}, {"N6 ABC (2)", 2.19}, {"N6 BAC (1)", 3.27}};  // LV Table 4 (×10^-2)
   const auto* water = ran ? rd.json("solutions_water.json") : nullptr;
   {
     auto r = row("Table 4 lists the 15 N integrators of smallest analytic remainder for water", "4.3, Table 4",
@@ -476,7 +456,7 @@ void dedicated_rows(std::vector<audit_row>& rows, reader& rd) {
       std::string extra, missing;
       std::set<std::string> ours;
       for (std::size_t k = 0; k < std::min<std::size_t>(15, all.size()); ++k) ours.insert(all[k].second);
-      for (const auto& [name, v] : table4) {
+      for (const auto& [name, v] : lv_table4) {
         if (!ours.count(name)) missing += (missing.empty() ? "" : ", ") + name;
         ours.erase(name);
       }
@@ -495,15 +475,15 @@ void dedicated_rows(std::vector<audit_row>& rows, reader& rd) {
       int within = 0;
       double worst = 0;
       std::string worst_name;
-      for (const auto& [name, lv] : table4) {
+      for (const auto& [name, lv] : lv_table4) {
         const auto* s = find(*water, name);
         if (!s) continue;
         const double d = 100 * s->at("analytic_remainder").get<double>() - lv;
         within += std::abs(d) <= 0.005 + 1e-9;
         if (std::abs(d) >= std::abs(worst)) worst = d, worst_name = name;
       }
-      rows.push_back(judge(r, within == static_cast<int>(table4.size()),
-                           std::to_string(within) + " of 15 equal; largest difference " + general(worst, 2) + "e-2 (" + worst_name + ")"));
+      rows.push_back(judge(r, within == static_cast<int>(lv_table4.size()),
+                           std::to_string(within) + " of 15 equal; largest difference " + significant_text(worst, 2) + "e-2 (" + worst_name + ")"));
     }
   }
   {
@@ -515,8 +495,8 @@ void dedicated_rows(std::vector<audit_row>& rows, reader& rd) {
       for (const auto& s : water->at("solutions")) all.emplace_back(s.at("analytic_remainder").get<double>(), solution_name(s));
       std::sort(all.begin(), all.end());
       const bool ok = all.size() >= 2 && all[0].second == "N2 BAC (2)" && all[1].second == "N2 ACB (1)";
-      rows.push_back(judge(r, ok, all[0].second + " (" + general(100 * all[0].first) + "e-2), " + all[1].second + " (" +
-                                      general(100 * all[1].first) + "e-2)"));
+      rows.push_back(judge(r, ok, all[0].second + " (" + significant_text(100 * all[0].first, 3) + "e-2), " + all[1].second + " (" +
+                                      significant_text(100 * all[1].first, 3) + "e-2)"));
     }
   }
   // Coefficients printed in eqs. (74) and (76) (quoted), against the solver's 40-digit values.
@@ -553,7 +533,7 @@ void dedicated_rows(std::vector<audit_row>& rows, reader& rd) {
       if (e.name == which) {
         const double d = agreeing_digits(s->at("coefficients").at(e.coefficient).get<std::string>(), e.paper);
         least = std::min(least, d);
-        v += (v.empty() ? "" : ", ") + e.coefficient + ": " + fixed(d, 1);
+        v += (v.empty() ? "" : ", ") + e.coefficient + ": " + fixed_text(d, 1);
       }
     rows.push_back(judge(r, least >= 38, "agreeing digits " + v));
   }
@@ -590,7 +570,7 @@ void dedicated_rows(std::vector<audit_row>& rows, reader& rd) {
       std::vector<double> analytic, numeric;
       std::string analytic_best, numeric_best;
       double a_min = 1e300, n_min = 1e300;
-      for (const auto& [name, lv] : table4) {
+      for (const auto& [name, lv] : lv_table4) {
         const auto* s = find(*water, name);
         const auto* c = series(*d, name);
         if (!s || !c) continue;
@@ -601,7 +581,7 @@ void dedicated_rows(std::vector<audit_row>& rows, reader& rd) {
       }
       rows.push_back(judge(r, analytic_best != numeric_best,
                            "analytic favourite " + analytic_best + ", numeric best " + numeric_best + "; Spearman ρ (analytic, numeric) = " +
-                               fixed(rank_correlation(analytic, numeric), 3) + " over " + std::to_string(analytic.size())));
+                               fixed_text(rank_correlation(analytic, numeric), 3) + " over " + std::to_string(analytic.size())));
     }
   }
   count_row(rows, rd, "Water: the integrator R has 46 real solutions over the six permutations", "4.3", "solutions_water_R.json", 46, true);
@@ -681,7 +661,7 @@ bands band_counts(const map_file& m) {
   return b;
 }
 
-std::string share(int a, int n) { return (n ? fixed(100.0 * a / n, 1) : std::string("0")) + " % (" + std::to_string(a) + "/" + std::to_string(n) + ")"; }
+std::string share(int a, int n) { return (n ? fixed_text(100.0 * a / n, 1) : std::string("0")) + " % (" + std::to_string(a) + "/" + std::to_string(n) + ")"; }
 
 void maps_rows(std::vector<audit_row>& rows, reader& rd) {
   const auto& in = rd.inputs();
@@ -707,7 +687,7 @@ void maps_rows(std::vector<audit_row>& rows, reader& rd) {
       int listed = 0;
       for (const auto& x : maps["N"]->bodies)
         if (x.ratio && *x.ratio > 1 && listed++ < 5)
-          where += (where.empty() ? "" : ", ") + std::string("(") + general(x.I1) + ", " + general(x.I2) + "; δ " + general(asymmetry(x), 2) +
+          where += (where.empty() ? "" : ", ") + std::string("(") + significant_text(x.I1, 3) + ", " + significant_text(x.I2, 3) + "; δ " + significant_text(asymmetry(x), 2) +
                    "; " + x.best + ")";
       rows.push_back(judge(r, b.total_wins > 0 && f < 0.5,
                            "N better at " + share(b.total_wins, b.total) + (where.empty() ? "" : ": (I1, I2) = " + where) + grid(*maps["N"])));
@@ -721,8 +701,8 @@ void maps_rows(std::vector<audit_row>& rows, reader& rd) {
       const auto b = band_counts(*maps["N"]);
       const double near = median(b.log_ratio[0]), far = median(b.log_ratio[2]);
       const bool ok = b.n[0] > 0 && b.n[2] > 0 && near < far;
-      rows.push_back(judge(r, ok, "median log10 ratio " + fixed(near, 2) + " near the tops, " + fixed(median(b.log_ratio[1]), 2) +
-                                      " in between, " + fixed(far, 2) + " very asymmetric; N wins " + share(b.wins[0], b.n[0]) +
+      rows.push_back(judge(r, ok, "median log10 ratio " + fixed_text(near, 2) + " near the tops, " + fixed_text(median(b.log_ratio[1]), 2) +
+                                      " in between, " + fixed_text(far, 2) + " very asymmetric; N wins " + share(b.wins[0], b.n[0]) +
                                       " near, " + share(b.wins[2], b.n[2]) + " far" + grid(*maps["N"])));
     }
   }
@@ -734,8 +714,8 @@ void maps_rows(std::vector<audit_row>& rows, reader& rd) {
       const auto b = band_counts(*maps["P"]);
       rows.push_back(judge(r, b.total_wins > 0 && b.wins[0] == 0,
                            "P wins " + share(b.wins[0], b.n[0]) + " near the tops, " + share(b.wins[1], b.n[1]) + " in between, " +
-                               share(b.wins[2], b.n[2]) + " very asymmetric; median log10 ratio " + fixed(median(b.log_ratio[0]), 2) +
-                               ", " + fixed(median(b.log_ratio[1]), 2) + ", " + fixed(median(b.log_ratio[2]), 2) + grid(*maps["P"])));
+                               share(b.wins[2], b.n[2]) + " very asymmetric; median log10 ratio " + fixed_text(median(b.log_ratio[0]), 2) +
+                               ", " + fixed_text(median(b.log_ratio[1]), 2) + ", " + fixed_text(median(b.log_ratio[2]), 2) + grid(*maps["P"])));
     }
   }
   {
@@ -748,7 +728,7 @@ void maps_rows(std::vector<audit_row>& rows, reader& rd) {
       for (const auto& x : maps["P"]->bodies)
         if (x.singular) {
           singular.insert({x.i, x.j});
-          v += (v.empty() ? "" : ", ") + std::string("(") + general(x.I1) + ", " + general(x.I2) + ")";
+          v += (v.empty() ? "" : ", ") + std::string("(") + significant_text(x.I1, 3) + ", " + significant_text(x.I2, 3) + ")";
         }
       bool isolated = true;
       for (const auto& [i, j] : singular)
@@ -802,7 +782,7 @@ void truth_rows(std::vector<audit_row>& rows, reader& rd) {
       continue;
     }
     const double rho = rank_correlation(x, y);
-    rows.push_back(judge(corr, rho >= 0.8, "Spearman ρ = " + fixed(rho, 3) + " over " + std::to_string(x.size()) + " bodies"));
+    rows.push_back(judge(corr, rho >= 0.8, "Spearman ρ = " + fixed_text(rho, 3) + " over " + std::to_string(x.size()) + " bodies"));
     rows.push_back(judge(flips, flipped <= 0.1 * static_cast<double>(x.size()),
                          "flips at " + share(flipped, static_cast<int>(x.size()))));
   }

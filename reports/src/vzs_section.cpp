@@ -15,6 +15,7 @@
 #include "rotlie/models/experiments/dipole_field_experiment.hpp"
 #include "rotlie/models/experiments/free_water_experiment.hpp"
 #include "rotlie/reports/chart.hpp"
+#include "rotlie/reports/number_text.hpp"
 #include "rotlie/reports/protocol_curves.hpp"
 #include "rotlie/schemes/quad.hpp"
 #include "rotlie/solver/scheme_table.hpp"
@@ -44,24 +45,15 @@ std::string budget_text(bool quick) {
   return quick ? "`--quick`, about 7 s of CPU" : "the default, about 40 s of CPU on one core (1–2 min of wall time on a busy machine)";
 }
 
-std::string fixed(double x, int digits) {
-  std::ostringstream o;
-  o << std::fixed << std::setprecision(digits) << x;
-  return o.str();
-}
-
 // x to `digits` significant digits, fixed-point for ordinary sizes (150, 0.0035), else scientific.
 std::string sig(double x, int digits = 2) {
   if (!std::isfinite(x)) return "—";
-  std::ostringstream o;
   const double a = std::abs(x);
   if (a == 0 || (a >= 1e-3 && a < 1e6)) {
     const int magnitude = a == 0 ? 0 : static_cast<int>(std::floor(std::log10(a)));
-    o << std::fixed << std::setprecision(std::max(0, digits - 1 - magnitude)) << x;
-  } else {
-    o << std::scientific << std::setprecision(digits - 1) << x;
+    return fixed_text(x, std::max(0, digits - 1 - magnitude));
   }
-  return o.str();
+  return scientific_text(x, digits - 1);
 }
 
 // A time in ps in the unit the paper would use, with its error in the same unit.
@@ -223,7 +215,7 @@ void roundoff_table(section_writer& w, const budget& b, findings& found) {
     if (name == "double") found.sier2_tau_long = r.tau_ps, found.sier2_long_run = r.t_ps.back(), found.sier2_tau10 = tau10;
     // a float128 run cannot be told apart from its float128 reference: τ is then not fitted (—)
     md << "| " << name << " | " << duration(r.t_ps.back()) << " | " << r.steps << " | " << sig(r.delta.back()) << " | "
-       << fixed(p, 2) << " | " << sig(at10.delta.back() / eps) << " | " << duration(r.tau_ps) << " | " << duration(tau10)
+       << fixed_text(p, 2) << " | " << sig(at10.delta.back() / eps) << " | " << duration(r.tau_ps) << " | " << duration(tau10)
        << " | " << sig(r.reference_delta.back()) << " |\n";
   };
   w.progress("SIER2 round-off in double");
