@@ -90,6 +90,24 @@ struct subcommand {
   std::function<int()> run;
 };
 
+// A command on one body: the scales of its inertia, G0 and T checked before it runs.
+template <class Options>
+std::function<int()> with_scales_checked(const Options& o, int (*run)(const Options&)) {
+  return [&o, run] {
+    check_numeric_scales(o.inertia, o.G0, o.T);
+    return run(o);
+  };
+}
+
+// A command that writes into --out: the folder checked before it runs (when given).
+template <class Options>
+std::function<int()> with_folder_checked(const Options& o, int (*run)(const Options&)) {
+  return [&o, run] {
+    if (!o.out.empty()) check_output_folder(o.out, "--out");
+    return run(o);
+  };
+}
+
 const char* const force_help = "Use a scheme-table file solved for another body (with a warning)";
 
 // The md scene's options: the liquid-water scene takes options of its own and none of the others'.
@@ -151,10 +169,7 @@ subcommand add_solve(CLI::App& app, solve_options& solve) {
   solve_cmd->add_flag("--json", solve.json, "Machine-readable output on stdout");
   solve_cmd->add_option("--starts", solve.starts, "Q, QRS: random starts per word and permutation (default 40)");
   solve_cmd->add_option("--seed", solve.seed, "Q, QRS: seed of the starts (default 1)");
-  return {solve_cmd, [&solve] {
-            if (!solve.out.empty()) check_output_folder(solve.out, "--out");
-            return run_solve(solve);
-          }};
+  return {solve_cmd, with_folder_checked(solve, run_solve)};
 }
 
 subcommand add_integrate(CLI::App& app, integrate_options& integrate) {
@@ -166,10 +181,7 @@ subcommand add_integrate(CLI::App& app, integrate_options& integrate) {
   integrate_cmd->add_option("--G0", integrate.G0, "Initial body angular momentum g1,g2,g3 (default 1,1,1)");
   integrate_cmd->add_flag("--json", integrate.json, "Machine-readable output on stdout");
   integrate_cmd->add_flag("--force", integrate.force, force_help);
-  return {integrate_cmd, [&integrate] {
-            check_numeric_scales(integrate.inertia, integrate.G0, integrate.T);
-            return run_integrate(integrate);
-          }};
+  return {integrate_cmd, with_scales_checked(integrate, run_integrate)};
 }
 
 subcommand add_order(CLI::App& app, order_options& order) {
@@ -183,10 +195,7 @@ subcommand add_order(CLI::App& app, order_options& order) {
   order_cmd->add_option("--G0", order.G0, "Initial body angular momentum (default 1,1,1)");
   order_cmd->add_flag("--json", order.json, "Machine-readable output on stdout");
   order_cmd->add_flag("--force", order.force, force_help);
-  return {order_cmd, [&order] {
-            check_numeric_scales(order.inertia, order.G0, order.T);
-            return run_order(order);
-          }};
+  return {order_cmd, with_scales_checked(order, run_order)};
 }
 
 subcommand add_exact(CLI::App& app, exact_options& exact) {
@@ -195,10 +204,7 @@ subcommand add_exact(CLI::App& app, exact_options& exact) {
   exact_cmd->add_option("--T", exact.T, "Time")->required();
   exact_cmd->add_option("--G0", exact.G0, "Initial body angular momentum (default 1,1,1)");
   exact_cmd->add_flag("--json", exact.json, "Machine-readable output on stdout");
-  return {exact_cmd, [&exact] {
-            check_numeric_scales(exact.inertia, exact.G0, exact.T);
-            return run_exact(exact);
-          }};
+  return {exact_cmd, with_scales_checked(exact, run_exact)};
 }
 
 subcommand add_md(CLI::App& app, md_options& md, md_liquid_water_options& liquid) {
@@ -284,10 +290,7 @@ subcommand add_sixth(CLI::App& app, sixth_options& sixth) {
   sixth_cmd->add_option("--out", sixth.out, "Folder for the resumable scan state and the scheme tables");
   sixth_cmd->add_flag("--references", sixth.references, "List the general 6th-order reference compositions");
   sixth_cmd->add_flag("--json", sixth.json, "Machine-readable output on stdout");
-  return {sixth_cmd, [&sixth] {
-            if (!sixth.out.empty()) check_output_folder(sixth.out, "--out");
-            return run_sixth(sixth);
-          }};
+  return {sixth_cmd, with_folder_checked(sixth, run_sixth)};
 }
 
 // Every subcommand's options, filled by CLI11 while it parses: it keeps pointers to them, so they
@@ -311,11 +314,9 @@ struct all_options {
 
 // The command tree, in the order of rotlie --help.
 std::vector<subcommand> add_subcommands(CLI::App& app, all_options& o) {
-  return {add_dims(app, o.dims),           add_stages(app, o.stages), add_remainder(app, o.remainder),
-          add_solve(app, o.solve),         add_integrate(app, o.integrate), add_order(app, o.order),
-          add_exact(app, o.exact),         add_md(app, o.md, o.liquid), add_report(app, o.report),
-          add_map(app, o.map),             add_best(app, o.best),     add_bch(app, o.bch),
-          add_sixth(app, o.sixth)};
+  return {add_dims(app, o.dims), add_stages(app, o.stages), add_remainder(app, o.remainder), add_solve(app, o.solve),
+          add_integrate(app, o.integrate), add_order(app, o.order), add_exact(app, o.exact), add_md(app, o.md, o.liquid),
+          add_report(app, o.report), add_map(app, o.map), add_best(app, o.best), add_bch(app, o.bch), add_sixth(app, o.sixth)};
 }
 
 // The subcommand argv[1] names, if any.
