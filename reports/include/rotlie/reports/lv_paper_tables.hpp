@@ -1,6 +1,6 @@
 #pragma once
 // Numbers printed in Laskar & Vaillant (2018), quoted once for every section that compares with
-// them (the accuracy section's regenerated Table 3, the audit's rows).
+// them (the accuracy section's regenerated Table 3, the audit's claims).
 #include <array>
 
 namespace rotlie::reports {
@@ -46,5 +46,20 @@ inline constexpr std::array<lv_table4_row, 15> lv_table4 = {{{"N1 ABC (1)", 2.09
                                                             {"N6 ABC (1)", 2.11},
                                                             {"N6 ABC (2)", 2.19},
                                                             {"N6 BAC (1)", 3.27}}};
+
+/// Stage coefficients printed with 41 digits in LV eqs. (74) and (76), as quoted there.
+struct lv_printed_coefficient {
+  const char* file;  ///< the dedicated section's solutions file that holds the scheme
+  const char* integrator;
+  const char* coefficient;
+  const char* paper;
+};
+
+inline constexpr std::array<lv_printed_coefficient, 5> lv_printed_coefficients = {{
+    {"solutions_water.json", "N2 BAC (2)", "a1", "4.5504624774591050429019276281136041301731e-2"},    // LV eq. (74)
+    {"solutions_water.json", "N2 BAC (2)", "a2", "1.5208328361334726621353294430175796767150e-1"},    // LV eq. (74)
+    {"solutions_water_P.json", "P1 BAC (5)", "a1", "2.6576137190217391781483465189759344419197e-2"},  // LV eq. (76)
+    {"solutions_water_P.json", "P1 BAC (5)", "b1", "2.8352180398306075206301328654179005782548e-1"},  // LV eq. (76)
+    {"solutions_water_P.json", "P1 BAC (5)", "a2", "2.7103966011355754480520833151108230977015e-1"}}};  // LV eq. (76)
 
 }  // namespace rotlie::reports
