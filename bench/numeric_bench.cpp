@@ -7,7 +7,6 @@
 #include <benchmark/benchmark.h>
 
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
-#include <boost/multiprecision/float128.hpp>
 
 #include <ctime>
 #include <cstdio>
@@ -23,12 +22,12 @@
 #include "rotlie/models/composition_stepper.hpp"
 #include "rotlie/models/exact_free_body.hpp"
 #include "rotlie/models/exact_free_rotation.hpp"
+#include "rotlie/schemes/quad.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 
 namespace {
 
 using namespace rotlie;
-using quad = boost::multiprecision::float128;
 const models::vec3<double> water{10220.0 / 29376, 19187.0 / 29376, 1};
 
 models::body_state<double> start(double d = -1) {

@@ -6,10 +6,13 @@
 #include <CLI/CLI.hpp>
 
 #include <csignal>
+#include <exception>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <new>
 #include <sstream>
+#include <vector>
 
 #include "arguments.hpp"
 #include "commands.hpp"
@@ -18,9 +21,7 @@
 
 namespace {
 
-using rotlie::app::exit_failure;
-using rotlie::app::exit_usage;
-using rotlie::app::usage_error;
+using namespace rotlie::app;
 
 int fail(const std::string& message, int status) {
   std::cerr << "rotlie: error: " << rotlie::app::one_line(message) << "\n";
@@ -82,29 +83,66 @@ int finished(int status) {
   return fail("cannot write to standard output: " + why, exit_failure);
 }
 
-}  // namespace
+// One subcommand: its node in CLI11's tree and what runs it once parsed (the checks CLI11 cannot
+// make first, then the command), returning the exit status.
+struct subcommand {
+  CLI::App* node;
+  std::function<int()> run;
+};
 
-int main(int argc, char** argv) {
-  using namespace rotlie::app;
-  // The same behaviour on a closed pipe whatever the parent left SIGPIPE as (see the top).
-  std::signal(SIGPIPE, SIG_DFL);
-  route_standard_output();
-  CLI::App app{"rotlie — dedicated symplectic integrators for rigid-body rotation (Laskar & Vaillant 2018)"};
-  app.require_subcommand(1);
-  app.footer(exit_status_help);
+// A command on one body: the scales of its inertia, G0 and T checked before it runs.
+template <class Options>
+std::function<int()> with_scales_checked(const Options& o, int (*run)(const Options&)) {
+  return [&o, run] {
+    rotlie::runs::check_numeric_scales(o.inertia, o.G0, o.T);
+    return run(o);
+  };
+}
 
-  dims_options dims;
+// A command that writes into --out: the folder checked before it runs (when given).
+template <class Options>
+std::function<int()> with_folder_checked(const Options& o, int (*run)(const Options&)) {
+  return [&o, run] {
+    if (!o.out.empty()) check_output_folder(o.out, "--out");
+    return run(o);
+  };
+}
+
+const char* const force_help = "Use a scheme-table file solved for another body (with a warning)";
+
+// The md scene's options: the liquid-water scene takes options of its own and none of the others'.
+int run_md_scene(const CLI::App& md_cmd, const md_options& md, md_liquid_water_options& liquid) {
+  if (md.scene != "liquid-water") {
+    for (const char* o : {"--molecules", "--threads", "--state"})
+      if (md_cmd.count(o) > 0) throw usage_error(std::string(o) + " applies to the liquid-water scene only");
+    return run_md(md);
+  }
+  for (const char* o : {"--seed", "--scalar", "--dipole", "--field"})
+    if (md_cmd.count(o) > 0) throw usage_error(std::string(o) + " does not apply to the liquid-water scene");
+  liquid.integrator = md.integrator;
+  liquid.h = md.h;
+  if (!md.T.empty()) liquid.T = md.T;
+  if (!md.runs.empty()) liquid.runs = md.runs;
+  liquid.json = md.json;
+  return run_md_liquid_water(liquid);
+}
+
+subcommand add_dims(CLI::App& app, dims_options& dims) {
   auto* dims_cmd = app.add_subcommand("dims", "Dimensions of L_k and the Theorem 1 and 2 verdicts per order");
   dims_cmd->add_option("--max-order", dims.max_order, "Highest order k (1 to 200)")->required();
   dims_cmd->add_flag("--json", dims.json, "Machine-readable output on stdout");
   dims_cmd->add_flag("--exact", dims.exact, "Exact rational elimination at every order (no modular certificate)");
+  return {dims_cmd, [&dims] { return run_dims(dims); }};
+}
 
-  stages_options stages;
+subcommand add_stages(CLI::App& app, stages_options& stages) {
   auto* stages_cmd = app.add_subcommand("stages", "Table 1: equation and stage counts, all four blocks");
   stages_cmd->add_option("--max-order", stages.max_order, "Highest order (1 to 40)")->required();
   stages_cmd->add_flag("--json", stages.json, "Machine-readable output on stdout");
+  return {stages_cmd, [&stages] { return run_stages(stages); }};
+}
 
-  remainder_options remainder;
+subcommand add_remainder(CLI::App& app, remainder_options& remainder) {
   auto* remainder_cmd = app.add_subcommand("remainder", "Modified Hamiltonian H_R2 … H_RK of a splitting scheme");
   remainder_cmd->add_option("--scheme", remainder.scheme,
                             "N1…N7, R, P1…P15, RSRSRSR, SRSRSRS, or a word such as ABCBA (at most 40 letters, and fewer free "
@@ -117,8 +155,10 @@ int main(int argc, char** argv) {
   remainder_cmd->add_option("--coeffs", remainder.coeffs, "Values of free coefficients, e.g. a1=1/6,b1=0.25");
   remainder_cmd->add_flag("--latex", remainder.latex, "LaTeX output");
   remainder_cmd->add_flag("--json", remainder.json, "Machine-readable output on stdout");
+  return {remainder_cmd, [&remainder] { return run_remainder(remainder); }};
+}
 
-  solve_options solve;
+subcommand add_solve(CLI::App& app, solve_options& solve) {
   auto* solve_cmd = app.add_subcommand("solve", "All real solutions of a dedicated family for one body, ranked");
   solve_cmd->add_option("--family", solve.family, "N, R, P, or Q, QRS (two free parameters)")->required();
   solve_cmd->add_option("--scheme", solve.scheme, "One scheme of the family, e.g. N2 (default: all)");
@@ -129,9 +169,10 @@ int main(int argc, char** argv) {
   solve_cmd->add_flag("--json", solve.json, "Machine-readable output on stdout");
   solve_cmd->add_option("--starts", solve.starts, "Q, QRS: random starts per word and permutation (default 40)");
   solve_cmd->add_option("--seed", solve.seed, "Q, QRS: seed of the starts (default 1)");
+  return {solve_cmd, with_folder_checked(solve, run_solve)};
+}
 
-  const char* const force_help = "Use a scheme-table file solved for another body (with a warning)";
-  integrate_options integrate;
+subcommand add_integrate(CLI::App& app, integrate_options& integrate) {
   auto* integrate_cmd = app.add_subcommand("integrate", "Mean attitude error and CPU time of one run against the exact solution");
   integrate_cmd->add_option("--scheme", integrate.scheme, "Reference name (RS4-S5-McLachlan:CBA), SCHEME:PERM:LABEL (N2:BAC:2) or a scheme-table file")->required();
   integrate_cmd->add_option("--inertia", integrate.inertia, "I1,I2,I3 as exact numbers, or water, sphere")->required();
@@ -140,8 +181,10 @@ int main(int argc, char** argv) {
   integrate_cmd->add_option("--G0", integrate.G0, "Initial body angular momentum g1,g2,g3 (default 1,1,1)");
   integrate_cmd->add_flag("--json", integrate.json, "Machine-readable output on stdout");
   integrate_cmd->add_flag("--force", integrate.force, force_help);
+  return {integrate_cmd, with_scales_checked(integrate, run_integrate)};
+}
 
-  order_options order;
+subcommand add_order(CLI::App& app, order_options& order) {
   auto* order_cmd = app.add_subcommand("order", "Numeric order: errors at h = T/2^i and the fitted slope");
   order_cmd->add_option("--scheme", order.scheme, "Reference name, SCHEME:PERM:LABEL or a scheme-table file")->required();
   order_cmd->add_option("--inertia", order.inertia, "I1,I2,I3 as exact numbers, or water, sphere")->required();
@@ -152,15 +195,19 @@ int main(int argc, char** argv) {
   order_cmd->add_option("--G0", order.G0, "Initial body angular momentum (default 1,1,1)");
   order_cmd->add_flag("--json", order.json, "Machine-readable output on stdout");
   order_cmd->add_flag("--force", order.force, force_help);
+  return {order_cmd, with_scales_checked(order, run_order)};
+}
 
-  exact_options exact;
+subcommand add_exact(CLI::App& app, exact_options& exact) {
   auto* exact_cmd = app.add_subcommand("exact", "The exact free-body state (G, attitude Q) at time T");
   exact_cmd->add_option("--inertia", exact.inertia, "I1,I2,I3 as exact numbers, or water, sphere")->required();
   exact_cmd->add_option("--T", exact.T, "Time")->required();
   exact_cmd->add_option("--G0", exact.G0, "Initial body angular momentum (default 1,1,1)");
   exact_cmd->add_flag("--json", exact.json, "Machine-readable output on stdout");
+  return {exact_cmd, with_scales_checked(exact, run_exact)};
+}
 
-  md_options md;
+subcommand add_md(CLI::App& app, md_options& md, md_liquid_water_options& liquid) {
   auto* md_cmd = app.add_subcommand("md", "van Zon & Schofield's scenes: free water (orientation error time tau) and a "
                                           "dipole in a field (Table I), any integrator");
   md_cmd->add_option("--scene", md.scene, "free-water, dipole-field or liquid-water")->required();
@@ -178,12 +225,13 @@ int main(int argc, char** argv) {
   md_cmd->add_option("--dipole", md.dipole, "dipole-field: the dipole in debye (default 1.84)");
   md_cmd->add_option("--field", md.field, "dipole-field: the field along z in MV/m (default 2.7)");
   md_cmd->add_flag("--json", md.json, "Machine-readable output on stdout");
-  md_liquid_water_options liquid;  // liquid-water only: the scene of vZS section V.C
   md_cmd->add_option("--molecules", liquid.molecules, "liquid-water: molecules in the box (default 512; at least 365)");
   md_cmd->add_option("--threads", liquid.threads, "liquid-water: threads of the force loop (default 2; results do not depend on it)");
   md_cmd->add_option("--state", liquid.state, "liquid-water: a state file, read if it exists, else the equilibrated start is written there");
+  return {md_cmd, [md_cmd, &md, &liquid] { return run_md_scene(*md_cmd, md, liquid); }};
+}
 
-  report_command_options report;
+subcommand add_report(CLI::App& app, report_command_options& report) {
   auto* report_cmd = app.add_subcommand("report", "Regenerate every table and figure into one folder");
   report_cmd->add_option("--out", report.out, "Output folder (default: rotlie-report)");
   report_cmd->add_flag("--quick", report.quick, "Smaller sweeps, for a fast look");
@@ -193,9 +241,11 @@ int main(int argc, char** argv) {
                        "The papers' full statistics: liquid water's nine 1-ps runs per point (about 30 min), maps over all bodies at "
                        "the paper's grid (--grid 200; hours for the P family)");
   report_cmd->add_option("--maps", report.maps, "Folder of map-N.jsonl / map-P.jsonl written by rotlie map, drawn instead of computed");
+  return {report_cmd, [&report] { return run_report_command(report); }};  // checks and locks its folder itself
+}
 
-  // Body-set maps (LV section 5) and the best integrator for one body.
-  map_options map;
+// Body-set maps (LV section 5).
+subcommand add_map(CLI::App& app, map_options& map) {
   auto* map_cmd = app.add_subcommand("map", "Best integrator of a family over the set of rigid bodies (LV Figs. 7-10), one JSON line per body");
   map_cmd->add_option("--family", map.family, "N, R or P")->required();
   map_cmd->add_option("--grid", map.grid, "Divisions K of the triangle: (K+1)^2 grid points, 200 for the paper's 40,401")->required();
@@ -206,21 +256,29 @@ int main(int argc, char** argv) {
   map_cmd->add_flag("--fast", map.fast, "N and P: continuation along each row (default). N: both ends and every doubtful chain by the exact solver; P: both ends and each body's best by the exact solver")
       ->excludes(map_exact);
   map_cmd->footer("Under mpirun (mpirun -n 4 rotlie map ...) the bodies are shared among the processes; the file is the same.");
-  best_options best;
+  return {map_cmd, [&map] { return run_map(map); }};  // checks its folder itself (on rank 0 only under MPI)
+}
+
+// The best integrator for one body.
+subcommand add_best(CLI::App& app, best_options& best) {
   auto* best_cmd = app.add_subcommand("best", "Best N, R and P integrators for one body, the best reference and the predicted gain");
   best_cmd->add_option("--inertia", best.inertia, "I1,I2,I3 as exact numbers, or water")->required();
   best_cmd->add_flag("--json", best.json, "Machine-readable output on stdout");
   best_cmd->add_flag("--analytic-only", best.analytic_only, "Only the analytic ranking (no measured column)");
+  return {best_cmd, [&best] { return run_best(best); }};
+}
 
-  bch_options bch;
+subcommand add_bch(CLI::App& app, bch_options& bch) {
   auto* bch_cmd = app.add_subcommand("bch", "A BCH-type series in the free Lie algebra, exact, in the Lyndon basis");
   bch_cmd->add_option("--series", bch.series, "XY log(e^X e^Y), XYX log(e^X e^Y e^X), SYM log(e^{X/2} e^Y e^{X/2}), XYZ log(e^X e^Y e^Z)")
       ->required();
   bch_cmd->add_option("--degree", bch.degree, "Highest degree (1 to 20; 1 to 14 for XYZ)")->required();
   bch_cmd->add_option("--threads", bch.threads, "Worker threads (1 to 64, default 1)");
   bch_cmd->add_flag("--json", bch.json, "Machine-readable output on stdout");
+  return {bch_cmd, [&bch] { return run_bch(bch); }};
+}
 
-  sixth_options sixth;
+subcommand add_sixth(CLI::App& app, sixth_options& sixth) {
   auto* sixth_cmd = app.add_subcommand("sixth", "Dedicated 6th-order schemes: scan 21-stage palindromes, rank by ||H_R7||, write tables");
   sixth_cmd->add_option("--inertia", sixth.inertia, "I1,I2,I3 as exact numbers, or water, sphere");
   sixth_cmd->add_option("--split", sixth.split, "ABC (21 stages, default) or RS (19 stages)");
@@ -232,71 +290,58 @@ int main(int argc, char** argv) {
   sixth_cmd->add_option("--out", sixth.out, "Folder for the resumable scan state and the scheme tables");
   sixth_cmd->add_flag("--references", sixth.references, "List the general 6th-order reference compositions");
   sixth_cmd->add_flag("--json", sixth.json, "Machine-readable output on stdout");
+  return {sixth_cmd, with_folder_checked(sixth, run_sixth)};
+}
 
-  // CLI11 would only say "a subcommand is required" for a mistyped one: name it instead.
+// Every subcommand's options, filled by CLI11 while it parses: it keeps pointers to them, so they
+// live as long as the parse and are never moved.
+struct all_options {
+  dims_options dims;
+  stages_options stages;
+  remainder_options remainder;
+  solve_options solve;
+  integrate_options integrate;
+  order_options order;
+  exact_options exact;
+  md_options md;
+  md_liquid_water_options liquid;  // liquid-water only: the scene of vZS section V.C
+  report_command_options report;
+  map_options map;
+  best_options best;
+  bch_options bch;
+  sixth_options sixth;
+};
+
+// The command tree, in the order of rotlie --help.
+std::vector<subcommand> add_subcommands(CLI::App& app, all_options& o) {
+  return {add_dims(app, o.dims), add_stages(app, o.stages), add_remainder(app, o.remainder), add_solve(app, o.solve),
+          add_integrate(app, o.integrate), add_order(app, o.order), add_exact(app, o.exact), add_md(app, o.md, o.liquid),
+          add_report(app, o.report), add_map(app, o.map), add_best(app, o.best), add_bch(app, o.bch), add_sixth(app, o.sixth)};
+}
+
+// The subcommand argv[1] names, if any.
+const CLI::App* named_subcommand(const CLI::App& app, int argc, char** argv) {
+  for (const auto* sub : app.get_subcommands({}))
+    if (argc > 1 && sub->get_name() == argv[1]) return sub;
+  return nullptr;
+}
+
+// CLI11 would only say "a subcommand is required" for a mistyped one: name it instead. Empty when
+// argv[1] is a subcommand, --help or absent.
+std::string first_argument_problem(const CLI::App& app, int argc, char** argv) {
   std::string names;
-  const CLI::App* chosen = nullptr;
-  for (const auto* sub : app.get_subcommands({})) {
-    names += (names.empty() ? "" : ", ") + sub->get_name();
-    if (argc > 1 && sub->get_name() == argv[1]) chosen = sub;
-  }
-  if (argc > 1 && argv[1][0] != '-' && !chosen)
-    return fail("unknown subcommand '" + std::string(argv[1]) + "' (expected one of: " + names + ")", exit_usage);
+  for (const auto* sub : app.get_subcommands({})) names += (names.empty() ? "" : ", ") + sub->get_name();
+  if (argc > 1 && argv[1][0] != '-' && !named_subcommand(app, argc, argv))
+    return "unknown subcommand '" + std::string(argv[1]) + "' (expected one of: " + names + ")";
   if (argc > 1 && argv[1][0] == '-' && std::string(argv[1]) != "-h" && std::string(argv[1]) != "--help")
-    return fail("unknown option " + std::string(argv[1]) + " before the subcommand (options follow it; see rotlie --help)",
-                exit_usage);
+    return "unknown option " + std::string(argv[1]) + " before the subcommand (options follow it; see rotlie --help)";
+  return "";
+}
 
+// The exception a command ended with, said in one line with its exit status.
+int failure_status(const std::exception_ptr& failure) {
   try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return finished(app.exit(e));  // --help
-    return fail(reworded(e, chosen), exit_usage);
-  }
-
-  try {
-    for (const auto* sub : app.get_subcommands()) check_given_options(*sub);
-    if (*dims_cmd) return finished(run_dims(dims));
-    if (*stages_cmd) return finished(run_stages(stages));
-    if (*remainder_cmd) return finished(run_remainder(remainder));
-    if (*solve_cmd) {
-      if (!solve.out.empty()) check_output_folder(solve.out, "--out");
-      return finished(run_solve(solve));
-    }
-    if (*integrate_cmd) {
-      rotlie::runs::check_numeric_scales(integrate.inertia, integrate.G0, integrate.T);
-      return finished(run_integrate(integrate));
-    }
-    if (*order_cmd) {
-      rotlie::runs::check_numeric_scales(order.inertia, order.G0, order.T);
-      return finished(run_order(order));
-    }
-    if (*exact_cmd) {
-      rotlie::runs::check_numeric_scales(exact.inertia, exact.G0, exact.T);
-      return finished(run_exact(exact));
-    }
-    if (*md_cmd) {
-      if (md.scene != "liquid-water") {
-        for (const char* o : {"--molecules", "--threads", "--state"})
-          if (md_cmd->count(o) > 0) throw usage_error(std::string(o) + " applies to the liquid-water scene only");
-        return finished(run_md(md));
-      }
-      for (const char* o : {"--seed", "--scalar", "--dipole", "--field"})
-        if (md_cmd->count(o) > 0) throw usage_error(std::string(o) + " does not apply to the liquid-water scene");
-      liquid.integrator = md.integrator;
-      liquid.h = md.h;
-      if (!md.T.empty()) liquid.T = md.T;
-      if (!md.runs.empty()) liquid.runs = md.runs;
-      liquid.json = md.json;
-      return finished(run_md_liquid_water(liquid));
-    }
-    if (*report_cmd) return finished(run_report_command(report));  // checks and locks its folder itself
-    if (*map_cmd) return finished(run_map(map));  // checks its folder itself (on rank 0 only under MPI)
-    if (*best_cmd) return finished(run_best(best));
-    if (*bch_cmd) return finished(run_bch(bch));
-    if (*sixth_cmd) {
-      if (!sixth.out.empty()) check_output_folder(sixth.out, "--out");
-      return finished(run_sixth(sixth));
-    }
+    std::rethrow_exception(failure);
   } catch (const usage_error& e) {
     return fail(e.what(), exit_usage);
   } catch (const rotlie::runs::bad_input& e) {  // a name or value the library refused
@@ -307,7 +352,7 @@ int main(int argc, char** argv) {
   } catch (const std::bad_alloc&) {
     return fail("out of memory", exit_failure);
   } catch (const std::exception& e) {
-    if (is_library_message(e.what()))
+    if (rotlie::app::is_library_message(e.what()))
       return fail("the computation failed inside a numerical library; the input is probably outside what the method "
                   "supports (please report this command line)",
                   exit_failure);
@@ -315,5 +360,38 @@ int main(int argc, char** argv) {
   } catch (...) {
     return fail("unexpected internal failure (please report this command line)", exit_failure);
   }
+}
+
+// Runs the parsed subcommand after the option checks common to all.
+int dispatch(const CLI::App& app, const std::vector<subcommand>& commands) {
+  try {
+    for (const auto* sub : app.get_subcommands()) check_given_options(*sub);
+    for (const auto& command : commands)
+      if (*command.node) return finished(command.run());
+  } catch (...) {
+    return failure_status(std::current_exception());
+  }
   return fail("no subcommand", exit_usage);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // The same behaviour on a closed pipe whatever the parent left SIGPIPE as (see the top).
+  std::signal(SIGPIPE, SIG_DFL);
+  rotlie::app::route_standard_output();
+  CLI::App app{"rotlie — dedicated symplectic integrators for rigid-body rotation (Laskar & Vaillant 2018)"};
+  app.require_subcommand(1);
+  app.footer(exit_status_help);
+  all_options options;
+  const auto commands = add_subcommands(app, options);
+
+  if (const auto problem = first_argument_problem(app, argc, argv); !problem.empty()) return fail(problem, exit_usage);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return finished(app.exit(e));  // --help
+    return fail(reworded(e, named_subcommand(app, argc, argv)), exit_usage);
+  }
+  return dispatch(app, commands);
 }

@@ -6,6 +6,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "rotlie/lie/sparse_terms.hpp"
+
 namespace rotlie::lie {
 namespace {
 
@@ -13,6 +15,8 @@ constexpr int bits = 8;
 constexpr std::uint32_t mask = (1u << bits) - 1;
 
 int exponent_of(std::uint32_t key, int k) { return static_cast<int>((key >> (bits * k)) & mask); }
+
+bool is_zero_term(const coefficient_polynomial::term& t) { return cln::zerop(t.c); }
 
 }  // namespace
 
@@ -133,36 +137,14 @@ double coefficient_polynomial::evaluate(const std::vector<double>& x) const {
 }
 
 void coefficient_polynomial::combine_sorted(std::vector<term>&& unsorted) {
-  std::sort(unsorted.begin(), unsorted.end(), [](const term& a, const term& b) { return a.key < b.key; });
-  terms_.clear();
-  for (auto& t : unsorted) {
-    if (!terms_.empty() && terms_.back().key == t.key)
-      terms_.back().c = terms_.back().c + t.c;
-    else {
-      if (!terms_.empty() && cln::zerop(terms_.back().c)) terms_.pop_back();
-      terms_.push_back(std::move(t));
-    }
-  }
-  if (!terms_.empty() && cln::zerop(terms_.back().c)) terms_.pop_back();
+  sort_and_combine_terms(unsorted, [](term& into, const term& t) { into.c = into.c + t.c; }, is_zero_term);
+  terms_ = std::move(unsorted);
 }
 
 coefficient_polynomial& coefficient_polynomial::operator+=(const coefficient_polynomial& o) {
-  std::vector<term> merged;
-  merged.reserve(terms_.size() + o.terms_.size());
-  auto a = terms_.begin();
-  auto b = o.terms_.cbegin();
-  while (a != terms_.end() || b != o.terms_.cend()) {
-    if (b == o.terms_.cend() || (a != terms_.end() && a->key < b->key)) {
-      merged.push_back(std::move(*a++));
-    } else if (a == terms_.end() || b->key < a->key) {
-      merged.push_back(*b++);
-    } else {
-      cln::cl_RA c = a->c + b->c;
-      if (!cln::zerop(c)) merged.push_back({a->key, std::move(c)});
-      ++a, ++b;
-    }
-  }
-  terms_ = std::move(merged);
+  terms_ = merge_sorted_terms(
+      terms_, o.terms_, [](term& t) { return std::move(t); }, [](const term& t) { return t; },
+      [](const term& a, const term& b) { return term{a.key, a.c + b.c}; }, is_zero_term);
   return *this;
 }
 

@@ -6,25 +6,19 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "rotlie/lie/sparse_terms.hpp"
+
 namespace rotlie::lie {
 namespace {
 
 using term = multivariate_polynomial::term;
 
-// Sorted by key with equal keys summed and zeros dropped. The sort moves (key, index) pairs only:
-// CLN numbers have no cheap move, and copying them is a reference count each way.
+bool is_zero_term(const term& t) { return cln::zerop(t.numerator); }
+
+// Sorted by key with equal keys summed and zeros dropped, in place: the numerators are mostly
+// fixnums (immediate values), whose copies are free.
 void combine(std::vector<term>& v) {
-  // Sorted in place: the numerators are mostly fixnums (immediate values), whose copies are free.
-  std::sort(v.begin(), v.end(), [](const term& a, const term& b) { return a.key < b.key; });
-  std::size_t out = 0;
-  for (std::size_t i = 0; i < v.size();) {
-    std::size_t j = i + 1;
-    if (out != i) v[out] = v[i];
-    for (; j < v.size() && v[j].key == v[i].key; ++j) v[out].numerator = v[out].numerator + v[j].numerator;
-    if (!cln::zerop(v[out].numerator)) ++out;
-    i = j;
-  }
-  v.resize(out);
+  sort_and_combine_terms(v, [](term& into, const term& t) { into.numerator = into.numerator + t.numerator; }, is_zero_term);
 }
 
 cln::cl_RA monomial_value(std::uint64_t key, const std::vector<cln::cl_RA>& x) {
@@ -133,24 +127,12 @@ multivariate_polynomial& multivariate_polynomial::add_multiple(const multivariat
     if (terms_.empty()) denominator_ = 1;
     return *this;
   }
-  std::vector<term> merged;
-  merged.reserve(terms_.size() + o.terms_.size());
-  auto a = terms_.begin();
-  auto b = o.terms_.cbegin();
-  while (a != terms_.end() || b != o.terms_.cend()) {
-    if (b == o.terms_.cend() || (a != terms_.end() && a->key < b->key)) {
-      merged.push_back({a->key, fa == 1 ? std::move(a->numerator) : a->numerator * fa});
-      ++a;
-    } else if (a == terms_.end() || b->key < a->key) {
-      merged.push_back({b->key, fb == 1 ? b->numerator : b->numerator * fb});
-      ++b;
-    } else {
-      cln::cl_I c = (fa == 1 ? a->numerator : a->numerator * fa) + (fb == 1 ? b->numerator : b->numerator * fb);
-      if (!cln::zerop(c)) merged.push_back({a->key, std::move(c)});
-      ++a, ++b;
-    }
-  }
-  terms_ = std::move(merged);
+  const auto scaled_a = [&](const term& t) { return fa == 1 ? t.numerator : t.numerator * fa; };
+  const auto scaled_b = [&](const term& t) { return fb == 1 ? t.numerator : t.numerator * fb; };
+  terms_ = merge_sorted_terms(
+      terms_, o.terms_, [&](term& t) { return term{t.key, fa == 1 ? std::move(t.numerator) : t.numerator * fa}; },
+      [&](const term& t) { return term{t.key, scaled_b(t)}; },
+      [&](const term& a, const term& b) { return term{a.key, scaled_a(a) + scaled_b(b)}; }, is_zero_term);
   if (terms_.empty()) denominator_ = 1;
   return *this;
 }

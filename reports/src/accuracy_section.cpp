@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "rotlie/reports/chart.hpp"
+#include "rotlie/reports/lv_paper_tables.hpp"
+#include "rotlie/reports/number_text.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/runs/accuracy_curves.hpp"
 
@@ -57,26 +59,14 @@ struct figure_writer {
   }
 };
 
-std::string fixed(double x, int digits) {
-  std::ostringstream o;
-  o << std::fixed << std::setprecision(digits) << x;
-  return o.str();
-}
-
-std::string sci(double x) {
-  std::ostringstream o;
-  o << std::scientific << std::setprecision(2) << x;
-  return o.str();
-}
-
 void curve_table(std::ostringstream& md, const std::vector<scheme_curve>& curves, const scheme_curve& anchor) {
   md << "| scheme | C/C0 | fitted order | error/(h/C)^p | × " << anchor.name << " (equal h/C) | ns per step | × "
      << anchor.name << " (equal CPU) |\n|:--|--:|--:|--:|--:|--:|--:|\n";
   for (const auto& k : curves) {
     const bool same_order = k.order == anchor.order;
-    md << "| " << k.name << " | " << k.cost << " | " << fixed(k.slope, 2) << " | " << sci(k.constant) << " | "
-       << (same_order ? fixed(k.constant / anchor.constant, 3) : "—") << " | " << fixed(k.seconds_per_step * 1e9, 0)
-       << " | " << (same_order ? fixed(1 / ratio_at_equal_cpu_time(anchor, k), 3) : "—") << " |\n";
+    md << "| " << k.name << " | " << k.cost << " | " << fixed_text(k.slope, 2) << " | " << scientific_text(k.constant, 2) << " | "
+       << (same_order ? fixed_text(k.constant / anchor.constant, 3) : "—") << " | " << fixed_text(k.seconds_per_step * 1e9, 0)
+       << " | " << (same_order ? fixed_text(1 / ratio_at_equal_cpu_time(anchor, k), 3) : "—") << " |\n";
   }
   md << "\nColumns × " << anchor.name << ": the scheme's error divided by that of " << anchor.name
      << " at equal h/C (or equal CPU time); below 1 is more accurate.\n\n";
@@ -114,11 +104,6 @@ report_section accuracy_section(const report_options& options) {
   figure.pair("fig1_sphere", "Fig. 1: spherical top, the N integrators of Table 2, leapfrog and Yoshida", sphere_curves,
               "Fig. 1 (spherical top).");
   // Table 3: numeric and analytic remainders normalised by N5 (2), next to the paper's.
-  const std::vector<std::pair<std::string, std::pair<double, double>>> table3 = {
-      {"N1 ABC (1)", {119.85, 100.50}}, {"N2 ABC (1)", {3.97, 3.40}},     {"N3 ABC (1)", {27.04, 22.51}},
-      {"N3 ABC (2)", {107.78, 92.79}},  {"N3 ABC (3)", {1.00, 1}},        {"N4 ABC (1)", {1120.50, 991.42}},
-      {"N4 ABC (2)", {2.06, 1.58}},     {"N4 ABC (3)", {1.59, 1.18}},     {"N5 ABC (1)", {107.82, 92.79}},
-      {"N5 ABC (3)", {27.02, 22.51}},   {"N7 ABC (1)", {120.07, 100.50}}};  // LV Table 3 (quoted)
   double n5_analytic = 0;
   for (const auto& x : curves.sphere_solutions)
     if (x.scheme == "N5" && x.label == 2) n5_analytic = x.analytic_remainder;
@@ -131,20 +116,20 @@ report_section accuracy_section(const report_options& options) {
   md << "Table 3 regenerated (ratios to N5 (2); the paper's values quoted beside ours):\n\n"
      << "| integrator | numeric (ours) | numeric (LV) | deviation | analytic (ours) | analytic (LV) |\n"
      << "|:--|--:|--:|--:|--:|--:|\n";
-  for (const auto& [name, lv] : table3) {
+  for (const auto& [name, lv_numeric, lv_analytic] : lv_table3) {
     const scheme_curve* c = named(sphere_curves, name);
     const solver::dedicated_solution* sol = nullptr;
     for (const auto& x : curves.sphere_solutions)
       if (x.name() == name) sol = &x;
     if (!c || !sol) {
-      md << "| " << name << " | missing | " << lv.first << " | | | " << lv.second << " |\n";
+      md << "| " << name << " | missing | " << lv_numeric << " | | | " << lv_analytic << " |\n";
       continue;
     }
     const double numeric = c->constant / n5_2->constant, analytic = sol->analytic_remainder / n5_analytic;
-    md << "| " << name << " | " << fixed(numeric, 2) << " | " << fixed(lv.first, 2) << " | "
-       << fixed(100 * (numeric / lv.first - 1), 1) << " % | " << fixed(analytic, 2) << " | " << fixed(lv.second, 2) << " |\n";
+    md << "| " << name << " | " << fixed_text(numeric, 2) << " | " << fixed_text(lv_numeric, 2) << " | "
+       << fixed_text(100 * (numeric / lv_numeric - 1), 1) << " % | " << fixed_text(analytic, 2) << " | " << fixed_text(lv_analytic, 2) << " |\n";
     ours.x.push_back(numeric), ours.y.push_back(analytic);
-    paper.x.push_back(lv.first), paper.y.push_back(lv.second);
+    paper.x.push_back(lv_numeric), paper.y.push_back(lv_analytic);
   }
   md << "\n";
   fig2.series = {ours, paper};
@@ -190,8 +175,8 @@ report_section accuracy_section(const report_options& options) {
     const bool ok = std::abs(deviation) <= 0.2;
     held += ok;
     md << "| " << c.text << " (" << c.worse.name << " vs " << c.better.name << ") | " << c.paper << "× | "
-       << fixed(ours_ratio, ours_ratio < 10 ? 2 : 0) << "× | " << fixed(100 * deviation, 1) << " % | "
-       << (ok ? "yes" : "**no**") << " | " << fixed(c.at_equal_cpu_time(), 2) << "× |\n";
+       << fixed_text(ours_ratio, ours_ratio < 10 ? 2 : 0) << "× | " << fixed_text(100 * deviation, 1) << " % | "
+       << (ok ? "yes" : "**no**") << " | " << fixed_text(c.at_equal_cpu_time(), 2) << "× |\n";
   }
   md << "\n" << held << " of " << curves.claims.size()
      << " claims reproduced within 20 % at equal reduced step h/C, the paper's measure. The last column "

@@ -14,6 +14,7 @@
 #include "rotlie/models/scenes/liquid_water_experiment.hpp"
 #include "rotlie/models/scenes/water_model.hpp"
 #include "rotlie/reports/chart.hpp"
+#include "rotlie/reports/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/solver/scheme_table.hpp"
@@ -48,12 +49,6 @@ std::map<std::string, schemes::scheme_table> dedicated_rotors() {
     tables.emplace(scheme + ":" + perm + ":" + std::to_string(label), solver::scheme_table_of(find_solution(result, scheme, perm, label), body));
   }
   return tables;
-}
-
-std::string number(double x, int digits = 3) {
-  std::ostringstream o;
-  o << std::setprecision(digits) << x;
-  return o.str();
 }
 
 /// Least-squares slope of log y on log x over the points with x ≤ x_max.
@@ -113,37 +108,37 @@ report_section section(const report_options& options, const budget& b) {
       o.rotor_table = sw.rotor;
       o.h_fs = h;
       o.T_ps = std::max(b.run_ps, 10 * h / 1000);  // at least 10 steps per run
-      say(sw.integrator + " at h = " + number(h) + " fs");
+      say(sw.integrator + " at h = " + significant_text(h, 3) + " fs");
       try {
         const auto r = models::run_liquid_water(o, start, {});
         const double per_ps = r.cpu_ms_per_step * 1000 / h;
-        table << "| " << sw.integrator << " | " << r.f << " | " << number(h) << " | " << number(h / r.f) << " | " << number(r.ratio_mean) << " | "
-              << (r.runs > 1 ? number(r.ratio_error, 2) : std::string()) << " | " << number(r.ms_per_step) << " | " << number(r.cpu_ms_per_step) << " | " << number(per_ps) << " | " << number(r.potential_per_molecule, 5)
-              << " | " << number(r.temperature, 4) << " | " << number(r.energy_drift_per_ps, 2) << " |\n";
+        table << "| " << sw.integrator << " | " << r.f << " | " << significant_text(h, 3) << " | " << significant_text(h / r.f, 3) << " | " << significant_text(r.ratio_mean, 3) << " | "
+              << (r.runs > 1 ? significant_text(r.ratio_error, 2) : std::string()) << " | " << significant_text(r.ms_per_step, 3) << " | " << significant_text(r.cpu_ms_per_step, 3) << " | " << significant_text(per_ps, 3) << " | " << significant_text(r.potential_per_molecule, 5)
+              << " | " << significant_text(r.temperature, 4) << " | " << significant_text(r.energy_drift_per_ps, 2) << " |\n";
         a.x.push_back(h / r.f), a.y.push_back(r.ratio_mean);
         c.x.push_back(per_ps), c.y.push_back(r.ratio_mean);
         hf.push_back(h / r.f), ratio.push_back(r.ratio_mean);
         if (sw.integrator == "SIER2" && h == 1) v_per_molecule = r.potential_per_molecule, temperature = r.temperature;
       } catch (const std::runtime_error& e) {
-        table << "| " << sw.integrator << " | | " << number(h) << " | | diverged | | | | | | | |\n";
-        failures << "- " << sw.integrator << " at h = " << number(h) << " fs: " << e.what() << "\n";
+        table << "| " << sw.integrator << " | | " << significant_text(h, 3) << " | | diverged | | | | | | | |\n";
+        failures << "- " << sw.integrator << " at h = " << significant_text(h, 3) << " fs: " << e.what() << "\n";
       }
     }
-    if (sw.integrator == "SIER2") slopes << "- SIER2: slope " << number(slope(hf, ratio, 2.01)) << " over h/f ≤ 2 fs (order 2 expected)\n";
-    if (sw.integrator == "SIER4") slopes << "- SIER4: slope " << number(slope(hf, ratio, 1.01)) << " over h/f ≤ 1 fs (order 4 expected; " << number(slope(hf, ratio, 2.01))
+    if (sw.integrator == "SIER2") slopes << "- SIER2: slope " << significant_text(slope(hf, ratio, 2.01), 3) << " over h/f ≤ 2 fs (order 2 expected)\n";
+    if (sw.integrator == "SIER4") slopes << "- SIER4: slope " << significant_text(slope(hf, ratio, 1.01), 3) << " over h/f ≤ 1 fs (order 4 expected; " << significant_text(slope(hf, ratio, 2.01), 3)
                                            << " with h/f = 2 fs, where the error grows faster than h⁴)\n";
     fig1.series.push_back(std::move(a));
     cpu.series.push_back(std::move(c));
   }
   md << "## " << s.title << "\n\n"
      << "van Zon & Schofield section V.C: 512 rigid water molecules at 297 K and 0.9973 g/cm³ (cubic box of "
-     << number(models::liquid_water_box(512, 0.9973), 5)
+     << significant_text(models::liquid_water_box(512, 0.9973), 5)
      << " Å, periodic, minimum image). Model: TIP3P (Jorgensen et al. 1983; the paper does not say which of its models; "
         "TIP3P's three massive sites let LAMMPS integrate the very same rigid body). Site–site Coulomb and O–O "
         "Lennard-Jones with a smooth molecular cutoff: the whole molecule-pair energy times a C³ switch of the O–O "
         "distance from 9.5 to 11 Å (width 1.5 Å). Units and constants: LAMMPS `real`. Start: lattice, random "
         "orientations, "
-     << number(b.equilibration_ps) << " ps with a Berendsen thermostat (τ = 0.1 ps), then NVE.\n\n"
+     << significant_text(b.equilibration_ps, 3) << " ps with a Berendsen thermostat (τ = 0.1 ps), then NVE.\n\n"
      << "SIER2/N2:BAC:2 and SIER4/P1:BAC:5 are SIER2 and SIER4 with the exact free rotation replaced by a dedicated "
         "rotor solved for the TIP3P body (moments "
      << models::tip3p_moments_text[0] << ", " << models::tip3p_moments_text[1] << ", " << models::tip3p_moments_text[2]
@@ -181,13 +176,13 @@ report_section section(const report_options& options, const budget& b) {
   const auto f3 = write_chart(options.out_dir, "liquid_water_gOO", gr);
   s.files.insert(s.files.end(), f3.written.begin(), f3.written.end());
   md << "### Physical sanity\n\n| quantity | rotlie | TIP3P, published |\n|:--|--:|--:|\n"
-     << "| potential energy per molecule (kcal/mol) | " << number(v_per_molecule, 4) << " (at " << number(temperature, 4)
+     << "| potential energy per molecule (kcal/mol) | " << significant_text(v_per_molecule, 4) << " (at " << significant_text(temperature, 4)
      << " K, 11 Å switched cutoff) | −9.86 (Jorgensen 1983, 298 K, 8.5 Å cutoff) |\n"
-     << "| g_OO first peak position (Å) | " << number(peak.first, 3) << " | ≈ 2.75–2.8 |\n"
-     << "| g_OO first peak height | " << number(peak.second, 3) << " | ≈ 2.7–2.8 |\n\n"
+     << "| g_OO first peak position (Å) | " << significant_text(peak.first, 3) << " | ≈ 2.75–2.8 |\n"
+     << "| g_OO first peak height | " << significant_text(peak.second, 3) << " | ≈ 2.7–2.8 |\n\n"
      << "The published values are quoted as commonly cited for TIP3P; the cutoffs differ, so agreement within a few "
         "per cent is what to expect. g(r) from "
-     << number(b.rdf_ps) << " ps sampled every 10 fs, bins of 0.05 Å.\n\n"
+     << significant_text(b.rdf_ps, 3) << " ps sampled every 10 fs, bins of 0.05 Å.\n\n"
      << chart_markdown(f3, "liquid_water_gOO", "O–O radial distribution function.") << "\n";
 
   // LAMMPS side by side
@@ -209,9 +204,9 @@ report_section section(const report_options& options, const budget& b) {
       for (int d = 0; d < 3; ++d) worst = std::max(worst, std::abs(mine[k][d] - theirs[k][d])), scale = std::max(scale, std::abs(theirs[k][d]));
     md << "Same configuration, same site pair style (`lj/cut/coul/dsf`, α = 0.2 Å⁻¹, 11 Å, LJ shifted, intramolecular pairs "
           "excluded; rotlie implements it for this comparison only, with LAMMPS's polynomial erfc): V = "
-       << number(V_mine, 15) << " (rotlie) and " << number(V_theirs, 15) << " kcal/mol (LAMMPS), relative difference "
-       << number(std::abs(V_mine - V_theirs) / std::abs(V_theirs), 2) << "; largest site-force difference " << number(worst, 2)
-       << " kcal/mol/Å against forces up to " << number(scale, 3) << ".\n\n"
+       << significant_text(V_mine, 15) << " (rotlie) and " << significant_text(V_theirs, 15) << " kcal/mol (LAMMPS), relative difference "
+       << significant_text(std::abs(V_mine - V_theirs) / std::abs(V_theirs), 2) << "; largest site-force difference " << significant_text(worst, 2)
+       << " kcal/mol/Å against forces up to " << significant_text(scale, 3) << ".\n\n"
        << "NVE at h = 1 fs with the same map: LAMMPS `fix rigid/nve/small` (NO_SQUISH; its principal axes in decreasing "
           "moment, planar rotations 3, 2, 1, 2, 3) is rotlie's Strang-TV with the table rotor ABCBA2:ABC in increasing-moment "
           "axes, i.e. MRDL; 100 steps agree to 3e-13 Å (test liquid_water_lammps_test).\n\n"
@@ -239,7 +234,7 @@ report_section section(const report_options& options, const budget& b) {
                                    const double wall = 1000 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / n;
                                    const double cpu_ms = 1000 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC / n;
                                    const double ratio = 100 * std::sqrt(ess / n - es * es / (n * n)) / std::sqrt(vss / n - vs * vs / (n * n));
-                                   md << "| rotlie | " << threads << " | " << number(wall) << " | " << number(cpu_ms) << " | " << number(ratio) << " |\n";
+                                   md << "| rotlie | " << threads << " | " << significant_text(wall, 3) << " | " << significant_text(cpu_ms, 3) << " | " << significant_text(ratio, 3) << " |\n";
                                    return 0;
                                  });
     }
@@ -249,8 +244,8 @@ report_section section(const report_options& options, const budget& b) {
       if (!r.ran)
         md << "| LAMMPS | " << procs << " | skipped | | |\n";
       else
-        md << "| LAMMPS | " << procs << " | " << number(r.wall_ms) << " | ≈ " << number(r.wall_ms * r.cpu_percent / 100 * procs) << " | "
-           << number(r.ratio_percent) << " |\n";
+        md << "| LAMMPS | " << procs << " | " << significant_text(r.wall_ms, 3) << " | ≈ " << significant_text(r.wall_ms * r.cpu_percent / 100 * procs, 3) << " | "
+           << significant_text(r.ratio_percent, 3) << " |\n";
     }
     md << "\n" << b.lammps_steps << " steps from the equilibrated start. LAMMPS's CPU time is its wall time times its reported CPU use.\n\n";
   }

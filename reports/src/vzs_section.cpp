@@ -2,8 +2,6 @@
 // and the failure step, with the dedicated free rotors of Laskar & Vaillant beside the paper's integrators.
 #include "rotlie/reports/vzs_section.hpp"
 
-#include <boost/multiprecision/float128.hpp>
-
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -17,7 +15,9 @@
 #include "rotlie/models/experiments/dipole_field_experiment.hpp"
 #include "rotlie/models/experiments/free_water_experiment.hpp"
 #include "rotlie/reports/chart.hpp"
+#include "rotlie/reports/number_text.hpp"
 #include "rotlie/runs/protocol_curves.hpp"
+#include "rotlie/schemes/quad.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
 namespace rotlie::reports {
@@ -26,8 +26,6 @@ namespace rotlie::reports {
 using runs::find_solution;
 
 namespace {
-
-using quad = boost::multiprecision::float128;
 
 // The run sizes of the section (see budget_text for the CPU time they take).
 struct budget {
@@ -51,24 +49,15 @@ std::string budget_text(bool quick) {
   return quick ? "`--quick`, about 7 s of CPU" : "the default, about 40 s of CPU on one core (1–2 min of wall time on a busy machine)";
 }
 
-std::string fixed(double x, int digits) {
-  std::ostringstream o;
-  o << std::fixed << std::setprecision(digits) << x;
-  return o.str();
-}
-
 // x to `digits` significant digits, fixed-point for ordinary sizes (150, 0.0035), else scientific.
 std::string sig(double x, int digits = 2) {
   if (!std::isfinite(x)) return "—";
-  std::ostringstream o;
   const double a = std::abs(x);
   if (a == 0 || (a >= 1e-3 && a < 1e6)) {
     const int magnitude = a == 0 ? 0 : static_cast<int>(std::floor(std::log10(a)));
-    o << std::fixed << std::setprecision(std::max(0, digits - 1 - magnitude)) << x;
-  } else {
-    o << std::scientific << std::setprecision(digits - 1) << x;
+    return fixed_text(x, std::max(0, digits - 1 - magnitude));
   }
-  return o.str();
+  return scientific_text(x, digits - 1);
 }
 
 // A time in ps in the unit the paper would use, with its error in the same unit.
@@ -230,7 +219,7 @@ void roundoff_table(section_writer& w, const budget& b, findings& found) {
     if (name == "double") found.sier2_tau_long = r.tau_ps, found.sier2_long_run = r.t_ps.back(), found.sier2_tau10 = tau10;
     // a float128 run cannot be told apart from its float128 reference: τ is then not fitted (—)
     md << "| " << name << " | " << duration(r.t_ps.back()) << " | " << r.steps << " | " << sig(r.delta.back()) << " | "
-       << fixed(p, 2) << " | " << sig(at10.delta.back() / eps) << " | " << duration(r.tau_ps) << " | " << duration(tau10)
+       << fixed_text(p, 2) << " | " << sig(at10.delta.back() / eps) << " | " << duration(r.tau_ps) << " | " << duration(tau10)
        << " | " << sig(r.reference_delta.back()) << " |\n";
   };
   w.progress("SIER2 round-off in double");

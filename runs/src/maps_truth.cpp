@@ -94,8 +94,7 @@ std::vector<models::remainder_term> reference_remainder_terms(const std::string&
   const auto table = schemes::reference_scheme(base);
   if (!table) throw std::invalid_argument("unknown reference scheme '" + base + "'");
   // The unpermuted word, laid out at the permutation (as solver::reference_analytic_remainder).
-  const auto split = table->splitting == schemes::split::rs ? bch::splitting::rs : bch::splitting::abc;
-  const auto layout = bch::layout_scheme(table->word, split, permutation);
+  const auto layout = bch::layout_scheme(table->word, solver::splitting_of(table->splitting), permutation);
   std::map<std::string, double> values;
   for (std::size_t k = 0; k < layout.stages.size(); ++k)
     values.emplace(layout.stages[k].coefficient, std::stod(table->stages[k].value));

@@ -1,15 +1,13 @@
 #include "rotlie/schemes/reference_schemes.hpp"
 
-#include <boost/multiprecision/float128.hpp>
-
 #include <algorithm>
 #include <stdexcept>
 #include <tuple>
 
+#include "rotlie/schemes/quad.hpp"
+
 namespace rotlie::schemes {
 namespace {
-
-using quad = boost::multiprecision::float128;
 
 std::string text(const quad& x) { return x.str(36, std::ios_base::scientific); }
 

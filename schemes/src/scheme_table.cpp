@@ -55,20 +55,6 @@ bool is_decimal(const std::string& s) { return !std::isnan(decimal_value(s)); }
 
 }  // namespace
 
-std::string printable_text(std::string_view text) {
-  constexpr std::size_t max_shown = 80;
-  static const char hex[] = "0123456789ABCDEF";
-  std::string out;
-  for (std::size_t i = 0; i < text.size() && i < max_shown; ++i) {
-    const auto u = static_cast<unsigned char>(text[i]);
-    if (u >= 0x20 && u < 0x7f)
-      out += static_cast<char>(u);
-    else
-      out += std::string("\\x") + hex[u >> 4] + hex[u & 15];
-  }
-  return text.size() > max_shown ? out + "…" : out;
-}
-
 int axis_of_letter(char letter) {
   if (letter < 'A' || letter > 'C') throw std::invalid_argument("not an axis letter: " + printable_text(std::string_view(&letter, 1)));
   return letter - 'A';

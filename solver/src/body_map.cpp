@@ -10,6 +10,7 @@
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/bch/scheme_word.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
+#include "rotlie/solver/scheme_table.hpp"
 
 namespace rotlie::solver {
 
@@ -47,8 +48,7 @@ double reference_analytic_remainder(const lie::moments_of_inertia& body, const s
   if (!table) throw std::invalid_argument("unknown reference scheme '" + name + "'");
   // The table's letters are already permuted for ABC; the layout permutes the unpermuted word itself.
   const auto base = *schemes::reference_scheme(name);
-  const auto split = base.splitting == schemes::split::rs ? bch::splitting::rs : bch::splitting::abc;
-  const auto layout = bch::layout_scheme(base.word, split, permutation);
+  const auto layout = bch::layout_scheme(base.word, splitting_of(base.splitting), permutation);
   std::map<std::string, double> values;
   for (std::size_t k = 0; k < layout.stages.size(); ++k) {
     const double v = std::stod(base.stages[k].value);

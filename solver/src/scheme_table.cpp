@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <stdexcept>
 
 #include "rotlie/lie/exact_number.hpp"
 
@@ -59,6 +60,15 @@ std::string scheme_table_text(const dedicated_solution& s, const lie::moments_of
     out << "\n";
   }
   return out.str();
+}
+
+bch::splitting splitting_of(schemes::split split) {
+  switch (split) {
+    case schemes::split::abc: return bch::splitting::abc;
+    case schemes::split::rs: return bch::splitting::rs;
+    case schemes::split::tv: break;
+  }
+  throw std::invalid_argument("a TV table (free flight and kick) has no splitting of the free rigid body");
 }
 
 schemes::scheme_table scheme_table_of(const dedicated_solution& s, const lie::moments_of_inertia& body, int digits) {

@@ -25,7 +25,7 @@
 
 using namespace rotlie;
 using models::vec3;
-using test::quad;
+using rotlie::quad;
 
 namespace {
 

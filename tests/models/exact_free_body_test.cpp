@@ -9,7 +9,7 @@
 #include "rotlie/models/exact_free_body.hpp"
 
 using namespace rotlie;
-using test::quad;
+using rotlie::quad;
 using models::vec3;
 
 namespace {

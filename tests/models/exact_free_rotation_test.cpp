@@ -21,7 +21,7 @@
 using namespace rotlie;
 using models::body_state;
 using models::vec3;
-using test::quad;
+using rotlie::quad;
 
 namespace {
 

@@ -4,7 +4,6 @@
 // against all pairs, the same bits for one and two threads, the state file, and the moments' text
 // that dedicated rotors are solved for.
 #define BOOST_TEST_MODULE liquid_water
-#include <boost/multiprecision/float128.hpp>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
@@ -18,8 +17,10 @@
 #include "rotlie/models/scenes/water_setup.hpp"
 #include "rotlie/models/scenes/water_state_io.hpp"
 #include "rotlie/models/scenes/water_model.hpp"
+#include "rotlie/schemes/quad.hpp"
 
 using namespace rotlie::models;
+using rotlie::quad;
 
 namespace {
 
@@ -299,7 +300,6 @@ BOOST_AUTO_TEST_CASE(a_box_smaller_than_twice_the_cutoff_is_refused) {
 
 BOOST_AUTO_TEST_CASE(the_moments_text_is_the_geometry_to_18_digits_and_planar) {
   // the same geometry evaluated in float128 (34 digits): the text is it to 18 significant digits
-  using quad = boost::multiprecision::float128;
   const auto geometry = tip3p<quad>().moments;
   for (int a = 0; a < 3; ++a) {
     const quad text = parse_scalar<quad>(tip3p_moments_text[a]);

@@ -15,7 +15,7 @@
 
 using namespace rotlie;
 using models::vec3;
-using test::quad;
+using rotlie::quad;
 
 BOOST_AUTO_TEST_CASE(sier_free_flight_is_the_exact_motion) {
   const auto s0 = test::thermal_bodies<double>(3);

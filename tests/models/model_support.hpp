@@ -1,13 +1,11 @@
 #pragma once
 // Shared pieces of the numeric tests: float128, water and state helpers, and a float128 reference
 // solution of Euler's equations (RK4 with Richardson extrapolation: global error O(h^5)).
-#include <boost/multiprecision/float128.hpp>
 
 #include "rotlie/models/reference_integration.hpp"
+#include "rotlie/schemes/quad.hpp"
 
 namespace rotlie::test {
-
-using quad = boost::multiprecision::float128;
 
 template <class T>
 models::vec3<T> water_moments() {

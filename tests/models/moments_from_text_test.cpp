@@ -9,7 +9,7 @@
 #include "rotlie/schemes/same_body.hpp"
 
 using namespace rotlie;
-using test::quad;
+using rotlie::quad;
 
 namespace {
 const std::string water = "10220/29376 19187/29376 1";

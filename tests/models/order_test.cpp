@@ -13,7 +13,7 @@
 #include "rotlie/solver/scheme_table.hpp"
 
 using namespace rotlie;
-using test::quad;
+using rotlie::quad;
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include "rotlie/schemes/reference_schemes.hpp"
 
 using namespace rotlie;
-using test::quad;
+using rotlie::quad;
 
 namespace {
 

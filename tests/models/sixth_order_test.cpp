@@ -16,7 +16,7 @@
 #include <sstream>
 
 using namespace rotlie;
-using test::quad;
+using rotlie::quad;
 
 namespace {
 

@@ -17,7 +17,7 @@
 #include "rotlie/solver/two_parameter.hpp"
 
 using namespace rotlie;
-using test::quad;
+using rotlie::quad;
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "rotlie/schemes/scheme_table.hpp"
+#include "rotlie/schemes/printable_text.hpp"
 
 namespace rotlie::lie {
 
@@ -35,7 +35,7 @@ std::optional<cln::cl_RA> parse_exact_number(std::string_view text);
 /// parse_exact_number reads it back within half a unit of its last digit.
 std::string to_decimal(const cln::cl_RA& x, int digits);
 
-/// User text fit for a one-line message (one rule for every parser: schemes/scheme_table.hpp).
+/// User text fit for a one-line message (one rule for every parser: schemes/printable_text.hpp).
 using schemes::printable_text;
 
 }  // namespace rotlie::lie

@@ -17,7 +17,6 @@
 //    the wider motion is built once, on first need.
 //  - Beyond a phase of 2^60 radians (|ω| |t|), where even float128 keeps no more than ~15 digits of
 //    the angle, at() refuses with std::domain_error instead of returning digits it cannot know.
-#include <boost/multiprecision/float128.hpp>
 
 #include <atomic>
 #include <cmath>
@@ -28,12 +27,12 @@
 
 #include "rotlie/models/free_body_motion.hpp"
 #include "rotlie/models/rigid_body.hpp"
+#include "rotlie/schemes/quad.hpp"
 
 namespace rotlie::models {
 
 template <class T>
 class exact_free_body {
-  using quad = boost::multiprecision::float128;
   static constexpr bool has_wider = !std::is_same_v<T, quad>;
   using wide = std::conditional_t<has_wider, quad, T>;
 

@@ -3,13 +3,14 @@
 // measure the scheme. Which points those are is the rule's job, in one place: the finest ones (the
 // asymptotic range), above the round-off floor of the scalar, and well above the exact
 // reference's own estimated error.
-#include <boost/multiprecision/float128.hpp>
 
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <type_traits>
 #include <vector>
+
+#include "rotlie/schemes/quad.hpp"
 
 namespace rotlie::models {
 
@@ -33,7 +34,7 @@ double round_off_floor() {
   else if constexpr (std::is_same_v<T, long double>)
     return 1e-16;
   else {
-    static_assert(std::is_same_v<T, boost::multiprecision::float128>, "a floor for this scalar");
+    static_assert(std::is_same_v<T, quad>, "a floor for this scalar");
     return 1e-28;
   }
 }

@@ -1,9 +1,10 @@
 #pragma once
 // The audit of LV sections 4 and 5: every statement of the paper next to rotlie's number for it
-// and a verdict. This part builds the rows that come from files an earlier section of the same
-// report run wrote (accuracy curves, solver solutions, maps, measured map ratios); rows the audit
-// computes itself through the library are added by audit_section.cpp. A row whose section did not
-// run in this run says so instead of reading a file left by an earlier run.
+// and a verdict. This part gives the rows that come from files an earlier section of the same
+// report run wrote (accuracy curves, solver solutions, maps, measured map ratios: the claims of
+// audit_file_claims.cpp); rows the audit computes itself through the library are added by
+// audit_section.cpp. A row whose section did not run in this run says so instead of reading a
+// file left by an earlier run.
 #include <filesystem>
 #include <set>
 #include <string>
@@ -16,6 +17,7 @@ namespace rotlie::reports {
 enum class audit_verdict { holds, does_not_hold, cannot_check, not_computed };
 
 struct audit_row {
+  std::string id;          ///< the claim's stable key (audit_claim.hpp); not written out
   std::string statement;   ///< the paper's statement, paraphrased, with its number
   std::string where;       ///< section, figure or table of LV (2018)
   std::string value;       ///< rotlie's numbers, from this run

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "rotlie/schemes/printable_text.hpp"
+
 namespace rotlie::schemes {
 
 /// abc, rs: the free rigid body (LV sections 2–3); tv: a body under forces and torques, T = free
@@ -49,10 +51,6 @@ std::string format_scheme_table(const scheme_table& t);
 /// double: what a double integrator resolves), and the palindrome to ε·(|c_i| + |c_j|) when the
 /// table says symmetric. Throws std::invalid_argument with a one-line reason.
 void check_scheme_table(const scheme_table& t);
-
-/// User text fit for a one-line message: bytes outside printable ASCII as \xHH, at most 80
-/// characters (then "…").
-std::string printable_text(std::string_view text);
 
 /// Body axis (0, 1, 2) of a permutation letter: the permutation XYZ sends A → X, B → Y, C → Z.
 int axis_of_letter(char letter);

@@ -41,6 +41,11 @@ struct searched_table_lines {
 std::string searched_table_text(const bch::scheme_layout& layout, const lie::moments_of_inertia& body,
                                 const std::map<std::string, cln::cl_RA>& values, const searched_table_lines& lines);
 
+/// A numeric table's split as the symbolic side names it (the two enums meet only here, where both
+/// libraries are visible). Throws std::invalid_argument for TV: free flight and kick are no
+/// splitting of the free rigid body's Hamiltonian.
+bch::splitting splitting_of(schemes::split split);
+
 /// The solution as the numeric side sees it: its table text (40 digits by default), parsed.
 schemes::scheme_table scheme_table_of(const dedicated_solution& s, const lie::moments_of_inertia& body, int digits = 40);
 

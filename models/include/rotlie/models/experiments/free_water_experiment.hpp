@@ -10,7 +10,6 @@
 // with the exact motion of the same double body: SIER2's δ then measures its round-off alone. The
 // reference's own estimated error is kept beside δ; a sample within a factor 10 of it is left out
 // of the fit (reference_margin).
-#include <boost/multiprecision/float128.hpp>
 
 #include <cmath>
 #include <vector>
@@ -19,6 +18,7 @@
 #include "rotlie/models/exact_free_body.hpp"
 #include "rotlie/models/experiments/md_experiment.hpp"
 #include "rotlie/models/scenes/free_water.hpp"
+#include "rotlie/schemes/quad.hpp"
 
 namespace rotlie::models {
 
@@ -76,7 +76,6 @@ inline void fit_tau(free_water_result& r) {
 /// `samples` sample times evenly spread over the run (each a whole step).
 template <class T>
 free_water_result run_free_water(const free_water<T>& scene, const md_integrator& integrator, const md_run_options& o, int samples = 32) {
-  using quad = boost::multiprecision::float128;
   const long steps = md_steps(o);
   const long K = std::min<long>(samples, steps);
   std::vector<long> at(static_cast<std::size_t>(K));

@@ -118,7 +118,10 @@ inline lammps_run run_lammps_rigid_nve(const liquid_water<double>& w, const std:
                                   << "\nthermo_style custom step pe etotal\nthermo_modify format float %.15g\nthermo 1\nrun " << steps << "\n";
   const std::string launcher = procs > 1 ? "mpirun --allow-run-as-root -np " + std::to_string(procs) + " " : "";
   const std::string cmd = "cd '" + dir.string() + "' && OMP_NUM_THREADS=1 " + launcher + "lmp -in in.water -log log.lammps > out.txt 2>&1";
-  if (std::system(cmd.c_str()) != 0) return r;
+  if (std::system(cmd.c_str()) != 0) {
+    std::filesystem::remove_all(dir);  // a failed run leaves no scratch folder behind either
+    return r;
+  }
   std::ifstream log(dir / "log.lammps");
   std::string line;
   bool thermo = false;

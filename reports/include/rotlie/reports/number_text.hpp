@@ -1,0 +1,21 @@
+#pragma once
+// How the report and the CLI print a double: one function per format, so that a table keeps its
+// exact bytes when its code moves. Each is an std::ostream with the named flags, nothing more.
+#include <string>
+
+namespace rotlie::reports {
+
+/// `decimals` digits after the point (std::fixed): fixed_text(3.14159, 2) is "3.14".
+std::string fixed_text(double x, int decimals);
+
+/// Scientific notation with `decimals` digits after the point (std::scientific): "1.23e-04".
+std::string scientific_text(double x, int decimals);
+
+/// As scientific_text, but "—" for NaN and infinities (a table cell with nothing to show).
+std::string scientific_or_dash(double x, int decimals);
+
+/// `digits` significant digits in the stream's general format (as %g: "0.00123", "1.2e+03",
+/// trailing zeros dropped). digits = 6 is what `std::cout << x` prints.
+std::string significant_text(double x, int digits);
+
+}  // namespace rotlie::reports

@@ -1,0 +1,29 @@
+#include "rotlie/reports/number_text.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace rotlie::reports {
+
+std::string fixed_text(double x, int decimals) {
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(decimals) << x;
+  return o.str();
+}
+
+std::string scientific_text(double x, int decimals) {
+  std::ostringstream o;
+  o << std::scientific << std::setprecision(decimals) << x;
+  return o.str();
+}
+
+std::string scientific_or_dash(double x, int decimals) { return std::isfinite(x) ? scientific_text(x, decimals) : "—"; }
+
+std::string significant_text(double x, int digits) {
+  std::ostringstream o;
+  o << std::setprecision(digits) << x;
+  return o.str();
+}
+
+}  // namespace rotlie::reports
