@@ -2,7 +2,6 @@
 // and must give exactly the status the interface promises (2 for bad arguments, 1 for a failed
 // run such as a write error), one line on stderr that starts with "rotlie: error: " and names
 // what was wrong, nothing on stdout, and no crash or library text.
-#define BOOST_TEST_MODULE bad_input
 #include <boost/test/unit_test.hpp>
 
 #include <fcntl.h>
@@ -409,7 +408,21 @@ const std::vector<bad_input> cases = {
 };
 // clang-format on
 
+// Run inside the scratch folder, so that a case that wrongly succeeded (a report with its
+// default folder) leaves nothing outside it; removed at the end.
+struct cleanup {
+  cleanup() { fs::current_path(scratch()); }
+  ~cleanup() {
+    fs::current_path(fs::temp_directory_path());
+    std::error_code ec;
+    fs::remove_all(scratch(), ec);
+  }
+};
+
 }  // namespace
+
+// The folder's other suites share this executable: the fixture is this suite's, not global.
+BOOST_AUTO_TEST_SUITE(bad_input_test, *boost::unit_test::fixture<cleanup>())
 
 BOOST_AUTO_TEST_CASE(every_bad_input_gets_one_line_and_its_status) {
   make_files();
@@ -540,14 +553,4 @@ BOOST_AUTO_TEST_CASE(force_uses_a_table_of_another_body_with_a_warning) {
   BOOST_TEST(r.err.find("(1 2 2)") != std::string::npos, r.err);  // the table's body, as its inertia line gives it
 }
 
-// Run inside the scratch folder, so that a case that wrongly succeeded (a report with its
-// default folder) leaves nothing outside it; removed at the end.
-struct cleanup {
-  cleanup() { fs::current_path(scratch()); }
-  ~cleanup() {
-    fs::current_path(fs::temp_directory_path());
-    std::error_code ec;
-    fs::remove_all(scratch(), ec);
-  }
-};
-BOOST_TEST_GLOBAL_FIXTURE(cleanup);
+BOOST_AUTO_TEST_SUITE_END()  // bad_input_test

@@ -2,7 +2,6 @@
 // measured best is the smallest error among its candidates, and the measured errors agree with a
 // second, independent run of the protocol (`rotlie order` in long double at a dyadic step, brought
 // to h/C = 1/1980 by the h^4 law) — both the ordering and the size. About 25 s: slow.
-#define BOOST_TEST_MODULE best_cli
 #include <boost/test/unit_test.hpp>
 
 #include "cli_support.hpp"
@@ -16,6 +15,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+
+BOOST_AUTO_TEST_SUITE(best_cli_test)
 
 namespace fs = std::filesystem;
 
@@ -112,3 +113,5 @@ BOOST_AUTO_TEST_CASE(analytic_only_and_bad_input) {
     BOOST_TEST(bad.out.empty(), args);
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // best_cli_test

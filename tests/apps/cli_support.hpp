@@ -1,7 +1,7 @@
 #pragma once
 // Running the rotlie binary from a CLI test: one scratch folder per test process, the command's
 // stdout and stderr captured in it, the exit status (128 + n for a signal n, so a crash never
-// passes for an error exit). ROTLIE_BINARY is the built binary's path, defined per test target;
+// passes for an error exit). ROTLIE_BINARY is the built binary's path, defined per test (CLI);
 // include after boost/test/unit_test.hpp (the folder is removed by a global fixture).
 #include <errno.h>
 #include <sys/wait.h>

@@ -1,6 +1,5 @@
 // The rotlie binary end to end: JSON shapes, bad input (one line on stderr, non-zero exit,
 // never a crash), and the report's output folder.
-#define BOOST_TEST_MODULE cli
 #include <boost/test/unit_test.hpp>
 
 #include "cli_support.hpp"
@@ -14,6 +13,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+
+BOOST_AUTO_TEST_SUITE(cli_test)
 
 namespace fs = std::filesystem;
 
@@ -368,3 +369,5 @@ BOOST_AUTO_TEST_CASE(bch_prints_the_same_series_on_any_number_of_threads) {
                threads);
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // cli_test

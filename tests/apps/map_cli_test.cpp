@@ -2,7 +2,6 @@
 // the spherical top) and `best`'s equals it at water; a killed and resumed map is the uninterrupted
 // file byte for byte; a file of another grid or family is refused and left as it was; two MPI
 // ranks write the file of one process.
-#define BOOST_TEST_MODULE map_cli
 #include <boost/test/unit_test.hpp>
 
 #include "cli_support.hpp"
@@ -18,6 +17,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
+
+BOOST_AUTO_TEST_SUITE(map_cli_test)
 
 namespace fs = std::filesystem;
 
@@ -191,3 +192,5 @@ BOOST_AUTO_TEST_CASE(two_mpi_ranks_write_the_file_of_one_process) {
   BOOST_TEST(r.out.find("by 2 processes") != std::string::npos, r.out);
   BOOST_TEST((slurp(dir / "map-N.jsonl") == slurp(reference_map() / "map-N.jsonl")));
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // map_cli_test

@@ -1,6 +1,5 @@
 // `rotlie md` end to end: the JSON contract of both scenes, the same seed giving the same numbers,
 // --h as the step itself (h/f reported beside it) and a dedicated rotor resolved for the water body.
-#define BOOST_TEST_MODULE md_cli
 #include <boost/test/unit_test.hpp>
 
 #include "cli_support.hpp"
@@ -13,6 +12,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+
+BOOST_AUTO_TEST_SUITE(md_cli_test)
 
 namespace fs = std::filesystem;
 
@@ -83,3 +84,5 @@ BOOST_AUTO_TEST_CASE(a_rotor_table_solved_for_another_body_is_refused_without_an
   BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   BOOST_TEST(r.out.empty());
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // md_cli_test

@@ -3,7 +3,6 @@
 // a dedicated rotor solved for the TIP3P body run from the saved state (a table solved for another
 // body refused), and a state file of another system refused with one line, the file left as it was.
 // One equilibration of 365 molecules (about 30 s of CPU): labelled cli, not fast.
-#define BOOST_TEST_MODULE md_liquid_cli
 #include <boost/test/unit_test.hpp>
 
 #include "cli_support.hpp"
@@ -16,6 +15,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+
+BOOST_AUTO_TEST_SUITE(md_liquid_cli_test)
 
 namespace fs = std::filesystem;
 
@@ -91,3 +92,5 @@ BOOST_AUTO_TEST_CASE(liquid_water_runs_saves_reloads_and_refuses_another_system)
   BOOST_TEST(std::count(other.err.begin(), other.err.end(), '\n') == 1);
   BOOST_TEST(slurp(scratch() / "w.state") == before);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // md_liquid_cli_test

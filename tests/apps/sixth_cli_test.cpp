@@ -1,7 +1,6 @@
 // `rotlie sixth` end to end: bad input is one line and exit status 2; a search of one system writes a
 // resumable state (a second run spends no new starts and finds the same roots) and an order-6 table
 // that `integrate --scheme FILE` accepts for the same body; --references lists the general compositions.
-#define BOOST_TEST_MODULE sixth_cli
 #include <boost/test/unit_test.hpp>
 
 #include "cli_support.hpp"
@@ -11,6 +10,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+
+BOOST_AUTO_TEST_SUITE(sixth_cli_test)
 
 namespace fs = std::filesystem;
 
@@ -64,3 +65,5 @@ BOOST_AUTO_TEST_CASE(references_are_listed) {
   BOOST_TEST(j.size() == 8u);
   for (const auto& e : j) BOOST_TEST(e["order"].get<int>() == 6);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // sixth_cli_test

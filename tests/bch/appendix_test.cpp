@@ -1,9 +1,10 @@
 // Appendix A: the systems (78)–(84) for N1–N7, checked against the engine's H_R3: every root of
 // f with the second coefficient from g solves P'_1 = P'_2 = 0, and f divides the resultant.
-#define BOOST_TEST_MODULE appendix
 #include <boost/test/unit_test.hpp>
 
 #include "paper_support.hpp"
+
+BOOST_AUTO_TEST_SUITE(appendix_test)
 
 
 using namespace rotlie;
@@ -108,3 +109,5 @@ SYSTEM_TEST(N7, "b1", "c1",
                              48 + 72 * y + 216 * x + 360 * x * y + 48 * x * y * y + 360 * x * x + 648 * x * x * y + 144 * x * x * y * y + 264 * pow(x, 3) + 504 * pow(x, 3) * y + 144 * pow(x, 3) * y * y + 72 * pow(x, 4) + 144 * pow(x, 4) * y + 48 * pow(x, 4) * y * y}),
             (std::vector<ex>{y - x + 3 * x * y + 2 * x * y * y - 3 * x * x - 2 * x * x * y, 2 + 2 * y + 6 * x + 6 * x * y + 6 * x * x + 8 * x * x * y + 2 * x * x * y * y,
                              -4 - 6 * y - 10 * x - 18 * x * y - 4 * x * y * y - 6 * x * x - 12 * x * x * y - 4 * x * x * y * y}))
+
+BOOST_AUTO_TEST_SUITE_END()  // appendix_test

@@ -3,7 +3,6 @@
 // coefficients per degree, the vanishing even degrees of the symmetric series, the direct
 // projection of XY against its derivation from SYM, and a float128 matrix-logarithm check at
 // degree 20; the three-letter series against nested two-letter ones.
-#define BOOST_TEST_MODULE free_bch
 #include <boost/test/unit_test.hpp>
 
 #include <array>
@@ -13,6 +12,8 @@
 #include "rotlie/bch/free_bch.hpp"
 #include "rotlie/bch/word_series.hpp"
 #include "rotlie/lie/free_lie_dimension.hpp"
+
+BOOST_AUTO_TEST_SUITE(free_bch_test)
 
 using namespace rotlie::bch;
 
@@ -221,3 +222,5 @@ BOOST_AUTO_TEST_CASE(degrees_outside_the_range_are_refused) {
   BOOST_CHECK_THROW(compute_free_series(free_series::xyz, 15), std::invalid_argument);
   BOOST_TEST(!parse_free_series("XZ").has_value());
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // free_bch_test

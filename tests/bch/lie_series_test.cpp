@@ -1,7 +1,6 @@
 // BCH series: Lyndon words, coefficients against an independent table (HaraldHofstaetter/BCH,
 // Lyndon basis, A < B), odd degrees only for the symmetric series, and the series evaluated on
 // random matrices against log(expm(X) expm(Y)).
-#define BOOST_TEST_MODULE lie_series
 #include <boost/test/unit_test.hpp>
 
 #include <Eigen/Dense>
@@ -12,6 +11,8 @@
 #include "rotlie/bch/evaluate.hpp"
 #include "rotlie/bch/lie_series.hpp"
 #include "rotlie/lie/free_lie_dimension.hpp"
+
+BOOST_AUTO_TEST_SUITE(lie_series_test)
 
 using namespace rotlie::bch;
 
@@ -116,3 +117,5 @@ BOOST_AUTO_TEST_CASE(degree_outside_the_supported_range_is_refused) {
   BOOST_CHECK_THROW(bch_series(0), std::invalid_argument);
   BOOST_CHECK_THROW(symmetric_bch_series(max_bch_degree + 1), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // lie_series_test

@@ -1,7 +1,6 @@
 // Modified Hamiltonians: structure (62) and reduction formula (63) of H_R5 for every N, R and P
 // scheme; section 3.1.2 (RSRSRSR with G1²/(2I1) and G3²/(2I3) exchanged has the remainder of
 // SRSRSRS) to order 7; first-order consistency; refusals.
-#define BOOST_TEST_MODULE modified_hamiltonian
 #include <boost/test/unit_test.hpp>
 
 #include <array>
@@ -10,6 +9,8 @@
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/lie/poisson_bracket.hpp"
 #include "rotlie/lie/theorems.hpp"
+
+BOOST_AUTO_TEST_SUITE(modified_hamiltonian_test)
 
 using namespace rotlie;
 using GiNaC::ex;
@@ -151,3 +152,5 @@ BOOST_AUTO_TEST_CASE(numeric_path_equals_the_exact_path_at_a_point) {
       BOOST_TEST(numeric[5].coefficient(m) == q.evaluate(x), boost::test_tools::tolerance(1e-11));
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // modified_hamiltonian_test

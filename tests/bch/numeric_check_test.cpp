@@ -3,7 +3,6 @@
 // h^p X_{H_Rp}(G) to leading order, where H_Rp is the engine's lowest nonzero remainder and
 // X_F(G) = {F, G} is the vector field of the flows exp(t L_F). The flows are integrated
 // numerically (RK4, many substeps, long double): no symbolic result enters them.
-#define BOOST_TEST_MODULE numeric_check
 #include <boost/test/unit_test.hpp>
 
 #include <array>
@@ -12,6 +11,8 @@
 #include "random_seed.hpp"
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/lie/poisson_bracket.hpp"
+
+BOOST_AUTO_TEST_SUITE(numeric_check_test)
 
 using namespace rotlie;
 using vec = std::array<long double, 3>;
@@ -111,3 +112,5 @@ BOOST_AUTO_TEST_CASE(one_step_error_matches_the_leading_remainder) {
   check_scheme("ABCBA", bch::splitting::abc, rng);      // leapfrog ABCBA2: p = 3
   check_scheme("ABCAB", bch::splitting::abc, rng);      // non-symmetric: p = 2
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // numeric_check_test

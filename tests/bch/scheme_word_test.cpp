@@ -1,6 +1,5 @@
 // Scheme words: coefficient naming and first-order conditions as in the paper (eqs. 44, 50,
 // 55–57, 67, 71), permutations, and refusals.
-#define BOOST_TEST_MODULE scheme_word
 #include <boost/test/unit_test.hpp>
 
 #include <string>
@@ -9,6 +8,8 @@
 
 #include "rotlie/bch/remainder_request.hpp"
 #include "rotlie/bch/scheme_word.hpp"
+
+BOOST_AUTO_TEST_SUITE(scheme_word_test)
 
 using namespace rotlie::bch;
 
@@ -214,3 +215,5 @@ BOOST_AUTO_TEST_CASE(the_longest_word_keeps_the_hamiltonian_at_first_order) {
   }
   BOOST_TEST(result.k.remainder[1].size() == h.size());
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // scheme_word_test

@@ -2,7 +2,6 @@
 // 5 and 7 on short words, both evaluated at random rational stage coefficients; Theorems 1 and 2 as
 // polynomial identities on a 13-stage palindrome's H_R7; vanishing even orders; the ring's arithmetic
 // against exact rationals; refusals.
-#define BOOST_TEST_MODULE stage_hamiltonian
 #include <boost/test/unit_test.hpp>
 
 #include <random>
@@ -12,6 +11,8 @@
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/bch/stage_hamiltonian.hpp"
 #include "rotlie/lie/theorems.hpp"
+
+BOOST_AUTO_TEST_SUITE(stage_hamiltonian_test)
 
 using namespace rotlie;
 
@@ -112,3 +113,5 @@ BOOST_AUTO_TEST_CASE(refusals) {
   BOOST_CHECK_THROW(bch::compute_stage_hamiltonian(layout, water_w, 0), std::invalid_argument);
   BOOST_CHECK_THROW(bch::compute_stage_hamiltonian(layout, water_w, bch::max_remainder_order + 1), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // stage_hamiltonian_test

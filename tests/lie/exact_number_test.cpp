@@ -1,5 +1,4 @@
 // Exact numbers from text and rigid-body moments: parsing, refusals, eq. (77).
-#define BOOST_TEST_MODULE exact_number
 #include <boost/test/unit_test.hpp>
 
 #include <cln/integer.h>
@@ -11,6 +10,8 @@
 
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/lie/rigid_body.hpp"
+
+BOOST_AUTO_TEST_SUITE(exact_number_test)
 
 using namespace rotlie::lie;
 
@@ -125,3 +126,5 @@ BOOST_AUTO_TEST_CASE(bodies) {
   BOOST_CHECK_THROW(parse_moments("1,1,1,1"), std::invalid_argument);
   BOOST_CHECK_NO_THROW(parse_moments("0.25,0.75,1"));  // the flat body: I1 + I2 = I3 is allowed
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // exact_number_test

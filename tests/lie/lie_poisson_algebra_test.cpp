@@ -1,6 +1,5 @@
 // The graded algebra L_k: dimensions, Theorems 1–2 up to order 40, the certificate against
 // exact elimination (two methods), and the bases of section 2.1.1.
-#define BOOST_TEST_MODULE lie_poisson_algebra
 #include <boost/test/unit_test.hpp>
 
 #include <random>
@@ -9,6 +8,8 @@
 #include "rotlie/lie/exact_echelon.hpp"
 #include "rotlie/lie/lie_poisson_algebra.hpp"
 #include "rotlie/lie/modular_rank.hpp"
+
+BOOST_AUTO_TEST_SUITE(lie_poisson_algebra_test)
 
 using namespace rotlie::lie;
 using rpoly = polynomial<cln::cl_RA>;
@@ -107,3 +108,5 @@ BOOST_AUTO_TEST_CASE(orders_outside_the_supported_range_are_refused) {
   BOOST_CHECK_THROW(lie_poisson_algebra(0), std::invalid_argument);
   BOOST_CHECK_THROW(lie_poisson_algebra(max_supported_order + 1), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // lie_poisson_algebra_test

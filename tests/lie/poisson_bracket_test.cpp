@@ -1,7 +1,6 @@
 // The Lie–Poisson bracket: the explicit brackets (16)–(20), the Lie-algebra axioms and the
 // Leibniz rule on random polynomials (replayable seed), the Casimir, and agreement between
 // the coefficient rings.
-#define BOOST_TEST_MODULE poisson_bracket
 #include <boost/test/unit_test.hpp>
 
 #include <random>
@@ -9,6 +8,8 @@
 #include "random_seed.hpp"
 #include "rotlie/lie/coefficient_ring_ginac.hpp"
 #include "rotlie/lie/poisson_bracket.hpp"
+
+BOOST_AUTO_TEST_SUITE(poisson_bracket_test)
 
 using namespace rotlie::lie;
 using rpoly = polynomial<cln::cl_RA>;
@@ -113,3 +114,5 @@ BOOST_AUTO_TEST_CASE(double_coefficients_agree_with_rationals) {
   BOOST_TEST(h.size() == hr.size());
   for (const auto& [m, c] : hr.terms()) BOOST_TEST(h.coefficient(m) == cln::double_approx(c));
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // poisson_bracket_test

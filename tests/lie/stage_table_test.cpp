@@ -1,6 +1,5 @@
 // Table 1 regenerated: every printed cell against the paper, quoted cells as quotes, and the
 // closed forms (38)–(40) against the computed equation counts up to order 40.
-#define BOOST_TEST_MODULE stage_table
 #include <boost/test/unit_test.hpp>
 
 #include <array>
@@ -8,6 +7,8 @@
 #include "rotlie/lie/free_lie_dimension.hpp"
 #include "rotlie/lie/lie_poisson_algebra.hpp"
 #include "rotlie/lie/stage_table.hpp"
+
+BOOST_AUTO_TEST_SUITE(stage_table_test)
 
 using namespace rotlie::lie;
 
@@ -156,3 +157,5 @@ BOOST_AUTO_TEST_CASE(orders_outside_the_table_range_are_refused) {
   BOOST_CHECK_THROW(stage_table(0, {}), std::invalid_argument);
   BOOST_CHECK_THROW(stage_table(max_stage_table_order + 1, rigid_dims(41)), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // stage_table_test

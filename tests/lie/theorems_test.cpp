@@ -1,9 +1,10 @@
 // Theorem 1 monomials and counts (section 2.4), Theorem 2 weights (eq. 35) and the bound space V_k.
-#define BOOST_TEST_MODULE theorems
 #include <boost/test/unit_test.hpp>
 
 #include "rotlie/lie/exact_echelon.hpp"
 #include "rotlie/lie/theorems.hpp"
+
+BOOST_AUTO_TEST_SUITE(theorems_test)
 
 using namespace rotlie::lie;
 
@@ -53,3 +54,5 @@ BOOST_AUTO_TEST_CASE(bound_space_basis_is_independent_and_satisfies_both_theorem
     }
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // theorems_test

@@ -5,7 +5,6 @@
 //  - With interaction (springs between body-fixed sites of different types, which exchange forces
 //    and torques), the energy is conserved at the order of the integrator: its largest error over
 //    the run falls by 2² (SIER2) and 2⁴ (SIER4) when the step is halved.
-#define BOOST_TEST_MODULE body_types
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -16,6 +15,8 @@
 #include "rotlie/models/md_integrators.hpp"
 #include "rotlie/models/scenes/dipole_in_field.hpp"
 #include "rotlie/models/scenes/water.hpp"
+
+BOOST_AUTO_TEST_SUITE(body_types_test)
 
 using namespace rotlie::models;
 
@@ -168,3 +169,5 @@ BOOST_AUTO_TEST_CASE(coupled_types_conserve_the_energy_at_the_integrator_order) 
     BOOST_TEST(e2 < bound);
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // body_types_test

@@ -6,7 +6,6 @@
 // to 1e150 (through the scaling law G → sG, t → t/s, which the reference does not use), long times up to the stated
 // limit and the refusal beyond it, the flow property, and the error estimate (never below the
 // measured error). Target: max abs entry of Q and of G/|G| within 1e-12. Errors are printed.
-#define BOOST_TEST_MODULE exact_flow_regimes
 #include <boost/test/unit_test.hpp>
 
 #include <boost/multiprecision/cpp_int.hpp>
@@ -22,6 +21,8 @@
 #include "model_support.hpp"
 #include "random_seed.hpp"
 #include "rotlie/models/exact_free_body.hpp"
+
+BOOST_AUTO_TEST_SUITE(exact_flow_regimes_test)
 
 using namespace rotlie;
 using models::vec3;
@@ -380,3 +381,5 @@ BOOST_AUTO_TEST_CASE(every_scalar_meets_the_target_in_the_hard_regimes) {
     BOOST_TEST(e_q < reference_floor);
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // exact_flow_regimes_test

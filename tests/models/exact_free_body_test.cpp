@@ -2,11 +2,12 @@
 // (RK4 + Richardson), in both energy regimes, near and on the separatrix, for symmetric,
 // spherical and steady cases, over several periods; continuity across multiples of K; the flow
 // property; and the accuracy near the unstable middle axis (printed).
-#define BOOST_TEST_MODULE exact_free_body
 #include <boost/test/unit_test.hpp>
 
 #include "model_support.hpp"
 #include "rotlie/models/exact_free_body.hpp"
+
+BOOST_AUTO_TEST_SUITE(exact_free_body_test)
 
 using namespace rotlie;
 using rotlie::quad;
@@ -97,3 +98,5 @@ BOOST_AUTO_TEST_CASE(accuracy_near_the_unstable_middle_axis) {
     BOOST_TEST(e < 1e-13);
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // exact_free_body_test

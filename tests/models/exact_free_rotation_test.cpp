@@ -4,7 +4,6 @@
 // φ_t2 ∘ φ_t1 = φ_(t1+t2); time symmetry φ_−t ∘ φ_t = id; long double and float128 steps; the addition
 // theorems the step is built on, each against a direct evaluation; the regimes that must take the
 // general path (and so equal exact_free_body to the bit), and bad input.
-#define BOOST_TEST_MODULE exact_free_rotation
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -17,6 +16,8 @@
 #include "model_support.hpp"
 #include "random_seed.hpp"
 #include "rotlie/models/exact_free_rotation.hpp"
+
+BOOST_AUTO_TEST_SUITE(exact_free_rotation_test)
 
 using namespace rotlie;
 using models::body_state;
@@ -299,3 +300,5 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused) {
   BOOST_CHECK_THROW(rotor.advance(copy, 1e300), std::domain_error);
   BOOST_CHECK_THROW(models::exact_free_rotation<double>({1, 1, 3}), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // exact_free_rotation_test

@@ -3,7 +3,6 @@
 // by round-off only and the energy error of a second-order scheme falls as h²; the guard stops a
 // run at its first non-finite state, and on a threshold, before the observers after it see it;
 // the fit's rule keeps exactly the points it names, and measures a closed-form power law exactly.
-#define BOOST_TEST_MODULE free_body_observers
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -12,6 +11,8 @@
 #include "model_support.hpp"
 #include "rotlie/models/error_protocol.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
+
+BOOST_AUTO_TEST_SUITE(free_body_observers_test)
 
 using namespace rotlie;
 
@@ -119,3 +120,5 @@ BOOST_AUTO_TEST_CASE(the_fit_keeps_the_points_its_rule_names) {
   one.at_most = 1;
   BOOST_TEST(std::isnan(models::fitted_order(points, one)));
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // free_body_observers_test

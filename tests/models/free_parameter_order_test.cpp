@@ -3,7 +3,6 @@
 // fitted slope of 4 within 0.1. The fit uses five step levels starting where h·max|c| ≤ 1/8 (and at
 // h = 2^-6 at the latest): some critical points have coefficients in the hundreds (P5 ACB (1) has
 // a1 ≈ −287), and their error reaches the h⁴ regime only at correspondingly smaller steps.
-#define BOOST_TEST_MODULE free_parameter_order
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -13,6 +12,8 @@
 #include "rotlie/models/error_protocol.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 #include "rotlie/solver/scheme_table.hpp"
+
+BOOST_AUTO_TEST_SUITE(free_parameter_order_test)
 
 using namespace rotlie;
 
@@ -51,3 +52,5 @@ BOOST_AUTO_TEST_CASE(every_p_solution_for_water_is_fourth_order) {
   for (int i = 1; i <= 15; ++i) p.push_back("P" + std::to_string(i));
   check_family(p, 724);  // the paper counts 724 (section 4.3)
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // free_parameter_order_test

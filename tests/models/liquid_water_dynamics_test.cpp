@@ -6,7 +6,6 @@
 // The small system: 64 TIP3P molecules at 0.9973 g/cm³ (a 12.4 Å box) with the same smooth
 // molecular cutoff scaled down to 6 Å (switch 4.5–6 Å), so that the run costs a second; the
 // 512-molecule scene with the 11 Å cutoff is what `rotlie md --scene liquid-water` and the report run.
-#define BOOST_TEST_MODULE liquid_water_dynamics
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
@@ -14,6 +13,8 @@
 #include "rotlie/models/scenes/liquid_water.hpp"
 #include "rotlie/models/scenes/water_observables.hpp"
 #include "rotlie/models/scenes/water_setup.hpp"
+
+BOOST_AUTO_TEST_SUITE(liquid_water_dynamics_test)
 
 using namespace rotlie::models;
 
@@ -190,3 +191,5 @@ BOOST_AUTO_TEST_CASE(overlapping_molecules_are_refused) {
   const auto ok = closest_oxygens(o, small_box, 2.0);
   BOOST_TEST(ok.i == -1);  // the liquid itself has no O–O closer than 2 Å
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // liquid_water_dynamics_test

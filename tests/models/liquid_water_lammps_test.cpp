@@ -4,7 +4,6 @@
 // against rotlie's MRDL, which runs the same planar-rotation sequence (Strang-TV with ABCBA2:ABC
 // in rotlie's increasing-moment axes; see the comment in the second test), and against
 // MRDL-reversed (ABCBA2:CBA), a different map.
-#define BOOST_TEST_MODULE liquid_water_lammps
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <cstdlib>
@@ -17,6 +16,8 @@
 #include "rotlie/models/scenes/lammps_water_io.hpp"
 #include "rotlie/models/scenes/liquid_water.hpp"
 #include "rotlie/models/scenes/water_setup.hpp"
+
+BOOST_AUTO_TEST_SUITE(liquid_water_lammps_test)
 
 using namespace rotlie::models;
 namespace fs = std::filesystem;
@@ -150,3 +151,5 @@ BOOST_AUTO_TEST_CASE(a_hundred_steps_of_no_squish_agree_with_fix_rigid_nve_small
   BOOST_TEST(mrdl < 1e-9, "MRDL is LAMMPS's map: round-off growth only (6e-15 Å after one step)");
   BOOST_TEST(reversed > 1e3 * mrdl, "MRDL-reversed is a different map (O(h³) per step)");
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // liquid_water_lammps_test

@@ -3,13 +3,14 @@
 // SIER4 energy fluctuation keeps its h⁴ slope down to h/f = 1/32 fs in double, and long double
 // gives the same ratios (to 1 %): round-off does not frustrate it in this implementation.
 // (`slow`: the long-double runs take about 20 s.)
-#define BOOST_TEST_MODULE liquid_water_roundoff
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
 #include "rotlie/models/md_integrators.hpp"
 #include "rotlie/models/scenes/liquid_water.hpp"
 #include "rotlie/models/scenes/water_setup.hpp"
+
+BOOST_AUTO_TEST_SUITE(liquid_water_roundoff_test)
 
 using namespace rotlie::models;
 
@@ -82,3 +83,5 @@ BOOST_AUTO_TEST_CASE(sier4_keeps_its_h4_slope_in_double_down_to_a_thirty_second_
     previous = d;
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // liquid_water_roundoff_test

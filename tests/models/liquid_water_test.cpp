@@ -3,7 +3,6 @@
 // Newton's third law, invariance under a rigid motion of the whole configuration, the cell list
 // against all pairs, the same bits for one and two threads, the state file, and the moments' text
 // that dedicated rotors are solved for.
-#define BOOST_TEST_MODULE liquid_water
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
@@ -18,6 +17,8 @@
 #include "rotlie/models/scenes/water_state_io.hpp"
 #include "rotlie/models/scenes/water_model.hpp"
 #include "rotlie/schemes/quad.hpp"
+
+BOOST_AUTO_TEST_SUITE(liquid_water_test)
 
 using namespace rotlie::models;
 using rotlie::quad;
@@ -311,3 +312,5 @@ BOOST_AUTO_TEST_CASE(the_moments_text_is_the_geometry_to_18_digits_and_planar) {
              I3 = round(parse_scalar<quad>(tip3p_moments_text[2]) / unit);
   BOOST_TEST((I3 == I1 + I2));
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // liquid_water_test

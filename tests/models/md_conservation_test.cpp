@@ -3,7 +3,6 @@
 // the kicks keep L_z, and the free flight keeps L), to round-off growth for SIER and MRDL; SEJ4's
 // approximate attitude does not (the paper's SEJ4 L_z errors of 1e-5 … 1e-3). And a step of h
 // followed by one of −h returns to the start for the symmetric integrators, not for a Lie–Trotter.
-#define BOOST_TEST_MODULE md_conservation
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -12,6 +11,8 @@
 #include <string>
 
 #include "md_support.hpp"
+
+BOOST_AUTO_TEST_SUITE(md_conservation_test)
 
 using namespace rotlie;
 using models::vec3;
@@ -102,3 +103,5 @@ BOOST_AUTO_TEST_CASE(a_step_and_its_reverse_return_to_the_start) {
   m.step(s, -4.0);
   BOOST_TEST(test::state_distance(s, s0) > 1e-4);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // md_conservation_test

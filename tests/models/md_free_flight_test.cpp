@@ -2,7 +2,6 @@
 // (translation q + t p/m, rotation by exact_free_rotation), checked against an independent float128
 // solution of Euler's equations (RK4 + Richardson); SEJ4's rotor (a reconstruction) has the exact
 // momentum and a 4th-order attitude, by fitted slope against the exact flow.
-#define BOOST_TEST_MODULE md_free_flight
 #include <boost/test/unit_test.hpp>
 
 #include <array>
@@ -12,6 +11,8 @@
 #include "md_support.hpp"
 #include "model_support.hpp"
 #include "rotlie/models/sej4_rotor.hpp"
+
+BOOST_AUTO_TEST_SUITE(md_free_flight_test)
 
 using namespace rotlie;
 using models::vec3;
@@ -92,3 +93,5 @@ BOOST_AUTO_TEST_CASE(momenta_from_one_preparation_are_those_of_advance) {
       }
     }
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // md_free_flight_test

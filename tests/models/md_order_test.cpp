@@ -4,7 +4,6 @@
 // three bodies. The outer TV table sets the order unless the rotor is worse: SIER2, MRDL in both axis orders,
 // SEJ4 (a 4th-order rotor inside Strang) and SIER2/X are 2; SIER4 and SIER4 with a 4th-order rotor are 4;
 // SIER4 with the 2nd-order leapfrog rotor drops to 2.
-#define BOOST_TEST_MODULE md_order
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -12,6 +11,8 @@
 #include <vector>
 
 #include "md_support.hpp"
+
+BOOST_AUTO_TEST_SUITE(md_order_test)
 
 using namespace rotlie;
 
@@ -64,3 +65,5 @@ BOOST_AUTO_TEST_CASE(the_field_matters) {
   BOOST_TEST(e_off < 1e-9);
   BOOST_TEST(e_on > 1e-4);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // md_order_test

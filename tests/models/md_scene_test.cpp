@@ -1,7 +1,6 @@
 // The van Zon & Schofield scenes and experiments: the seeded generator, the water data against an
 // independent rigid geometry, canonical initial conditions against equipartition, the dipole's
 // energy against its closed form, and the experiments' measures against the orders they must show.
-#define BOOST_TEST_MODULE md_scene
 #include <boost/test/unit_test.hpp>
 
 #include <boost/multiprecision/float128.hpp>
@@ -11,6 +10,8 @@
 
 #include "rotlie/models/experiments/dipole_field_experiment.hpp"
 #include "rotlie/models/experiments/free_water_experiment.hpp"
+
+BOOST_AUTO_TEST_SUITE(md_scene_test)
 
 using namespace rotlie::models;
 
@@ -175,3 +176,5 @@ BOOST_AUTO_TEST_CASE(non_finite_dipole_or_field_is_refused) {
   BOOST_CHECK_THROW(dipole_field<double>("nan", "2.7"), std::invalid_argument);
   BOOST_CHECK_THROW(dipole_field<double>("1.84", "inf"), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // md_scene_test

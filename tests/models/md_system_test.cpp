@@ -1,7 +1,6 @@
 // The torqued-body system and its integrator registry: names and refusals, the cost f, the force
 // cache (f evaluations per step, the cached forces equal to fresh ones), a restart bit-identical,
 // and the dipole potential's torque against the derivative of its energy.
-#define BOOST_TEST_MODULE md_system
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -11,6 +10,8 @@
 
 #include "md_support.hpp"
 #include "rotlie/models/free_rigid_body.hpp"
+
+BOOST_AUTO_TEST_SUITE(md_system_test)
 
 using namespace rotlie;
 using models::vec3;
@@ -191,3 +192,5 @@ BOOST_AUTO_TEST_CASE(a_state_handed_to_another_potential_does_not_keep_the_old_f
   b_copy.ensure_forces(s);
   BOOST_TEST(s.force_evaluations == before);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // md_system_test

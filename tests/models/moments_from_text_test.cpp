@@ -1,12 +1,13 @@
 // The body's moments read from exact text into each scalar: a rational p/q lands on the nearest
 // value of the scalar itself (float128 runs never see double's rounding), decimals likewise, very
 // long integers that overflow the scalar still give their quotient, and bad text is refused.
-#define BOOST_TEST_MODULE moments_from_text
 #include <boost/test/unit_test.hpp>
 
 #include "model_support.hpp"
 #include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/schemes/same_body.hpp"
+
+BOOST_AUTO_TEST_SUITE(moments_from_text_test)
 
 using namespace rotlie;
 using rotlie::quad;
@@ -95,3 +96,5 @@ BOOST_AUTO_TEST_CASE(the_reader_accepts_exactly_what_the_table_body_comparison_a
     BOOST_TEST(read == compared, x.substr(0, 12) << "… (" << x.size() << " characters)");
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // moments_from_text_test

@@ -4,7 +4,6 @@
 // the dipole in a strong field in DLM's axis order 1-2-3-2-1 (also LAMMPS's, in rotlie's
 // increasing-moment numbering) is MRDL's (ABCBA2:ABC), in the reversed order 3-2-1-2-3
 // MRDL-reversed's (ABCBA2:CBA), each to round-off growth, while the other order is not.
-#define BOOST_TEST_MODULE no_squish
 #include <boost/test/unit_test.hpp>
 
 #include <cfloat>
@@ -15,6 +14,8 @@
 #include "model_support.hpp"
 #include "rotlie/models/no_squish.hpp"
 #include "rotlie/models/sub_flows.hpp"
+
+BOOST_AUTO_TEST_SUITE(no_squish_test)
 
 using namespace rotlie;
 using models::vec3;
@@ -130,3 +131,5 @@ BOOST_AUTO_TEST_CASE(no_squish_in_dlm_and_lammps_order_follows_mrdl_to_round_off
 BOOST_AUTO_TEST_CASE(no_squish_in_reversed_order_follows_mrdl_reversed_to_round_off) {
   check_follows(models::reversed_axis_order, "MRDL-reversed", "MRDL");
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // no_squish_test

@@ -3,7 +3,6 @@
 // every permutation, and for every dedicated N scheme the solver produces for the spherical top
 // and water (float128, where double round-off would flatten the curve). A dedicated scheme used on
 // another body falls back to order 2.
-#define BOOST_TEST_MODULE order
 #include <boost/test/unit_test.hpp>
 
 #include "model_support.hpp"
@@ -11,6 +10,8 @@
 #include "rotlie/schemes/reference_schemes.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 #include "rotlie/solver/scheme_table.hpp"
+
+BOOST_AUTO_TEST_SUITE(order_test)
 
 using namespace rotlie;
 using rotlie::quad;
@@ -71,3 +72,5 @@ BOOST_AUTO_TEST_CASE(a_dedicated_scheme_on_another_body_drops_to_order_2) {
   const double s = slope<quad>(*it, other);
   BOOST_TEST(std::abs(s - 2) < 0.1, "N2 BAC (2) on I = (1/2, 3/4, 1): slope " << s);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // order_test

@@ -1,7 +1,6 @@
 // The scene contracts (scene_contracts.hpp) as compile-time checks: today's potentials, rotors,
 // system and observers satisfy them, and things that are not one of them are refused; the two
 // instances of units as data.
-#define BOOST_TEST_MODULE scene_contracts
 #include <boost/test/unit_test.hpp>
 
 #include <string>
@@ -17,6 +16,8 @@
 #include "rotlie/models/table_rotor.hpp"
 #include "rotlie/models/torqued_rigid_bodies.hpp"
 #include "rotlie/models/unit_system.hpp"
+
+BOOST_AUTO_TEST_SUITE(scene_contracts_test)
 
 using namespace rotlie::models;
 
@@ -109,3 +110,5 @@ BOOST_AUTO_TEST_CASE(a_body_of_an_unknown_type_is_refused) {
   BOOST_CHECK_THROW(sys.free_flight(0.1, s), std::out_of_range);
   BOOST_CHECK_THROW(system({}, zero_potential<double>{}, unit_system<double>::natural()), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // scene_contracts_test

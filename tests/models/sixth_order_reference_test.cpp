@@ -2,12 +2,13 @@
 // float128 on water in every permutation; the compositions' γ meet the order conditions that every
 // symmetric 6th-order composition of a symmetric step must meet (Σγ = 1, Σγ³ = Σγ⁵ = 0, McLachlan 1995);
 // every table is a palindrome whose parts each sum to 1.
-#define BOOST_TEST_MODULE sixth_order_reference
 #include <boost/test/unit_test.hpp>
 
 #include "model_support.hpp"
 #include "rotlie/models/error_protocol.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
+
+BOOST_AUTO_TEST_SUITE(sixth_order_reference_test)
 
 using namespace rotlie;
 using rotlie::quad;
@@ -73,3 +74,5 @@ BOOST_AUTO_TEST_CASE(the_abc_form_of_blanes_moan_is_the_adjoint_composition_of_t
   // The first stage of both is the first two-part coefficient, b1 of Blanes & Moan.
   BOOST_TEST(size(quad(rs.stages[0].value) - quad(abc.stages[0].value)) < 1e-30);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // sixth_order_reference_test

@@ -4,7 +4,6 @@
 // is refined and polished to 45 digits, its written decimals satisfy every condition of H_R3 and
 // H_R5 to 1e-40 of their terms, and as a scheme table it has a fitted slope of 6 ± 0.1 on water in
 // float128, falling to 2 on another body.
-#define BOOST_TEST_MODULE sixth_order
 #include <boost/test/unit_test.hpp>
 
 #include "model_support.hpp"
@@ -14,6 +13,8 @@
 #include "rotlie/solver/sixth_order_search.hpp"
 
 #include <sstream>
+
+BOOST_AUTO_TEST_SUITE(sixth_order_test)
 
 using namespace rotlie;
 using rotlie::quad;
@@ -124,3 +125,5 @@ BOOST_AUTO_TEST_CASE(hit_statistics_follow_their_closed_forms) {
   std::istringstream bad("system W ABC 10 20 0\n");  // more converged than starts
   BOOST_CHECK_THROW(solver::read_scan_state(bad), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // sixth_order_test

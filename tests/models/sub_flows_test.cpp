@@ -1,7 +1,6 @@
 // The exact sub-flows: φ_s ∘ φ_t = φ_{s+t}; the attitude stays orthogonal with det 1 to round-off;
 // |G| and the energy of the flowing part are conserved; the RS gathering of the rotations about G
 // gives the same step as applying them stage by stage.
-#define BOOST_TEST_MODULE sub_flows
 #include <boost/test/unit_test.hpp>
 
 #include <random>
@@ -10,6 +9,8 @@
 #include "random_seed.hpp"
 #include "rotlie/models/composition_stepper.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
+
+BOOST_AUTO_TEST_SUITE(sub_flows_test)
 
 using namespace rotlie;
 using models::body_state;
@@ -119,3 +120,5 @@ BOOST_AUTO_TEST_CASE(stepper_refuses_bad_tables_and_bodies) {
   BOOST_CHECK_THROW(models::composition_stepper<double>(good, vec3<double>{1, 1, 3}), std::invalid_argument);
   BOOST_CHECK_THROW(models::composition_stepper<double>(good, vec3<double>{std::nan(""), 1, 1}), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // sub_flows_test

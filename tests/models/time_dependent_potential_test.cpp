@@ -6,7 +6,6 @@
 //   L_z(t) = L₀ + τ₀ sin(ωt)/ω,              Q(t) = R_z(φ),  φ = (L₀ t + τ₀ (1 − cos ωt)/ω²)/I₃.
 // Each kick must read the force at its own stage's time: SIER2 (Strang-TV) then converges at order 2
 // and SIER4 (PEFRL-TV) at order 4; kicks that all read the step's start time would give order 1.
-#define BOOST_TEST_MODULE time_dependent_potential
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -15,6 +14,8 @@
 #include <vector>
 
 #include "rotlie/models/md_integrators.hpp"
+
+BOOST_AUTO_TEST_SUITE(time_dependent_potential_test)
 
 using namespace rotlie::models;
 
@@ -103,3 +104,5 @@ BOOST_AUTO_TEST_CASE(a_table_rotor_converges_at_order_two_as_well) {
   BOOST_TEST(p > 1.95);
   BOOST_TEST(p < 2.05);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // time_dependent_potential_test

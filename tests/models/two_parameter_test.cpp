@@ -4,7 +4,6 @@
 // solver lists); the best water schemes found (RS and ABC), recorded to 12 digits and polished to
 // 45: order 4 certified at the written decimals, projected gradient vanishing, a local minimum,
 // ‖H_R5‖ recomputed by the numeric expansion, and slope 4 ± 0.1 on water in float128.
-#define BOOST_TEST_MODULE two_parameter
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -15,6 +14,8 @@
 #include "rotlie/schemes/scheme_table.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 #include "rotlie/solver/two_parameter.hpp"
+
+BOOST_AUTO_TEST_SUITE(two_parameter_test)
 
 using namespace rotlie;
 using rotlie::quad;
@@ -110,3 +111,5 @@ BOOST_AUTO_TEST_CASE(the_best_abc_water_scheme_is_a_certified_fourth_order_minim
   BOOST_TEST(std::abs(slope(table, test::water_moments<quad>()) - 4) < 0.1);
   BOOST_TEST(slope(table, {quad(1) / 2, quad(4) / 5, quad(1)}) < 3);  // dedicated: another body loses the order
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // two_parameter_test

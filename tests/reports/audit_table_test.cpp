@@ -1,7 +1,6 @@
 // The audit table builder on synthetic report folders: verdicts follow the numbers in the files
 // (they flip when a value crosses its tolerance), a missing file or a section that did not run
 // gives "not computed", never a number; and the audit section's own cost.
-#define BOOST_TEST_MODULE audit_table
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -13,6 +12,8 @@
 #include "rotlie/reports/audit_table.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/reports/report_csv_reader.hpp"
+
+BOOST_AUTO_TEST_SUITE(audit_table_test)
 
 namespace fs = std::filesystem;
 using namespace rotlie::reports;
@@ -227,3 +228,5 @@ BOOST_AUTO_TEST_CASE(the_p_choice_row_solves_and_measures_the_listed_systems) {
   BOOST_TEST(seen);
   fs::remove_all(dir);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // audit_table_test

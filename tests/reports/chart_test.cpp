@@ -1,6 +1,5 @@
 // Charts with gnuplot: hostile folder names and titles run no command and still give the right
 // PNG; every way gnuplot can fail is recorded with the chart's name and leaves no PNG.
-#define BOOST_TEST_MODULE chart
 #include <boost/test/unit_test.hpp>
 
 #include <sys/wait.h>
@@ -13,6 +12,8 @@
 #include "folder_support.hpp"
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/child_process.hpp"
+
+BOOST_AUTO_TEST_SUITE(chart_test)
 
 namespace fs = std::filesystem;
 using namespace report_test;
@@ -184,3 +185,5 @@ BOOST_AUTO_TEST_CASE(chart_names_are_plain_file_names) {
   BOOST_TEST(entries(root).empty());
   fs::remove_all(root);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // chart_test

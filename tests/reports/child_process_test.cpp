@@ -1,6 +1,5 @@
 // Helper programs run without a shell: arguments arrive verbatim, input and output of any size
 // pass without deadlock, failures and time limits are reported, never a hang or a SIGPIPE.
-#define BOOST_TEST_MODULE child_process
 #include <boost/test/unit_test.hpp>
 
 #include <cerrno>
@@ -9,6 +8,8 @@
 
 #include "folder_support.hpp"
 #include "rotlie/reports/child_process.hpp"
+
+BOOST_AUTO_TEST_SUITE(child_process_test)
 
 namespace fs = std::filesystem;
 using namespace report_test;
@@ -80,3 +81,5 @@ BOOST_AUTO_TEST_CASE(the_time_limit_holds_after_the_outputs_close) {
   BOOST_TEST(r.timed_out);
   BOOST_TEST(seconds < 5.0, seconds << " s");
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // child_process_test

@@ -1,9 +1,10 @@
 // Our own term order: the printed text does not depend on GiNaC's internal order (symbol
 // creation order, hashing), and reads as expected.
-#define BOOST_TEST_MODULE expression_io
 #include <boost/test/unit_test.hpp>
 
 #include "rotlie/reports/expression_io.hpp"
+
+BOOST_AUTO_TEST_SUITE(expression_io_test)
 
 using namespace rotlie::reports;
 
@@ -40,3 +41,5 @@ BOOST_AUTO_TEST_CASE(laurent_terms_and_latex) {
   const GiNaC::symbol stranger("q");
   BOOST_CHECK_THROW(format_expression(stranger + 1, order, expression_style::text), std::logic_error);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // expression_io_test

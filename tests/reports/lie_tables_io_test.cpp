@@ -1,9 +1,10 @@
 // The writers format what the libraries computed: a cell of Table 1 survives the round trip
 // through JSON, quotes are marked in every format, LaTeX is well formed.
-#define BOOST_TEST_MODULE lie_tables_io
 #include <boost/test/unit_test.hpp>
 
 #include "rotlie/reports/lie_tables_io.hpp"
+
+BOOST_AUTO_TEST_SUITE(lie_tables_io_test)
 
 using namespace rotlie;
 
@@ -55,3 +56,5 @@ BOOST_AUTO_TEST_CASE(dims_json_keeps_theorem2_null_at_even_orders) {
   BOOST_TEST(j["orders"][4]["theorem2"].get<bool>());
   BOOST_TEST(j["orders"][5]["dim"].get<int>() == 6);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // lie_tables_io_test

@@ -1,6 +1,5 @@
 // Output files are written whole or not at all, flushed, and named only when complete; write
 // errors are exceptions that name the path; stale temporaries of dead writers are removed.
-#define BOOST_TEST_MODULE output_file
 #include <boost/test/unit_test.hpp>
 
 #include <fcntl.h>
@@ -13,6 +12,8 @@
 
 #include "folder_support.hpp"
 #include "rotlie/reports/output_file.hpp"
+
+BOOST_AUTO_TEST_SUITE(output_file_test)
 
 namespace fs = std::filesystem;
 using namespace report_test;
@@ -126,3 +127,5 @@ BOOST_AUTO_TEST_CASE(printable_paths_stay_on_one_line) {
   BOOST_TEST(printable_path("r\xc3\xa9sultats") == "'r\xc3\xa9sultats'");  // valid UTF-8 kept
   BOOST_TEST(printable_path("cut\xc3") == "'cut\\xc3'");                    // a truncated sequence is not
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // output_file_test

@@ -1,7 +1,6 @@
 // `rotlie report` end to end, run without a shell: hostile --out folders, unusable folders
 // (status 2), Ctrl-C and SIGTERM (also while gnuplot runs), SIGKILL, two runs into one folder,
 // failing gnuplot (status 1, the rest written) and write errors (status 1, nothing half-written).
-#define BOOST_TEST_MODULE report_cli
 #include <boost/test/unit_test.hpp>
 
 #include <fcntl.h>
@@ -61,7 +60,6 @@ struct remove_test_root {
     fs::remove_all(test_root(), ignored);
   }
 };
-BOOST_TEST_GLOBAL_FIXTURE(remove_test_root);
 
 process start(const launch& l) {
   static int count = 0;
@@ -181,6 +179,9 @@ std::vector<std::string> quick(const fs::path& out, const std::string& sections)
 }
 
 }  // namespace
+
+// The folder's other suites share this executable: the fixture is this suite's, not global.
+BOOST_AUTO_TEST_SUITE(report_cli_test, *boost::unit_test::fixture<remove_test_root>())
 
 BOOST_AUTO_TEST_CASE(hostile_folder_names_run_no_command) {
   const fs::path root = test_root() / "hostile";
@@ -396,3 +397,5 @@ BOOST_AUTO_TEST_CASE(files_reach_the_disk_before_the_rename_and_the_folder_after
   }
   BOOST_TEST(renames == entries(out).size());  // csv, gp, png, index.md: each written once
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // report_cli_test

@@ -1,12 +1,13 @@
 // The report's output folder: one report at a time (a second is refused and changes nothing),
 // unusable folders are refused before any work, stale temporaries of dead runs are removed.
-#define BOOST_TEST_MODULE report_folder
 #include <boost/test/unit_test.hpp>
 
 #include <fstream>
 
 #include "folder_support.hpp"
 #include "rotlie/reports/report_folder.hpp"
+
+BOOST_AUTO_TEST_SUITE(report_folder_test)
 
 namespace fs = std::filesystem;
 using namespace report_test;
@@ -71,3 +72,5 @@ BOOST_AUTO_TEST_CASE(stale_temporaries_go_at_the_start) {
   BOOST_TEST(entries(dir) == std::set<std::string>{"kept.md"});
   fs::remove_all(dir);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // report_folder_test

@@ -3,12 +3,13 @@
 // integrate loop, errors in long double, h = 2^-1 … 2^-10), checked against the paper's figure.
 // Tolerance 5 %: the paper prints its ratios to two significant figures (up to 3.3 % of rounding,
 // 6 % for its "8×"), and the report's own check allows 20 %.
-#define BOOST_TEST_MODULE accuracy_claims
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
 
 #include "rotlie/runs/accuracy_curves.hpp"
+
+BOOST_AUTO_TEST_SUITE(accuracy_claims_test)
 
 using namespace rotlie;
 
@@ -25,3 +26,5 @@ BOOST_AUTO_TEST_CASE(the_papers_seven_accuracy_claims_hold) {
     BOOST_TEST(std::abs(c.better.slope - 4) < 0.1, c.better.name << " slope " << c.better.slope);
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // accuracy_claims_test

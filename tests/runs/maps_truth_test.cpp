@@ -1,7 +1,6 @@
 // The maps-truth study's pieces: the transported-remainder predictor against a closed form (a
 // remainder proportional to H only rescales time) and against the measured protocol on three
 // bodies (N family: fast), and Spearman's rank correlation on hand-checked data.
-#define BOOST_TEST_MODULE maps_truth
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -9,6 +8,8 @@
 #include "rotlie/models/exact_free_body.hpp"
 #include "rotlie/models/remainder_predictor.hpp"
 #include "rotlie/runs/maps_truth.hpp"
+
+BOOST_AUTO_TEST_SUITE(maps_truth_test)
 
 using namespace rotlie;
 
@@ -74,3 +75,5 @@ BOOST_AUTO_TEST_CASE(the_transported_remainder_predicts_the_measured_ratio) {
   BOOST_TEST(std::abs(std::log(measured[0] / measured[1])) > std::log(1.2));
   BOOST_TEST(std::abs(std::log(measured[1] / measured[2])) > std::log(1.2));
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // maps_truth_test

@@ -1,11 +1,12 @@
 // DESIGN.md: the numeric side (schemes/, models/) never includes a GiNaC or CLN header; scheme
 // tables are the only thing that crosses. This scans every source file of those folders.
-#define BOOST_TEST_MODULE numeric_boundary
 #include <boost/test/unit_test.hpp>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+BOOST_AUTO_TEST_SUITE(numeric_boundary_test)
 
 BOOST_AUTO_TEST_CASE(no_symbolic_headers_on_the_numeric_side) {
   namespace fs = std::filesystem;
@@ -24,3 +25,5 @@ BOOST_AUTO_TEST_CASE(no_symbolic_headers_on_the_numeric_side) {
     }
   BOOST_TEST(files >= 8);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // numeric_boundary_test

@@ -1,7 +1,6 @@
 // Scheme tables on the numeric side: the reference schemes meet the contract (Σ per part = 1,
 // palindromes, stage counts and costs of LV section 4 and REFERENCE.md §1.4), their coefficients
 // equal the closed forms, permutations substitute letters, and bad tables are refused.
-#define BOOST_TEST_MODULE scheme_table
 #include <boost/test/unit_test.hpp>
 
 #include <cfloat>
@@ -11,6 +10,8 @@
 
 #include "rotlie/schemes/reference_schemes.hpp"
 #include "rotlie/schemes/same_body.hpp"
+
+BOOST_AUTO_TEST_SUITE(scheme_table_test)
 
 using namespace rotlie::schemes;
 
@@ -236,3 +237,5 @@ BOOST_AUTO_TEST_CASE(the_recorded_body_is_compared_scale_free) {
   // a reference scheme records no body
   BOOST_TEST((same_body(*reference_scheme("ABCBA2"), std::array<double, 3>{1, 2, 3}) == body_match::unrecorded));
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // scheme_table_test

@@ -1,7 +1,6 @@
 // TV tables (free flight T, kick V) for bodies under torques: the parser, writer and checks learn
 // the split; the cost is the force evaluations f (first-same-as-last); a permutation is refused;
 // the reference tables are van Zon & Schofield's eq. (7) and eq. (8) with the corrected h5.
-#define BOOST_TEST_MODULE tv_table
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -9,6 +8,8 @@
 #include <string>
 
 #include "rotlie/schemes/reference_schemes.hpp"
+
+BOOST_AUTO_TEST_SUITE(tv_table_test)
 
 using namespace rotlie::schemes;
 
@@ -94,3 +95,5 @@ BOOST_AUTO_TEST_CASE(pefrl_tv_is_eq_8_with_the_corrected_h5) {
 BOOST_AUTO_TEST_CASE(the_free_rotation_lists_stay_free_of_tv_tables) {
   for (const auto& name : reference_scheme_names()) BOOST_TEST((reference_scheme(name)->splitting != split::tv), name);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // tv_table_test

@@ -2,7 +2,6 @@
 // kept) and the map point: the reference remainder by a second method (the exact symbolic
 // expansion), the best of each permutation against every solution of the exact solver, the costs of
 // section 4.1 and the equal-cost ratio.
-#define BOOST_TEST_MODULE body_map
 #include <boost/test/unit_test.hpp>
 
 #include <cln/float.h>
@@ -16,6 +15,8 @@
 #include "rotlie/bch/scheme_word.hpp"
 #include "rotlie/solver/body_grid.hpp"
 #include "rotlie/solver/body_map.hpp"
+
+BOOST_AUTO_TEST_SUITE(body_map_test)
 
 using namespace rotlie;
 using cln::cl_RA;
@@ -138,3 +139,5 @@ BOOST_AUTO_TEST_CASE(a_flat_body_is_kept_and_its_singular_systems_recorded) {
   BOOST_TEST(p.singular.size() == degenerate);
   BOOST_TEST(solved.systems.size() == 42u);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // body_map_test

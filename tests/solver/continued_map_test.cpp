@@ -2,7 +2,6 @@
 // solver's systems at any rational body (exact equality with a direct expansion), and the map
 // points of a continued row equal those of the exact solver body for body (best integrator,
 // permutation, label, best per permutation, number of real solutions).
-#define BOOST_TEST_MODULE continued_map
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -21,6 +20,8 @@
 #include "rotlie/solver/resultant.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 #include "rotlie/solver/screened_map.hpp"
+
+BOOST_AUTO_TEST_SUITE(continued_map_test)
 
 using namespace rotlie;
 using cln::cl_RA;
@@ -282,3 +283,5 @@ BOOST_AUTO_TEST_CASE(the_candidate_count_is_the_exact_solvers) {
     }
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // continued_map_test

@@ -1,7 +1,6 @@
 // The N integrators: Table 2 (spherical top, 12 real solutions, closed forms), Table 3 (analytic
 // remainders as ratios to N5 (2)), Table 4 (water: 90 real solutions, coefficients to 35 digits,
 // analytic remainders to the printed digits), residuals, and the RSRSRSR uniqueness of eq. (49).
-#define BOOST_TEST_MODULE dedicated_schemes
 #include <boost/test/unit_test.hpp>
 
 #include <cln/real.h>
@@ -11,6 +10,8 @@
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 #include "solution_lookup.hpp"
+
+BOOST_AUTO_TEST_SUITE(dedicated_schemes_test)
 
 using namespace rotlie;
 using cln::cl_RA;
@@ -157,3 +158,5 @@ BOOST_AUTO_TEST_CASE(refusals) {
   BOOST_CHECK_THROW(solver::solve_dedicated(lie::parse_moments("water"), {"N1"}, {"ABC"}, 5), std::invalid_argument);
   BOOST_CHECK_THROW(solver::solve_dedicated(lie::parse_moments("water"), {"P16"}, {"ABC"}, digits), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // dedicated_schemes_test

@@ -2,7 +2,6 @@
 // critical points of ‖H_R5‖² on that curve. Expectations: the paper's count of 46 for R (water),
 // eq. (76) for P1 BAC (5) to 35 digits, and the Lagrange condition re-checked independently
 // (∇F · (∇g1 × ∇g2) evaluated term by term, not through the solver's determinant).
-#define BOOST_TEST_MODULE free_parameter_schemes
 #include <boost/test/unit_test.hpp>
 
 #include <array>
@@ -11,6 +10,8 @@
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 #include "solution_lookup.hpp"
+
+BOOST_AUTO_TEST_SUITE(free_parameter_schemes_test)
 
 using namespace rotlie;
 using cln::cl_RA;
@@ -107,3 +108,5 @@ BOOST_AUTO_TEST_CASE(r_degenerates_for_a_symmetric_top) {
   BOOST_TEST(r.systems[0].degenerate);
   BOOST_TEST(r.systems[0].note.find("I1 = I2") != std::string::npos, r.systems[0].note);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // free_parameter_schemes_test

@@ -1,6 +1,5 @@
 // Exact univariate algebra: Sturm isolation counts every real root once, refinement reaches the
 // requested width, multiple roots are counted once, roots exactly at bisection points are found.
-#define BOOST_TEST_MODULE rational_polynomial
 #include <boost/test/unit_test.hpp>
 
 #include <random>
@@ -9,6 +8,8 @@
 #include <cln/rational_io.h>
 
 #include "rotlie/solver/rational_polynomial.hpp"
+
+BOOST_AUTO_TEST_SUITE(rational_polynomial_test)
 
 using namespace rotlie::solver;
 using cln::cl_RA;
@@ -119,3 +120,5 @@ BOOST_AUTO_TEST_CASE(no_real_roots_and_refusals) {
   BOOST_TEST(isolate_real_roots(rational_polynomial({5})).empty());
   BOOST_CHECK_THROW(isolate_real_roots(rational_polynomial{}), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // rational_polynomial_test

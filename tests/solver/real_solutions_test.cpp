@@ -1,7 +1,6 @@
 // Two equations in two unknowns: back-substitution (the fast path) against pairing (both resultants,
 // every pair tested: the second method) on every N system for water and for a near-flat body, and
 // on constructed systems with a root at infinity, a shared factor, and two solutions over one u.
-#define BOOST_TEST_MODULE real_solutions
 #include <boost/test/unit_test.hpp>
 
 #include <cln/rational_io.h>
@@ -13,6 +12,8 @@
 #include "rotlie/solver/critical_points.hpp"
 #include "rotlie/solver/real_solutions.hpp"
 #include "rotlie/solver/residue_field.hpp"
+
+BOOST_AUTO_TEST_SUITE(real_solutions_test)
 
 using namespace rotlie;
 using lie::coefficient_polynomial;
@@ -128,3 +129,5 @@ BOOST_AUTO_TEST_CASE(shared_factors_are_degenerate) {
   BOOST_TEST(solver::solve_two_equations((x - 3) * (y + 1), (x - 3) * (y - 2), 0, 1, 20).degenerate);  // free of y
   BOOST_TEST(!solver::solve_two_equations(x * x + y * y - 2, x - y, 0, 1, 20).degenerate);
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // real_solutions_test

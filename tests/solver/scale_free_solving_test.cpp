@@ -4,7 +4,6 @@
 // molecule in u Å²: same count, same labels, coefficients to the digits asked, the same analytic
 // remainder in natural units, nothing that is not finite. And the two-equation solver alone gives
 // the same points for any multiples of its equations, so its acceptance tests are relative.
-#define BOOST_TEST_MODULE scale_free_solving
 #include <boost/test/unit_test.hpp>
 
 #include <cln/real.h>
@@ -17,6 +16,8 @@
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 #include "rotlie/solver/real_solutions.hpp"
+
+BOOST_AUTO_TEST_SUITE(scale_free_solving_test)
 
 using namespace rotlie;
 using cln::cl_RA;
@@ -146,3 +147,5 @@ BOOST_AUTO_TEST_CASE(two_equations_give_the_same_points_for_any_multiples) {
     }
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // scale_free_solving_test

@@ -1,7 +1,6 @@
 // `rotlie solve` end to end for a body given in another unit: the JSON (but for the body as given
 // and the timings) and every table written with --out (but for the inertia line) are those of the
 // body scaled to I3 = 1, and nothing in them is NaN or null.
-#define BOOST_TEST_MODULE solve_scale_cli
 #include <boost/test/unit_test.hpp>
 
 #include <sys/wait.h>
@@ -13,6 +12,8 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
+
+BOOST_AUTO_TEST_SUITE(solve_scale_cli_test)
 
 namespace fs = std::filesystem;
 
@@ -121,3 +122,5 @@ BOOST_AUTO_TEST_CASE(remainder_json_values_of_a_scaled_body_follow_homogeneity) 
     BOOST_TEST(checked >= 10u);  // H_R3 and H_R5 of N2 BAC: 3 + 7 terms
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // solve_scale_cli_test

@@ -3,7 +3,6 @@
 // 20th digit, or the coefficients of one body on another body, do not. The certificate is
 // scale-free (the same residual for the body in any unit), and the written table keeps the body as
 // given.
-#define BOOST_TEST_MODULE table_certificate
 #include <boost/test/unit_test.hpp>
 
 #include <cln/rational_io.h>
@@ -17,6 +16,8 @@
 #include "rotlie/solver/dedicated_schemes.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 #include "rotlie/solver/table_certificate.hpp"
+
+BOOST_AUTO_TEST_SUITE(table_certificate_test)
 
 using namespace rotlie;
 using cln::cl_RA;
@@ -182,3 +183,5 @@ BOOST_AUTO_TEST_CASE(rs_and_three_free_coefficient_tables_certify_too) {
     }
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()  // table_certificate_test
