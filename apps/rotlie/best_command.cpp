@@ -6,6 +6,7 @@
 #include "arguments.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
+#include "rotlie/reports/number_text.hpp"
 #include "rotlie/reports/best_io.hpp"
 #include "rotlie/runs/best_for_body.hpp"
 #include "rotlie/runs/map_file.hpp"
@@ -14,12 +15,8 @@
 namespace rotlie::app {
 namespace {
 
-std::string scientific(double x, int digits = 3) {
-  std::ostringstream s;
-  s.precision(digits);
-  s << std::scientific << x;
-  return s.str();
-}
+// 3 digits after the point unless said (the tables' habit).
+std::string scientific(double x, int digits = 3) { return reports::scientific_text(x, digits); }
 
 }  // namespace
 

@@ -1,7 +1,5 @@
 // md: the van Zon & Schofield scenes on the command line (free water: the orientation error time τ;
 // dipole in a field: Table I's ΔH/ΔV and ΔL_z/⟨L_z⟩), any integrator, in double, long double or float128.
-#include <nlohmann/json.hpp>
-
 #include <boost/multiprecision/float128.hpp>
 
 #include <charconv>
@@ -13,6 +11,7 @@
 #include "arguments.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
+#include "rotlie/reports/md_io.hpp"
 #include "rotlie/models/experiments/dipole_field_experiment.hpp"
 #include "rotlie/models/experiments/free_water_experiment.hpp"
 #include "rotlie/runs/body_names.hpp"
@@ -37,10 +36,6 @@ std::string water_body_text() {
   return std::string(models::water::moments_text[0]) + "," + models::water::moments_text[1] + "," + models::water::moments_text[2];
 }
 
-nlohmann::json number_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
-
-nlohmann::json pair_json(const models::mean_error& m) { return {number_or_null(m.mean), number_or_null(m.error)}; }
-
 struct resolved_run {
   models::md_integrator integrator;  ///< --integrator, parsed once here
   models::md_run_options run;
@@ -48,11 +43,8 @@ struct resolved_run {
   std::string dipole, field;
 };
 
-// The fields every scene's JSON has: what was run, with which step, cost and seed.
-nlohmann::json run_json(const md_options& o, const resolved_run& r, int f, long steps) {
-  return {{"scene", o.scene}, {"integrator", o.integrator}, {"h_fs", r.run.h_fs}, {"f", f},
-          {"h_over_f_fs", r.run.h_fs / f}, {"T_ps", r.run.T_ps}, {"steps", steps}, {"runs", r.run.runs},
-          {"seed", r.run.seed}, {"scalar", o.scalar}};
+reports::md_run_header header_of(const md_options& o, const resolved_run& r) {
+  return {o.scene, o.integrator, o.scalar, r.run.h_fs, r.run.T_ps, r.run.runs, r.run.seed};
 }
 
 template <class T>
@@ -60,16 +52,7 @@ int report_free_water(const md_options& o, const resolved_run& r) {
   const auto result = models::run_free_water(models::free_water<T>{}, r.integrator, r.run);
   if (!result.finite) throw std::runtime_error("the integration diverged (non-finite attitude): the step is beyond the integrator's stability limit");
   if (o.json) {
-    nlohmann::json samples = nlohmann::json::array();
-    for (std::size_t j = 0; j < result.t_ps.size(); ++j)
-      samples.push_back({{"t_ps", result.t_ps[j]}, {"delta", result.delta[j]}, {"reference_delta", result.reference_delta[j]}});
-    auto j = run_json(o, r, result.f, result.steps);
-    j["tau_ps"] = number_or_null(result.tau_ps);
-    j["tau_error_ps"] = number_or_null(result.tau_error_ps);
-    j["fitted_samples"] = result.fitted_samples;
-    j["cpu_s_per_ps"] = result.cpu_s_per_ps;
-    j["samples"] = samples;
-    std::cout << j.dump(2) << "\n";
+    std::cout << reports::free_water_json(header_of(o, r), result).dump(2) << "\n";
   } else {
     std::cout << "free water, " << o.integrator << " (f = " << result.f << "), h = " << r.run.h_fs << " fs, " << r.run.runs
               << " runs of " << result.steps << " steps (" << r.run.T_ps << " ps), seed " << r.run.seed << ", " << o.scalar
@@ -89,14 +72,7 @@ int report_dipole_field(const md_options& o, const resolved_run& r) {
   if (result.failed_runs == r.run.runs)
     throw std::runtime_error("every run diverged (non-finite energy): the step is beyond the integrator's stability limit");
   if (o.json) {
-    auto j = run_json(o, r, result.f, result.steps);
-    j["dipole_debye"] = std::stod(r.dipole);
-    j["field_MV_per_m"] = std::stod(r.field);
-    j["dH_over_dV_percent"] = pair_json(result.dH);
-    j["dLz_over_Lz"] = pair_json(result.dLz);
-    j["failed_runs"] = result.failed_runs;
-    j["cpu_s_per_ps"] = result.cpu_s_per_ps;
-    std::cout << j.dump(2) << "\n";
+    std::cout << reports::dipole_field_json(header_of(o, r), result, std::stod(r.dipole), std::stod(r.field)).dump(2) << "\n";
   } else {
     std::cout << "dipole in a field, " << o.integrator << " (f = " << result.f << "), h = " << r.run.h_fs << " fs (h/f = "
               << r.run.h_fs / result.f << " fs), " << r.run.runs << " runs of " << result.steps << " steps (" << r.run.T_ps

@@ -3,10 +3,10 @@
 
 #include <cstdio>
 #include <iostream>
-#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "arguments.hpp"
+#include "rotlie/reports/md_io.hpp"
 #include "progress.hpp"
 #include "rotlie/models/scenes/liquid_water_experiment.hpp"
 #include "rotlie/models/scenes/water_model.hpp"
@@ -80,20 +80,7 @@ int run_md_liquid_water(const md_liquid_water_options& options) {
   }
   const auto r = models::run_liquid_water(o, integrator, start, show);
   if (options.json) {
-    std::cout << nlohmann::json{{"scene", "liquid-water"},
-                                {"integrator", r.integrator},
-                                {"h_fs", r.h_fs},
-                                {"f", r.f},
-                                {"runs", r.runs},
-                                {"molecules", r.molecules},
-                                {"dE_over_dV_percent", {r.ratio_mean, r.ratio_error}},
-                                {"potential_kcal_per_mol", r.potential_per_molecule},
-                                {"temperature_K", r.temperature},
-                                {"ms_per_step", r.ms_per_step},
-                                {"cpu_ms_per_step", r.cpu_ms_per_step},
-                                {"momentum_drift", r.momentum_drift}}
-                     .dump(2)
-              << "\n";
+    std::cout << reports::liquid_water_json(r).dump(2) << "\n";
   } else {
     std::printf("liquid water: %ld TIP3P molecules, box %.4f Å, %s, h = %g fs (h/f = %g fs), %d run(s) of %g ps\n", r.molecules, r.box,
                 r.integrator.c_str(), r.h_fs, r.h_fs / r.f, r.runs, o.T_ps);

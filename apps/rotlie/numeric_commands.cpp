@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "progress.hpp"
 #include "rotlie/reports/free_body_io.hpp"
+#include "rotlie/reports/number_text.hpp"
 #include "rotlie/runs/body_names.hpp"
 #include "rotlie/runs/free_body_runs.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
@@ -14,11 +15,7 @@
 namespace rotlie::app {
 namespace {
 
-std::string number(double x) {
-  std::ostringstream out;
-  out << x;
-  return out.str();
-}
+std::string number(double x) { return reports::significant_text(x, 6); }
 
 void warn_reference(double error, double reference_error, const std::string& where) {
   std::cerr << "rotlie: warning: " << where << ": the exact reference's estimated error " << reference_error

@@ -7,6 +7,7 @@
 #include "arguments.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
+#include "rotlie/reports/number_text.hpp"
 #include "rotlie/reports/sixth_io.hpp"
 #include "rotlie/runs/body_names.hpp"
 #include "rotlie/runs/sixth_search.hpp"
@@ -15,12 +16,8 @@
 namespace rotlie::app {
 namespace {
 
-std::string scientific(double x, int digits = 3) {
-  std::ostringstream s;
-  s.precision(digits);
-  s << std::scientific << x;
-  return s.str();
-}
+// 3 digits after the point unless said (the tables' habit).
+std::string scientific(double x, int digits = 3) { return reports::scientific_text(x, digits); }
 
 int list_references(bool json) {
   if (json) {

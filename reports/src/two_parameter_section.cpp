@@ -20,13 +20,6 @@
 
 namespace rotlie::reports {
 
-// From the runs library (rotlie::runs):
-using runs::find_solution;
-using runs::protocol_runner;
-using runs::ratio_at_equal_cpu_time;
-using runs::ratio_at_equal_reduced_step;
-using runs::scheme_curve;
-
 namespace {
 
 constexpr int digits = 45;
@@ -61,7 +54,7 @@ std::string coefficients_block(const solver::two_parameter_entry& e) {
   return o.str();
 }
 
-chart comparison_chart(const std::vector<scheme_curve>& curves, bool cpu) {
+chart comparison_chart(const std::vector<runs::scheme_curve>& curves, bool cpu) {
   chart c;
   c.title = cpu ? "Water: two free parameters against the 4th-order champions (against CPU time)"
                 : "Water: two free parameters against the 4th-order champions";
@@ -144,14 +137,14 @@ report_section two_parameter_section(const report_options& options) {
   // The comparison at equal cost: predicted by ‖H_R5‖ (error ∝ ‖H_R5‖ (h/C)^4 C^4) and measured.
   if (options.progress) options.progress("Two free parameters: protocol runs against P1 BAC (5) and RS4 S5 McLachlan CBA");
   const auto p1_family = solver::solve_dedicated(body, {"P1"}, {"BAC"}, 40);
-  const auto& p1 = find_solution(p1_family, "P1", "BAC", 5);
+  const auto& p1 = runs::find_solution(p1_family, "P1", "BAC", 5);
   const int max_level = options.quick ? 8 : 10;
-  const protocol_runner runner(body, 1, max_level);
+  const runs::protocol_runner runner(body, 1, max_level);
   const auto table_of = [&](const solver::two_parameter_entry& e) {
     const auto s = solver::two_parameter_conditions(bch::layout_scheme(e.word, e.split, e.permutation), body);
     return schemes::parse_scheme_table(solver::two_parameter_table_text(s, e.best, digits, body, runs::two_parameter_name(e), "report"));
   };
-  std::vector<scheme_curve> curves;
+  std::vector<runs::scheme_curve> curves;
   curves.push_back(runner.run(solver::scheme_table_of(p1, body)));
   curves.back().name = p1.name();
   curves.push_back(runner.run(*schemes::reference_scheme("RS4-S5-McLachlan:CBA")));
@@ -174,14 +167,14 @@ report_section two_parameter_section(const report_options& options) {
     md << "| " << k.name << " | " << k.cost << " | " << (known ? significant_text(remainders[i], 4) : std::string("—")) << " | "
        << significant_text(k.slope, 4) << " | " << significant_text(k.constant, 3) << " | "
        << (known ? significant_text(p1.analytic_remainder / remainders[i] * std::pow(11.0 / k.cost, 4), 3) : std::string("—")) << " | "
-       << significant_text(ratio_at_equal_reduced_step(p1_curve, k), 3) << " | " << significant_text(ratio_at_equal_cpu_time(p1_curve, k), 3) << " |\n";
+       << significant_text(runs::ratio_at_equal_reduced_step(p1_curve, k), 3) << " | " << significant_text(runs::ratio_at_equal_cpu_time(p1_curve, k), 3) << " |\n";
   }
   md << "\nA ratio above 1 means more accurate than P1 BAC (5). ‖H_R5‖ (the norm of the coefficients on the "
         "monomials G1^a G2^b G3^c) is a proxy: where the prediction and the measurement differ, the measurement "
         "is the answer for this initial condition, and minimising ‖H_R5‖ was not minimising the error.\n\n";
   // Every polished system measured, to see whether the norm's ranking is the error's.
   if (options.progress) options.progress("Two free parameters: protocol runs of every polished system");
-  const protocol_runner screen(body, 1, 8, false);
+  const runs::protocol_runner screen(body, 1, 8, false);
   const auto p1_screen = screen.run(solver::scheme_table_of(p1, body));
   md << "Every polished system measured (h = 2^-1 … 2^-8, the constant over the three finest steps) against P1 BAC (5) "
         "at equal h/C, next to the norm's prediction:\n\n| scheme | ‖H_R5‖ | × P1 predicted | × P1 measured |\n|:--|--:|--:|--:|\n";
@@ -190,7 +183,7 @@ report_section two_parameter_section(const report_options& options) {
     for (const auto& e : family->entries) {
       if (!e.polished) continue;
       auto k = screen.run(table_of(e));
-      const double ratio = ratio_at_equal_reduced_step(p1_screen, k);
+      const double ratio = runs::ratio_at_equal_reduced_step(p1_screen, k);
       ++measured;
       better += ratio > 1;
       md << "| " << runs::two_parameter_name(e) << " | " << significant_text(e.best.remainder, 4) << " | "
