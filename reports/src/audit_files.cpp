@@ -13,6 +13,7 @@
 
 #include "rotlie/reports/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
+#include "rotlie/runs/map_file.hpp"
 
 namespace rotlie::reports {
 namespace {
@@ -26,18 +27,14 @@ double fraction_value(const std::string& f) {
   return slash == std::string::npos ? std::stod(f) : std::stod(f.substr(0, slash)) / std::stod(f.substr(slash + 1));
 }
 
+// A map file (runs/map_file.hpp's reader) as the audit measures it: place, ratio, best, singular.
 std::optional<audit_map> read_map_file(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) return std::nullopt;
-  std::string line;
+  const auto contents = runs::read_map_contents(file);
+  if (!contents) return std::nullopt;
   audit_map m;
-  if (!std::getline(in, line)) return std::nullopt;
-  const auto header = nlohmann::json::parse(line, nullptr, false);
-  if (header.is_discarded() || !header.contains("grid")) throw std::runtime_error(printable_path(file) + " has no map header");
-  m.K = header["grid"].get<int>();
-  while (std::getline(in, line)) {
-    const auto j = nlohmann::json::parse(line, nullptr, false);
-    if (j.is_discarded() || !j.contains("I") || j.contains("failed")) continue;
+  m.K = contents->K;
+  for (const auto& j : contents->bodies) {
+    if (!j.contains("I")) continue;
     audit_map_body b;
     b.I1 = fraction_value(j["I"][0].get<std::string>());
     b.I2 = fraction_value(j["I"][1].get<std::string>());
@@ -105,9 +102,8 @@ const csv_table* report_files::csv(const std::string& file) {
 const audit_map* report_files::map(const std::string& family) {
   auto it = maps_.find(family);
   if (it == maps_.end()) {
-    const std::string name = "map-" + family + ".jsonl";
-    const fs::path given = in_.maps_folder.empty() ? fs::path() : in_.maps_folder / name;
-    it = maps_.emplace(family, read_map_file(!given.empty() && fs::exists(given) ? given : in_.folder / name)).first;
+    const fs::path given = in_.maps_folder.empty() ? fs::path() : runs::map_file_path(in_.maps_folder, family);
+    it = maps_.emplace(family, read_map_file(!given.empty() && fs::exists(given) ? given : runs::map_file_path(in_.folder, family))).first;
   }
   return it->second ? &*it->second : nullptr;
 }
