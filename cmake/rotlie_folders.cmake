@@ -1,0 +1,16 @@
+# The project's folders in dependency order, one list for the libraries (top level) and their tests
+# (tests/): the symbolic side and what stands on it only when ROTLIE_WITH_SYMBOLIC is on.
+set(ROTLIE_FOLDERS_BELOW lie bch solver)        # the symbolic side (GiNaC, CLN)
+set(ROTLIE_FOLDERS_NUMERIC schemes models)
+set(ROTLIE_FOLDERS_ABOVE runs reports apps)     # on both sides: the library floor and its front ends
+
+# add_subdirectory for every folder of this build, in order.
+function(rotlie_add_folders)
+  set(folders ${ROTLIE_FOLDERS_NUMERIC})
+  if(ROTLIE_WITH_SYMBOLIC)
+    set(folders ${ROTLIE_FOLDERS_BELOW} ${ROTLIE_FOLDERS_NUMERIC} ${ROTLIE_FOLDERS_ABOVE})
+  endif()
+  foreach(folder IN LISTS folders)
+    add_subdirectory(${folder})
+  endforeach()
+endfunction()
