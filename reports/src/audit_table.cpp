@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "rotlie/reports/audit_files.hpp"
+#include "rotlie/runs/maps_truth.hpp"
 
 namespace rotlie::reports {
 namespace {
@@ -16,33 +17,11 @@ std::string csv_field(const std::string& s) {
   return out + "\"";
 }
 
-std::vector<double> ranks(const std::vector<double>& v) {
-  std::vector<std::size_t> order(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return v[a] < v[b]; });
-  std::vector<double> r(v.size());
-  for (std::size_t i = 0; i < order.size();) {
-    std::size_t j = i;
-    while (j + 1 < order.size() && v[order[j + 1]] == v[order[i]]) ++j;
-    for (std::size_t k = i; k <= j; ++k) r[order[k]] = (static_cast<double>(i + j) / 2) + 1;
-    i = j + 1;
-  }
-  return r;
-}
-
 }  // namespace
 
 double rank_correlation(const std::vector<double>& x, const std::vector<double>& y) {
-  if (x.size() != y.size() || x.size() < 3) return std::nan("");
-  const auto rx = ranks(x), ry = ranks(y);
-  const double n = static_cast<double>(x.size()), mean = (n + 1) / 2;
-  double sxy = 0, sxx = 0, syy = 0;
-  for (std::size_t i = 0; i < rx.size(); ++i) {
-    sxy += (rx[i] - mean) * (ry[i] - mean);
-    sxx += (rx[i] - mean) * (rx[i] - mean);
-    syy += (ry[i] - mean) * (ry[i] - mean);
-  }
-  return sxx > 0 && syy > 0 ? sxy / std::sqrt(sxx * syy) : std::nan("");
+  if (x.size() != y.size()) return std::nan("");
+  return runs::spearman(x, y);  // NaN below three points and where a side has no spread
 }
 
 std::vector<audit_row> audit_rows_from_reports(const audit_inputs& in) {

@@ -40,8 +40,8 @@ std::string two_parameter_name(const solver::two_parameter_entry& e) {
 }
 
 bch::map_method map_method_asked(const bch::family& f, bool exact, bool fast) {
-  if (fast && !f.fast_checked) {
-    const auto checked = bch::family_names([](const bch::family& g) { return g.fast_checked; }, " and ");
+  if (fast && !bch::fast_checked(f)) {
+    const auto checked = bch::family_names([](const bch::family& g) { return bch::fast_checked(g); }, " and ");
     throw bad_input("--fast: the fast path is checked against the exact solver for the " + checked +
                     " families only; the " + std::string(f.name) + " map uses the exact solver (drop --fast)");
   }

@@ -168,7 +168,8 @@ double spearman(const std::vector<double>& x, const std::vector<double>& y) {
     sxx += (rx[i] - mean) * (rx[i] - mean);
     syy += (ry[i] - mean) * (ry[i] - mean);
   }
-  return sxy / std::sqrt(sxx * syy);
+  // No spread on a side: no correlation (NaN without dividing 0 by 0, which the sanitizers trap).
+  return sxx > 0 && syy > 0 ? sxy / std::sqrt(sxx * syy) : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace rotlie::runs
