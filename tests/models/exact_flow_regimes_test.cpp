@@ -361,6 +361,19 @@ BOOST_AUTO_TEST_CASE(random_states_in_every_regime_stay_within_their_estimate) {
   BOOST_TEST_MESSAGE(checked << " random states: largest error / estimate " << worst);
 }
 
+BOOST_AUTO_TEST_CASE(a_body_at_rest_stays_at_rest) {
+  // G = 0: no rotation at any time, no time limit (|ω| = 0), and no division by the zero rate
+  const vec3<double> I{1, 2, 2.5};
+  auto start = test::initial_state<double>(vec3<double>{0, 0, 0});
+  start.Q.a = {0, -1, 0, 1, 0, 0, 0, 0, 1};
+  const models::exact_free_body<double> flow(I, start);
+  BOOST_TEST(std::isinf(flow.max_time()));
+  const auto r = flow.evaluate(1e6);
+  BOOST_TEST(r.error_estimate == 0.0);
+  for (std::size_t i = 0; i < 9; ++i) BOOST_TEST(r.state.Q.a[i] == start.Q.a[i]);
+  for (std::size_t i = 0; i < 3; ++i) BOOST_TEST(r.state.G[i] == 0.0);
+}
+
 BOOST_AUTO_TEST_CASE(bad_input_is_refused) {
   BOOST_CHECK_THROW(models::exact_free_body<double>(water, test::initial_state<double>({std::nan(""), 1, 1})), std::invalid_argument);
   BOOST_CHECK_THROW(models::exact_free_body<double>(water, test::initial_state<double>({1e308 * 10, 1, 1})), std::invalid_argument);

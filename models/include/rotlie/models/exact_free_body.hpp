@@ -61,7 +61,10 @@ class exact_free_body {
   T complementary_parameter() const { return core_.complementary_parameter(); }
 
   /// The largest |t| that at() accepts.
-  T max_time() const { return ldexp_(T(max_phase) / omega_, eI_ - eG_); }
+  T max_time() const {
+    if (!(omega_ > 0)) return std::numeric_limits<T>::infinity();  // a body at rest stays so forever
+    return ldexp_(T(max_phase) / omega_, eI_ - eG_);
+  }
 
   struct result {
     body_state<T> state;
@@ -75,6 +78,7 @@ class exact_free_body {
     if (!isfinite(static_cast<double>(t)) || abs(t) > max_time())
       throw std::domain_error("the exact flow is limited to |ω|·|t| ≤ 2^60 rad (|t| ≤ " +
                               std::to_string(static_cast<double>(max_time())) + " here)");
+    if (!(omega_ > 0)) return {initial_, T(0)};  // G = 0: the body does not turn
     const T tau = ldexp_(t, eG_ - eI_);
     const auto e = core_.at(tau);
     // a state the scalar cannot represent has no estimate in it (1: nothing is known)
