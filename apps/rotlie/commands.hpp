@@ -1,6 +1,7 @@
 #pragma once
 // One function per subcommand. They take plain option structs, so that CLI11 stays in main.cpp
 // (the slowest header to compile). Each returns the process exit status.
+#include <map>
 #include <string>
 
 namespace rotlie::app {
@@ -94,7 +95,9 @@ struct best_options {
 int run_best(const best_options& options);
 /// `rotlie md`: empty T and runs take the scene's defaults.
 struct md_options {
-  std::string scene, integrator, h, T, runs, seed = "1", scalar = "double", dipole = "1.84", field = "2.7";
+  std::string scene, integrator, h;
+  std::map<std::string, std::string> values;  ///< every scene option's storage, by name ("--T")
+  std::map<std::string, std::string> given;   ///< the options given on the command line
   bool json = false;
 };
 int run_md(const md_options& options);

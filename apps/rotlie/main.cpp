@@ -16,8 +16,8 @@
 
 #include "arguments.hpp"
 #include "commands.hpp"
-#include "md_liquid_water.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
+#include "rotlie/runs/scenes.hpp"
 
 namespace {
 
@@ -110,23 +110,6 @@ std::function<int()> with_folder_checked(const Options& o, int (*run)(const Opti
 
 const char* const force_help = "Use a scheme-table file solved for another body (with a warning)";
 
-// The md scene's options: the liquid-water scene takes options of its own and none of the others'.
-int run_md_scene(const CLI::App& md_cmd, const md_options& md, md_liquid_water_options& liquid) {
-  if (md.scene != "liquid-water") {
-    for (const char* o : {"--molecules", "--threads", "--state"})
-      if (md_cmd.count(o) > 0) throw usage_error(std::string(o) + " applies to the liquid-water scene only");
-    return run_md(md);
-  }
-  for (const char* o : {"--seed", "--scalar", "--dipole", "--field"})
-    if (md_cmd.count(o) > 0) throw usage_error(std::string(o) + " does not apply to the liquid-water scene");
-  liquid.integrator = md.integrator;
-  liquid.h = md.h;
-  if (!md.T.empty()) liquid.T = md.T;
-  if (!md.runs.empty()) liquid.runs = md.runs;
-  liquid.json = md.json;
-  return run_md_liquid_water(liquid);
-}
-
 subcommand add_dims(CLI::App& app, dims_options& dims) {
   auto* dims_cmd = app.add_subcommand("dims", "Dimensions of L_k and the Theorem 1 and 2 verdicts per order");
   dims_cmd->add_option("--max-order", dims.max_order, "Highest order k (1 to 200)")->required();
@@ -207,10 +190,12 @@ subcommand add_exact(CLI::App& app, exact_options& exact) {
   return {exact_cmd, with_scales_checked(exact, run_exact)};
 }
 
-subcommand add_md(CLI::App& app, md_options& md, md_liquid_water_options& liquid) {
-  auto* md_cmd = app.add_subcommand("md", "van Zon & Schofield's scenes: free water (orientation error time tau) and a "
-                                          "dipole in a field (Table I), any integrator");
-  md_cmd->add_option("--scene", md.scene, "free-water, dipole-field or liquid-water")->required();
+subcommand add_md(CLI::App& app, md_options& md) {
+  auto* md_cmd = app.add_subcommand("md", "van Zon & Schofield's scenes: free water (orientation error time tau), a "
+                                          "dipole in a field (Table I) and liquid water (Fig. 1), any integrator");
+  std::string scenes;
+  for (const auto& s : rotlie::runs::scenes()) scenes += (scenes.empty() ? "" : "; ") + s.name + ": " + s.summary;
+  md_cmd->add_option("--scene", md.scene, scenes)->required();
   md_cmd->add_option("--integrator", md.integrator,
                      "SIER2, SIER4, MRDL (axes 1-2-3-2-1, DLM's order and LAMMPS's NO_SQUISH map), MRDL-reversed (3-2-1-2-3, "
                      "the full step on the smallest moment), SEJ4 (a reconstruction), "
@@ -218,17 +203,13 @@ subcommand add_md(CLI::App& app, md_options& md, md_liquid_water_options& liquid
                      "(RS4-S5-McLachlan:CBA, or SCHEME:PERM:LABEL such as P1:BAC:5 solved for the water molecule)")
       ->required();
   md_cmd->add_option("--h", md.h, "The step h in fs (the step itself: SIER4 at h/f = 4.2 fs is --h 16.8)")->required();
-  md_cmd->add_option("--T", md.T, "Simulated time per run in ps, rounded to whole steps (default: 5 for free-water, 100 for dipole-field)");
-  md_cmd->add_option("--runs", md.runs, "Ensemble size (default: 100 for free-water, 50 for dipole-field)");
-  md_cmd->add_option("--seed", md.seed, "Seed of the canonical initial conditions (default 1; the same seed, the same numbers)");
-  md_cmd->add_option("--scalar", md.scalar, "double, long-double or float128 (default double)");
-  md_cmd->add_option("--dipole", md.dipole, "dipole-field: the dipole in debye (default 1.84)");
-  md_cmd->add_option("--field", md.field, "dipole-field: the field along z in MV/m (default 2.7)");
+  for (const auto& o : rotlie::runs::all_scene_options()) md_cmd->add_option(o.name, md.values[o.name], o.help);
   md_cmd->add_flag("--json", md.json, "Machine-readable output on stdout");
-  md_cmd->add_option("--molecules", liquid.molecules, "liquid-water: molecules in the box (default 512; at least 365)");
-  md_cmd->add_option("--threads", liquid.threads, "liquid-water: threads of the force loop (default 2; results do not depend on it)");
-  md_cmd->add_option("--state", liquid.state, "liquid-water: a state file, read if it exists, else the equilibrated start is written there");
-  return {md_cmd, [md_cmd, &md, &liquid] { return run_md_scene(*md_cmd, md, liquid); }};
+  return {md_cmd, [md_cmd, &md] {
+            for (const auto& [name, value] : md.values)
+              if (md_cmd->count(name) > 0) md.given[name] = value;
+            return run_md(md);
+          }};
 }
 
 subcommand add_report(CLI::App& app, report_command_options& report) {
@@ -304,7 +285,6 @@ struct all_options {
   order_options order;
   exact_options exact;
   md_options md;
-  md_liquid_water_options liquid;  // liquid-water only: the scene of vZS section V.C
   report_command_options report;
   map_options map;
   best_options best;
@@ -315,7 +295,7 @@ struct all_options {
 // The command tree, in the order of rotlie --help.
 std::vector<subcommand> add_subcommands(CLI::App& app, all_options& o) {
   return {add_dims(app, o.dims), add_stages(app, o.stages), add_remainder(app, o.remainder), add_solve(app, o.solve),
-          add_integrate(app, o.integrate), add_order(app, o.order), add_exact(app, o.exact), add_md(app, o.md, o.liquid),
+          add_integrate(app, o.integrate), add_order(app, o.order), add_exact(app, o.exact), add_md(app, o.md),
           add_report(app, o.report), add_map(app, o.map), add_best(app, o.best), add_bch(app, o.bch), add_sixth(app, o.sixth)};
 }
 

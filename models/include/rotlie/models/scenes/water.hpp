@@ -9,6 +9,8 @@
 // 10⁻⁴⁰ g cm² = 10⁻²⁴ g Å² = 0.602214076 g/mol·Å² (N_A = 6.02214076e23, exact since 2019), so the
 // decimals below are exact products. Axes: I1 < I2 < I3 are the in-plane axis perpendicular to
 // C2, the C2 (dipole) axis, and the normal to the plane.
+#include <string>
+
 #include "rotlie/models/composition.hpp"
 #include "rotlie/models/small_matrix.hpp"
 
@@ -16,6 +18,8 @@ namespace rotlie::models::water {
 
 /// The principal moments, g/mol·Å², as exact decimal text (read into the scalar in use).
 inline constexpr const char* moments_text[3] = {"0.615462785672", "1.1554681476212", "1.7690640696576"};
+/// The moments as a body name ("I1,I2,I3") for the name resolution of a rotor table.
+inline std::string body_text() { return std::string(moments_text[0]) + "," + moments_text[1] + "," + moments_text[2]; }
 /// The same body as an exact ratio (for a table's `inertia` line; equal up to a common factor).
 inline constexpr const char* moments_ratio = "10220,19187,29376";
 /// H₂O, g/mol.

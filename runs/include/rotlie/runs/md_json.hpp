@@ -1,5 +1,6 @@
 #pragma once
-// The JSON of `rotlie md` (one writer per scene's result; a contract: fields are added, never renamed).
+// The JSON of each md scene (`rotlie md --json`, rotlie.md from Python): one writer per scene's result;
+// a contract: fields are added, never renamed.
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -9,7 +10,7 @@
 #include "rotlie/models/experiments/free_water_experiment.hpp"
 #include "rotlie/models/scenes/liquid_water_experiment.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 /// What was run, as every md JSON starts: scene, integrator, step, length, runs, seed, scalar.
 struct md_run_header {
@@ -29,4 +30,4 @@ nlohmann::json dipole_field_json(const md_run_header& h, const models::dipole_fi
 /// {"scene": "liquid-water", "integrator", "h_fs", "f", "runs", "molecules", "dE_over_dV_percent", …}
 nlohmann::json liquid_water_json(const models::liquid_water_run_result& r);
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

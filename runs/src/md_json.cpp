@@ -1,8 +1,8 @@
-#include "rotlie/reports/md_io.hpp"
+#include "rotlie/runs/md_json.hpp"
 
 #include <cmath>
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 namespace {
 
 nlohmann::json number_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
@@ -58,4 +58,4 @@ nlohmann::json liquid_water_json(const models::liquid_water_run_result& r) {
                         {"momentum_drift", r.momentum_drift}};
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

@@ -1,0 +1,55 @@
+// dipole-field: a water molecule's dipole in a constant field, vZS section V.B (Table I): the energy
+// fluctuation ΔH/ΔV and ΔL_z/⟨L_z⟩ of an integrator over an ensemble.
+#include <sstream>
+
+#include "ensemble_run.hpp"
+#include "rotlie/models/experiments/dipole_field_experiment.hpp"
+
+namespace rotlie::runs {
+namespace {
+
+using namespace scene_support;
+
+struct dipole_run : ensemble_run {
+  std::string dipole, field;  ///< shortest decimals, read alike by every scalar
+};
+
+template <class T>
+scene_result run_in(const dipole_run& e) {
+  const auto result = models::run_dipole_field(models::dipole_field<T>(e.dipole, e.field), e.integrator, e.run);
+  if (result.failed_runs == e.run.runs)
+    throw std::runtime_error("every run diverged (non-finite energy): the step is beyond the integrator's stability limit");
+  scene_result out;
+  out.json = dipole_field_json(e.header(), result, std::stod(e.dipole), std::stod(e.field));
+  std::ostringstream text;
+  text << "dipole in a field, " << e.integrator.name << " (f = " << result.f << "), h = " << e.run.h_fs << " fs (h/f = "
+       << e.run.h_fs / result.f << " fs), " << e.run.runs << " runs of " << result.steps << " steps (" << e.run.T_ps
+       << " ps), seed " << e.run.seed << ", " << e.scalar << "\n  dH/dV = " << result.dH.mean << " ± " << result.dH.error
+       << " %\n  dLz/<Lz> = " << result.dLz.mean << " ± " << result.dLz.error << "\n  CPU " << result.cpu_s_per_ps
+       << " s per simulated ps\n";
+  out.text = text.str();
+  if (result.failed_runs > 0)
+    out.warnings.push_back(std::to_string(result.failed_runs) + " of " + std::to_string(e.run.runs) +
+                           " runs diverged (non-finite energy) and are left out of the means");
+  return out;
+}
+
+scene_result run(const scene_request& r) {
+  dipole_run e;
+  read_ensemble_run(r, models::water::body_text(), e);
+  e.dipole = shortest(positive_number(option(r, "--dipole"), "--dipole"));
+  e.field = shortest(positive_number(option(r, "--field"), "--field"));
+  return in_scalar(e, [&e](auto zero) { return run_in<decltype(zero)>(e); });
+}
+
+}  // namespace
+
+scene dipole_field_scene() {
+  auto options = ensemble_options(models::dipole_field_default_T_ps, models::dipole_field_default_runs);
+  options.push_back({"--dipole", "1.84", "The dipole in debye"});
+  options.push_back({"--field", "2.7", "The field along z in MV/m"});
+  return {"dipole-field", "a water molecule's dipole in a constant field: Table I's dH/dV and dLz/<Lz> (vZS section V.B)",
+          std::move(options), run};
+}
+
+}  // namespace rotlie::runs

@@ -1,0 +1,47 @@
+// free-water: one water molecule without forces, vZS section V.A: the orientation error time τ of an
+// integrator against the exact motion (eq. (52)), in double, long double or float128.
+#include <sstream>
+
+#include "ensemble_run.hpp"
+#include "rotlie/models/experiments/free_water_experiment.hpp"
+
+namespace rotlie::runs {
+namespace {
+
+using namespace scene_support;
+
+template <class T>
+scene_result run_in(const ensemble_run& e) {
+  const auto result = models::run_free_water(models::free_water<T>{}, e.integrator, e.run);
+  if (!result.finite)
+    throw std::runtime_error("the integration diverged (non-finite attitude): the step is beyond the integrator's stability limit");
+  scene_result out;
+  out.json = free_water_json(e.header(), result);
+  std::ostringstream text;
+  text << "free water, " << e.integrator.name << " (f = " << result.f << "), h = " << e.run.h_fs << " fs, " << e.run.runs
+       << " runs of " << result.steps << " steps (" << e.run.T_ps << " ps), seed " << e.run.seed << ", " << e.scalar
+       << "\n  tau = " << result.tau_ps << " ± " << result.tau_error_ps << " ps (delta = t/(10 tau) fitted over "
+       << result.fitted_samples << " of " << result.t_ps.size() << " samples)\n  delta(T) = " << result.delta.back()
+       << " (exact reference: " << result.reference_delta.back() << ")\n  CPU " << result.cpu_s_per_ps << " s per simulated ps\n";
+  out.text = text.str();
+  if (result.fitted_samples < 2)
+    out.warnings.push_back(
+        "fewer than two samples have 10 × reference error < delta <= 0.1: tau is not defined "
+        "(run longer if delta is at round-off, shorter if it has saturated)");
+  return out;
+}
+
+scene_result run(const scene_request& r) {
+  ensemble_run e;
+  read_ensemble_run(r, models::water::body_text(), e);
+  return in_scalar(e, [&e](auto zero) { return run_in<decltype(zero)>(e); });
+}
+
+}  // namespace
+
+scene free_water_scene() {
+  return {"free-water", "one free water molecule: the orientation error time tau (vZS section V.A)",
+          ensemble_options(models::free_water_default_T_ps, models::free_water_default_runs), run};
+}
+
+}  // namespace rotlie::runs

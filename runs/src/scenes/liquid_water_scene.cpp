@@ -1,0 +1,71 @@
+// liquid-water: rigid TIP3P in a periodic box, vZS section V.C (Fig. 1): the energy fluctuation
+// ΔE/ΔV of one integrator and step, with its cost; the equilibrated start is kept in --state.
+#include <cstdio>
+#include <string>
+
+#include "rotlie/models/scenes/liquid_water_experiment.hpp"
+#include "rotlie/models/scenes/water_model.hpp"
+#include "rotlie/runs/md_json.hpp"
+#include "rotlie/runs/numeric_inputs.hpp"
+#include "scene_support.hpp"
+
+namespace rotlie::runs {
+namespace {
+
+using namespace scene_support;
+
+// printf into a string (the summary's column layout).
+template <class... A>
+std::string line(const char* format, A... a) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, format, a...);
+  return buf;
+}
+
+scene_result run(const scene_request& request) {
+  models::liquid_water_run_options o;
+  o.integrator = request.integrator;
+  const auto integrator = integrator_named(request.integrator);
+  o.h_fs = positive_number(request.h, "--h");
+  o.T_ps = positive_number(option(request, "--T"), "--T");
+  o.runs = static_cast<int>(integer_in_range(option(request, "--runs"), "--runs", 1, 1000));
+  o.molecules = integer_in_range(option(request, "--molecules"), "--molecules", 2, 10000000);
+  o.threads = static_cast<int>(integer_in_range(option(request, "--threads"), "--threads", 1, 64));
+  o.state_file = option(request, "--state");
+  if (o.T_ps * 1000 / o.h_fs < 10) throw bad_input("--T must span at least 10 steps of --h (the fluctuations are rms over a run)");
+  if (o.T_ps * 1000 / o.h_fs * o.runs > 1e9) throw bad_input("--T / --h × --runs exceeds 10⁹ steps");
+  as_bad_input([&] { models::check_liquid_water_options(o); });  // a box below twice the cutoff
+  const auto rotor = rotor_table(integrator, models::tip3p_body_text());  // before the equilibration: a bad name costs nothing
+  o.rotor_table = rotor ? &*rotor : nullptr;
+  auto show = [&request](const std::string& text) {
+    if (request.progress) request.progress(text);
+  };
+  models::rigid_bodies_state<double> start;
+  as_bad_input([&] { start = models::liquid_water_start(o, show); });  // a state file of another system, overlaps
+  const auto r = models::run_liquid_water(o, integrator, start, show);
+  scene_result out;
+  out.json = liquid_water_json(r);
+  out.text = line("liquid water: %ld TIP3P molecules, box %.4f Å, %s, h = %g fs (h/f = %g fs), %d run(s) of %g ps\n", r.molecules, r.box,
+                  r.integrator.c_str(), r.h_fs, r.h_fs / r.f, r.runs, o.T_ps) +
+             line("  ΔE/ΔV            %.4g ± %.2g %%\n", r.ratio_mean, r.ratio_error) +
+             line("  V per molecule   %.4f kcal/mol\n", r.potential_per_molecule) +
+             line("  temperature      %.1f K\n", r.temperature) +
+             line("  cost             %.3f ms per step wall, %.3f ms CPU (%ld steps)\n", r.ms_per_step, r.cpu_ms_per_step, r.steps) +
+             line("  |ΔP| (momentum)  %.2e g/mol·Å/fs\n", r.momentum_drift);
+  return out;
+}
+
+}  // namespace
+
+scene liquid_water_scene() {
+  return {"liquid-water",
+          "rigid TIP3P water in a periodic box: Fig. 1's energy fluctuation dE/dV and the cost per step (vZS section V.C)",
+          {{"--T", "1", "Simulated time per run in ps, rounded to whole steps"},
+           {"--runs", "9", "Ensemble size"},
+           {"--molecules", "512", "Molecules in the box (at least 365)"},
+           {"--threads", "2", "Threads of the force loop (results do not depend on it)"},
+           {"--state", "", "A state file, read if it exists, else the equilibrated start is written there"}},
+          run};
+}
+
+}  // namespace rotlie::runs

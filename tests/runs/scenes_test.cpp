@@ -1,0 +1,87 @@
+// The scene registry: every scene reachable by name, options checked against the scene before
+// anything runs, defaults filled in, and a run through the registry equal to the model's own call.
+#include <boost/test/unit_test.hpp>
+
+#include <set>
+
+#include "rotlie/models/experiments/dipole_field_experiment.hpp"
+#include "rotlie/runs/scenes.hpp"
+#include "rotlie/runs/user_input.hpp"
+
+using namespace rotlie;
+
+BOOST_AUTO_TEST_SUITE(scenes_test)
+
+BOOST_AUTO_TEST_CASE(every_scene_is_found_by_its_name_and_an_unknown_one_lists_them) {
+  std::set<std::string> names;
+  for (const auto& s : runs::scenes()) {
+    BOOST_TEST(&runs::scene_named(s.name) == &s);
+    BOOST_TEST(s.run != nullptr);
+    names.insert(s.name);
+  }
+  BOOST_TEST(names.size() == runs::scenes().size());
+  BOOST_TEST(names.count("free-water") == 1u);
+  BOOST_TEST(names.count("liquid-water") == 1u);
+  try {
+    runs::scene_named("moon");
+    BOOST_FAIL("an unknown scene was accepted");
+  } catch (const runs::bad_input& e) {
+    BOOST_TEST(std::string(e.what()) == "--scene must be free-water, dipole-field or liquid-water, got 'moon'");
+  }
+}
+
+BOOST_AUTO_TEST_CASE(an_option_of_another_scene_is_refused_before_anything_runs) {
+  runs::scene_request r{"free-water", "SIER2", "1", {{"--molecules", "512"}}, {}};
+  BOOST_CHECK_EXCEPTION(runs::run_scene(r), runs::bad_input, [](const runs::bad_input& e) {
+    return std::string(e.what()) == "--molecules applies to the liquid-water scene only";
+  });
+  r = {"liquid-water", "SIER2", "1", {{"--seed", "3"}}, {}};
+  BOOST_CHECK_EXCEPTION(runs::run_scene(r), runs::bad_input, [](const runs::bad_input& e) {
+    return std::string(e.what()) == "--seed does not apply to the liquid-water scene";
+  });
+  r = {"free-water", "SIER2", "1", {{"--bogus", "1"}}, {}};
+  BOOST_CHECK_THROW(runs::run_scene(r), runs::bad_input);
+}
+
+BOOST_AUTO_TEST_CASE(every_option_is_listed_once_with_each_scenes_default) {
+  const auto all = runs::all_scene_options();
+  std::set<std::string> names;
+  for (const auto& o : all) BOOST_TEST(names.insert(o.name).second, o.name << " listed twice");
+  const auto T = std::find_if(all.begin(), all.end(), [](const auto& o) { return o.name == "--T"; });
+  BOOST_REQUIRE(T != all.end());
+  BOOST_TEST(T->help.find("5 for free-water") != std::string::npos, T->help);
+  BOOST_TEST(T->help.find("100 for dipole-field") != std::string::npos, T->help);
+  BOOST_TEST(T->help.find("1 for liquid-water") != std::string::npos, T->help);
+}
+
+BOOST_AUTO_TEST_CASE(a_run_through_the_registry_equals_the_models_own_call) {
+  // dipole-field, SIER2 at 8 fs, 3 runs of 2 ps: the registry (defaults for the dipole and field)
+  // against run_dipole_field called directly with the same numbers
+  runs::scene_request r{"dipole-field", "SIER2", "8", {{"--runs", "3"}, {"--T", "2"}}, {}};
+  const auto result = runs::run_scene(r);
+  models::md_run_options o;
+  o.integrator = "SIER2";
+  o.h_fs = 8;
+  o.T_ps = 2;
+  o.runs = 3;
+  o.seed = 1;
+  const auto direct = models::run_dipole_field(models::dipole_field<double>("1.84", "2.7"), models::md_integrator_named("SIER2"), o);
+  BOOST_TEST(result.json.at("dH_over_dV_percent")[0].get<double>() == direct.dH.mean);
+  BOOST_TEST(result.json.at("dLz_over_Lz")[1].get<double>() == direct.dLz.error);
+  BOOST_TEST(result.json.at("steps").get<long>() == direct.steps);
+  BOOST_TEST(result.json.at("scene").get<std::string>() == "dipole-field");
+  BOOST_TEST(result.warnings.empty());
+  BOOST_TEST(result.text.find("dipole in a field, SIER2") == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(a_tau_that_is_not_defined_is_null_with_a_warning) {
+  // one step of 10^8 fs: δ saturates at once, no sample lies in the fitted window
+  runs::scene_request r{"free-water", "MRDL", "1e8", {{"--runs", "1"}, {"--T", "1e5"}}, {}};
+  const auto result = runs::run_scene(r);
+  BOOST_TEST(result.json.at("tau_ps").is_null());
+  BOOST_TEST(result.json.at("fitted_samples").get<int>() == 0);
+  BOOST_REQUIRE(result.warnings.size() == 1u);
+  BOOST_TEST(result.warnings[0].find("tau is not defined") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_SUITE_END()  // scenes_test
