@@ -92,8 +92,8 @@ prepared_map prepare(const map_options& o) {
   prepared_map p;
   const auto& family = runs::family_to_map(o.family);
   p.family = family.name;
-  p.method = runs::map_method_asked(family, o.exact, o.fast);  // refuses --fast for R before anything is written
   p.K = checked_grid(o.grid);
+  p.method = runs::map_method_asked(family, p.K, o.exact, o.fast);  // refuses --fast for R before anything is written
   std::string folder = o.out;
   if (folder.empty() && !o.json) folder = default_folder;
   if (o.resume && folder.empty()) throw usage_error("--resume needs --out (the folder of the map to continue)");
@@ -209,8 +209,8 @@ int run_worker(const map_options& o, process_group& group) {
   if (verdict.empty() || verdict[0] != '0') return verdict.empty() ? exit_failure : verdict[0] - '0';  // rank 0 says why
   const auto& descriptor = runs::family_to_map(o.family);
   const std::string family(descriptor.name);
-  const auto method = runs::map_method_asked(descriptor, o.exact, o.fast);
   const int K = checked_grid(o.grid);
+  const auto method = runs::map_method_asked(descriptor, K, o.exact, o.fast);
   const auto bodies = solver::asymmetric_grid(K);
   const std::vector<char> done(verdict.begin() + 1, verdict.end());
   const std::size_t n = static_cast<std::size_t>(K);

@@ -32,7 +32,8 @@ const std::vector<family>& families() {
         {"P13", "ABCBACABCBA", splitting::abc},
         {"P14", "ABCBCACBCBA", splitting::abc},
         {"P15", "ABCBCBCBCBA", splitting::abc}},
-       map_method::screened},
+       map_method::screened,
+       200},  // screened: checked at 200 random bodies of K = 200; at K = 5 and 8 it named a best that is not
       {"Q", "13-stage ABC palindromes", family_kind::two_free_parameters, splitting::abc, 13, {}},
       {"QRS", "11-stage RS palindromes", family_kind::two_free_parameters, splitting::rs, 11, {}},
   };

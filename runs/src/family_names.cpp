@@ -39,13 +39,17 @@ std::string two_parameter_name(const solver::two_parameter_entry& e) {
   return std::string(two_parameter_family(e.split).name) + ":" + e.word + ":" + e.permutation;
 }
 
-bch::map_method map_method_asked(const bch::family& f, bool exact, bool fast) {
+bch::map_method map_method_asked(const bch::family& f, int K, bool exact, bool fast) {
   if (fast && !bch::fast_checked(f)) {
     const auto checked = bch::family_names([](const bch::family& g) { return bch::fast_checked(g); }, " and ");
     throw bad_input("--fast: the fast path is checked against the exact solver for the " + checked +
                     " families only; the " + std::string(f.name) + " map uses the exact solver (drop --fast)");
   }
-  return exact ? bch::map_method::exact : f.map;
+  if (fast && K < f.fast_from_grid)
+    throw bad_input("--fast: the " + std::string(f.name) + " map's fast path is checked against the exact solver at --grid " +
+                    std::to_string(f.fast_from_grid) + " and finer only (at coarser grids it can miss the best); --grid " +
+                    std::to_string(K) + " uses the exact solver (drop --fast)");
+  return exact || K < f.fast_from_grid ? bch::map_method::exact : f.map;
 }
 
 std::string map_method_name(bch::map_method m) {

@@ -321,6 +321,8 @@ const std::vector<bad_input> cases = {
   {{"map", "--family", "N", "--grid", "4", "--out", "@DIR@/a-file"}, usage, "'@DIR@/a-file' exists and is not a folder"},
   {{"map", "--family", "N", "--grid", "4", "--out", "/proc/rotlie-no-such-folder"}, usage, "cannot create '/proc/rotlie-no-such-folder'"},
   {{"map", "--family", "N", "--grid", "4", "--out", "/dev/null/x"}, usage, "'/dev/null' is a file"},
+  // the screened P path is checked at --grid 200 only: coarser grids take the exact solver
+  {{"map", "--family", "P", "--grid", "5", "--fast", "--json"}, usage, "--fast: the P map's fast path is checked against the exact solver at --grid 200 and finer only"},
   {{"best"}, usage, "--inertia is required"},
   {{"best", "--inertia", "1,2,4"}, usage, "triangle inequality"},
   {{"best", "--inertia", "-1,1,1"}, usage, "not positive"},

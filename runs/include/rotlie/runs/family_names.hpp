@@ -25,9 +25,10 @@ const bch::family& two_parameter_family(bch::splitting split);
 /// A searched system of two free parameters as FAMILY:WORD:PERM (Q:ABACBABABCABA:ABC).
 std::string two_parameter_name(const solver::two_parameter_entry& e);
 
-/// The path a map of the family takes: its fast path unless `exact` (or the family has none).
+/// The path a map of the family at grid K takes: its fast path unless `exact`, the family has none,
+/// or K is coarser than the grids where the fast path was checked (family::fast_from_grid).
 /// Throws bad_input for `fast` where the fast path is not checked against the exact solver.
-bch::map_method map_method_asked(const bch::family& f, bool exact, bool fast);
+bch::map_method map_method_asked(const bch::family& f, int K, bool exact, bool fast);
 
 /// The name of a map path as the header of a map file says it: "exact", "fast", "screened".
 std::string map_method_name(bch::map_method m);
