@@ -1,6 +1,8 @@
 #include "rotlie/runs/md_json.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace rotlie::runs {
 namespace {
@@ -16,7 +18,71 @@ nlohmann::json run_json(const md_run_header& h, int f, long steps) {
           {"seed", h.seed}, {"scalar", h.scalar}};
 }
 
+constexpr double unstable_percent = 100;       // energy error ≥ the potential's own fluctuation
+constexpr double round_off_units = 1000;       // a fluctuation below 1000 ε is round-off's
+
+void add_flags(nlohmann::json& j, const md_verdict& v) {
+  j["unstable"] = v.unstable;
+  j["round_off_floor"] = v.round_off_floor;
+}
+
+std::string text(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
 }  // namespace
+
+std::string mean_error_text(double mean, double error) {
+  return text(mean) + " ± " + (std::isnan(error) ? std::string("unknown (one run)") : text(error));
+}
+
+md_verdict verdict_of(const models::free_water_result& r) {
+  md_verdict v;
+  double largest = 0;
+  for (double d : r.delta) largest = std::max(largest, d);
+  v.round_off_floor = largest < round_off_units * r.round_off;
+  if (v.round_off_floor)
+    v.warnings.push_back("delta stays below " + text(largest) + ", within 1000 ε of the scalar's round-off: tau measures "
+                         "round-off, not the integrator (an exact rotor has no error here; try a larger step or --scalar float128)");
+  else if (r.fitted_samples < 2)
+    v.warnings.push_back(
+        "fewer than two samples have 10 × reference error < delta <= 0.1: tau is not defined "
+        "(run longer if delta is at round-off, shorter if it has saturated)");
+  return v;
+}
+
+md_verdict verdict_of(const models::dipole_field_result& r) {
+  md_verdict v;
+  const long runs = static_cast<long>(r.dH_over_dV_percent.size()) + r.failed_runs + r.undefined_runs;
+  if (r.failed_runs > 0)
+    v.warnings.push_back(std::to_string(r.failed_runs) + " of " + std::to_string(runs) +
+                         " runs diverged (non-finite energy) and are left out of the means");
+  if (r.undefined_runs > 0)
+    v.warnings.push_back(std::to_string(r.undefined_runs) + " of " + std::to_string(runs) +
+                         " runs have no finite dH/dV (V did not fluctuate, or the energies' squares are beyond the scalar's range) "
+                         "and are left out of the means");
+  v.round_off_floor = r.turn_per_step < round_off_units;
+  if (v.round_off_floor)
+    v.warnings.push_back("one step turns the molecule by " + text(r.turn_per_step) +
+                         " ε only: the step's change is lost in round-off and dH/dV measures round-off, not the integrator "
+                         "(take a larger step or a wider --scalar)");
+  v.unstable = !v.round_off_floor && r.dH.mean >= unstable_percent;
+  if (v.unstable)
+    v.warnings.push_back("dH/dV = " + text(r.dH.mean) + " % >= 100 %: the energy error is as large as the potential's own "
+                         "fluctuation; the step is beyond the integrator's stable range");
+  return v;
+}
+
+md_verdict verdict_of(const models::liquid_water_run_result& r) {
+  md_verdict v;
+  v.unstable = r.ratio_mean >= unstable_percent;
+  if (v.unstable)
+    v.warnings.push_back("dE/dV = " + text(r.ratio_mean) + " % >= 100 %: the energy error is as large as the potential's own "
+                         "fluctuation; the step is beyond the integrator's stable range");
+  return v;
+}
 
 nlohmann::json free_water_json(const md_run_header& h, const models::free_water_result& r) {
   nlohmann::json samples = nlohmann::json::array();
@@ -28,6 +94,7 @@ nlohmann::json free_water_json(const md_run_header& h, const models::free_water_
   j["fitted_samples"] = r.fitted_samples;
   j["cpu_s_per_ps"] = r.cpu_s_per_ps;
   j["samples"] = samples;
+  add_flags(j, verdict_of(r));
   return j;
 }
 
@@ -39,23 +106,27 @@ nlohmann::json dipole_field_json(const md_run_header& h, const models::dipole_fi
   j["dH_over_dV_percent"] = pair_json(r.dH);
   j["dLz_over_Lz"] = pair_json(r.dLz);
   j["failed_runs"] = r.failed_runs;
+  j["undefined_runs"] = r.undefined_runs;
   j["cpu_s_per_ps"] = r.cpu_s_per_ps;
+  add_flags(j, verdict_of(r));
   return j;
 }
 
 nlohmann::json liquid_water_json(const models::liquid_water_run_result& r) {
-  return nlohmann::json{{"scene", "liquid-water"},
+  auto j = nlohmann::json{{"scene", "liquid-water"},
                         {"integrator", r.integrator},
                         {"h_fs", r.h_fs},
                         {"f", r.f},
                         {"runs", r.runs},
                         {"molecules", r.molecules},
-                        {"dE_over_dV_percent", {r.ratio_mean, r.ratio_error}},
+                        {"dE_over_dV_percent", {number_or_null(r.ratio_mean), number_or_null(r.ratio_error)}},
                         {"potential_kcal_per_mol", r.potential_per_molecule},
                         {"temperature_K", r.temperature},
                         {"ms_per_step", r.ms_per_step},
                         {"cpu_ms_per_step", r.cpu_ms_per_step},
                         {"momentum_drift", r.momentum_drift}};
+  add_flags(j, verdict_of(r));
+  return j;
 }
 
 }  // namespace rotlie::runs

@@ -85,4 +85,53 @@ BOOST_AUTO_TEST_CASE(a_rotor_table_solved_for_another_body_is_refused_without_an
   BOOST_TEST(r.out.empty());
 }
 
+// A run whose numbers do not mean what they say is not reported as a plain result.
+BOOST_AUTO_TEST_CASE(statistics_beyond_the_scalars_range_are_a_failure_not_zero) {
+  // a dipole of 10^100 D: the energies' squares overflow; this once printed dH/dV = 0 ± 0 % with exit 0
+  const auto r = run("md --scene dipole-field --integrator MRDL --h 8 --dipole 1e100 --runs 3 --T 1");
+  BOOST_TEST(r.status == 1);
+  BOOST_TEST(r.err.find("no run has a finite dH/dV") != std::string::npos, r.err);
+  BOOST_TEST(r.out.find("0 ± 0") == std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_step_beyond_the_stable_range_is_flagged_and_warned) {
+  const auto r = run("md --scene dipole-field --integrator MRDL --h 1e8 --runs 3 --T 1e6 --json");
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  const auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j.at("dH_over_dV_percent")[0].get<double>() > 100);
+  BOOST_TEST(j.at("unstable").get<bool>());
+  BOOST_TEST(!j.at("round_off_floor").get<bool>());
+  BOOST_TEST(r.err.find("beyond the integrator's stable range") != std::string::npos, r.err);
+  // a working step is neither
+  const auto good = md_json("--scene dipole-field --integrator SIER4 --h 16.8 --runs 3 --T 5");
+  BOOST_TEST(!good.at("unstable").get<bool>());
+  BOOST_TEST(!good.at("round_off_floor").get<bool>());
+}
+
+BOOST_AUTO_TEST_CASE(a_step_lost_in_round_off_is_flagged_and_warned) {
+  // 10^-50 fs: each step turns the molecule by far less than ε (this once printed 23,671 % as a result)
+  const auto r = run("md --scene dipole-field --integrator SIER4 --h 1e-50 --runs 2 --T 1e-45 --json");
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  const auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j.at("round_off_floor").get<bool>());
+  BOOST_TEST(!j.at("unstable").get<bool>());
+  BOOST_TEST(r.err.find("measures round-off") != std::string::npos, r.err);
+  // free water with the exact rotor: no integrator error at all, δ is the scalar's round-off
+  const auto w = run("md --scene free-water --integrator SIER2 --h 8 --runs 2 --T 1 --json");
+  BOOST_TEST_REQUIRE(w.status == 0, w.err);
+  BOOST_TEST(nlohmann::json::parse(w.out).at("round_off_floor").get<bool>());
+  BOOST_TEST(w.err.find("tau measures round-off") != std::string::npos, w.err);
+}
+
+BOOST_AUTO_TEST_CASE(the_error_of_one_run_is_unknown_not_zero) {
+  const auto j = md_json("--scene dipole-field --integrator SIER2 --h 8 --runs 1 --T 1");
+  BOOST_TEST(j.at("dH_over_dV_percent")[1].is_null());
+  BOOST_TEST(j.at("dLz_over_Lz")[1].is_null());
+  const auto text = run("md --scene dipole-field --integrator SIER2 --h 8 --runs 1 --T 1");
+  BOOST_TEST(text.out.find("± unknown (one run)") != std::string::npos, text.out);
+  BOOST_TEST(text.out.find("± 0 ") == std::string::npos, text.out);
+  const auto w = md_json("--scene free-water --integrator MRDL --h 8 --runs 1 --T 1");
+  BOOST_TEST(w.at("tau_error_ps").is_null());
+}
+
 BOOST_AUTO_TEST_SUITE_END()  // md_cli_test

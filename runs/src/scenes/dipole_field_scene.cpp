@@ -19,18 +19,20 @@ scene_result run_in(const dipole_run& e) {
   const auto result = models::run_dipole_field(models::dipole_field<T>(e.dipole, e.field), e.integrator, e.run);
   if (result.failed_runs == e.run.runs)
     throw std::runtime_error("every run diverged (non-finite energy): the step is beyond the integrator's stability limit");
+  if (result.dH_over_dV_percent.empty())
+    throw std::runtime_error("no run has a finite dH/dV (" + std::to_string(result.failed_runs) + " diverged, " +
+                             std::to_string(result.undefined_runs) +
+                             " with V not fluctuating or the energies' squares beyond the scalar's range)");
   scene_result out;
   out.json = dipole_field_json(e.header(), result, std::stod(e.dipole), std::stod(e.field));
   std::ostringstream text;
   text << "dipole in a field, " << e.integrator.name << " (f = " << result.f << "), h = " << e.run.h_fs << " fs (h/f = "
        << e.run.h_fs / result.f << " fs), " << e.run.runs << " runs of " << result.steps << " steps (" << e.run.T_ps
-       << " ps), seed " << e.run.seed << ", " << e.scalar << "\n  dH/dV = " << result.dH.mean << " ± " << result.dH.error
-       << " %\n  dLz/<Lz> = " << result.dLz.mean << " ± " << result.dLz.error << "\n  CPU " << result.cpu_s_per_ps
+       << " ps), seed " << e.run.seed << ", " << e.scalar << "\n  dH/dV = " << mean_error_text(result.dH.mean, result.dH.error)
+       << " %\n  dLz/<Lz> = " << mean_error_text(result.dLz.mean, result.dLz.error) << "\n  CPU " << result.cpu_s_per_ps
        << " s per simulated ps\n";
   out.text = text.str();
-  if (result.failed_runs > 0)
-    out.warnings.push_back(std::to_string(result.failed_runs) + " of " + std::to_string(e.run.runs) +
-                           " runs diverged (non-finite energy) and are left out of the means");
+  out.warnings = verdict_of(result).warnings;
   return out;
 }
 

@@ -20,14 +20,11 @@ scene_result run_in(const ensemble_run& e) {
   std::ostringstream text;
   text << "free water, " << e.integrator.name << " (f = " << result.f << "), h = " << e.run.h_fs << " fs, " << e.run.runs
        << " runs of " << result.steps << " steps (" << e.run.T_ps << " ps), seed " << e.run.seed << ", " << e.scalar
-       << "\n  tau = " << result.tau_ps << " ± " << result.tau_error_ps << " ps (delta = t/(10 tau) fitted over "
+       << "\n  tau = " << mean_error_text(result.tau_ps, result.tau_error_ps) << " ps (delta = t/(10 tau) fitted over "
        << result.fitted_samples << " of " << result.t_ps.size() << " samples)\n  delta(T) = " << result.delta.back()
        << " (exact reference: " << result.reference_delta.back() << ")\n  CPU " << result.cpu_s_per_ps << " s per simulated ps\n";
   out.text = text.str();
-  if (result.fitted_samples < 2)
-    out.warnings.push_back(
-        "fewer than two samples have 10 × reference error < delta <= 0.1: tau is not defined "
-        "(run longer if delta is at round-off, shorter if it has saturated)");
+  out.warnings = verdict_of(result).warnings;
   return out;
 }
 

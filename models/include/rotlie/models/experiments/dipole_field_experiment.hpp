@@ -10,7 +10,9 @@
 //
 // Fluctuations of 10⁻¹³ relative are measured without cancellation: every quantity is accumulated
 // as its difference from its value at the start (exact for nearby numbers), in the run's scalar.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "rotlie/models/experiments/md_experiment.hpp"
@@ -26,6 +28,12 @@ struct dipole_field_result : md_ensemble_cost {
   std::vector<double> dH_over_dV_percent, dLz_over_Lz;  ///< per finished run
   mean_error dH, dLz;                                   ///< over the ensemble
   long failed_runs = 0;                                 ///< runs that went non-finite (stopped there)
+  /// runs that stayed finite but whose ΔH/ΔV or ΔL_z/⟨L_z⟩ is not a number: V did not fluctuate
+  /// (ΔV = 0), or the squares of the fluctuations are beyond the scalar's range; left out of the means
+  long undefined_runs = 0;
+  /// min over the runs of |ω|·h/ε at the start: the angle one step turns the molecule, in units of
+  /// the scalar's round-off (below about 1000 the step's change is lost in round-off)
+  double turn_per_step = std::numeric_limits<double>::infinity();
 };
 
 namespace detail {
@@ -35,6 +43,8 @@ T shifted_rms(const T& sum, const T& sum2, long n) {
   using std::sqrt;
   const T m = sum / T(n);
   const T v = sum2 / T(n) - m * m;
+  using std::isnan;
+  if (isnan(v)) return v;  // squares beyond the scalar's range: not a number, never 0
   return v > 0 ? sqrt(v) : T(0);
 }
 }  // namespace detail
@@ -49,6 +59,13 @@ dipole_field_result run_dipole_field(const dipole_field<T>& scene, const md_inte
       sys.ensure_forces(x);  // V at the start (the first kick would evaluate it anyway)
       auto lz = [](const rigid_bodies_state<T>& s) { return lab_spin(s.bodies[0])[2]; };
       const T H0 = sys.kinetic_energy(x) + x.potential, V0 = x.potential, L0 = lz(x);
+      {
+        using std::sqrt;
+        const auto& G = x.bodies[0].rot.G;
+        T w2 = 0;
+        for (std::size_t i = 0; i < 3; ++i) w2 += (G[i] / scene.moments[i]) * (G[i] / scene.moments[i]);
+        r.turn_per_step = std::min(r.turn_per_step, static_cast<double>(sqrt(w2) * T(o.h_fs) / std::numeric_limits<T>::epsilon()));
+      }
       T sH = 0, sH2 = 0, sV = 0, sV2 = 0, sL = 0, sL2 = 0, lsum = 0;
       long n = 0;
       bool finite = true;
@@ -68,8 +85,14 @@ dipole_field_result run_dipole_field(const dipole_field<T>& scene, const md_inte
         const T dH = detail::shifted_rms(sH, sH2, n), dV = detail::shifted_rms(sV, sV2, n);
         const T dL = detail::shifted_rms(sL, sL2, n);
         using std::abs;
-        r.dH_over_dV_percent.push_back(static_cast<double>(100 * dH / dV));
-        r.dLz_over_Lz.push_back(static_cast<double>(dL / abs(lsum / T(n))));
+        const double ratio = static_cast<double>(100 * dH / dV), lz = static_cast<double>(dL / abs(lsum / T(n)));
+        if (!std::isfinite(ratio) || !std::isfinite(lz)) {
+          ++r.undefined_runs;
+        } else {
+          r.dH_over_dV_percent.push_back(ratio);
+          r.dLz_over_Lz.push_back(lz);
+
+        }
       }
       return true;  // a failed run is counted, and the ensemble goes on
     });

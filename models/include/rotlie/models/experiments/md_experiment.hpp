@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,7 +35,8 @@ inline long md_steps(const md_run_options& o) {
   return std::max(1L, static_cast<long>(n));
 }
 
-/// Mean and standard error of the mean (sample standard deviation / √n; 0 for one value).
+/// Mean and standard error of the mean (sample standard deviation / √n); the error of one value is
+/// unknown (NaN), not 0.
 struct mean_error {
   double mean = 0, error = 0;
 };
@@ -44,7 +46,7 @@ inline mean_error ensemble_mean(const std::vector<double>& x) {
   if (x.empty()) return {std::nan(""), std::nan("")};
   for (double v : x) r.mean += v;
   r.mean /= static_cast<double>(x.size());
-  if (x.size() < 2) return r;
+  if (x.size() < 2) return {r.mean, std::nan("")};
   double ss = 0;
   for (double v : x) ss += (v - r.mean) * (v - r.mean);
   r.error = std::sqrt(ss / static_cast<double>(x.size() - 1) / static_cast<double>(x.size()));
@@ -69,6 +71,7 @@ struct md_ensemble_cost {
   int f = 0;                ///< force evaluations per step (the h/f of vZS)
   long steps = 0;           ///< per run
   double cpu_s_per_ps = 0;  ///< stepping only
+  double round_off = 0;     ///< the unit round-off ε of the scalar the runs used
 };
 
 /// The ensemble loop of the experiments: f and steps into `cost`, then each run from
@@ -80,6 +83,7 @@ void run_ensemble(const Scene& scene, const md_run_options& o, const Method& met
   using T = typename Method::scalar;
   cost.f = method.cost();
   cost.steps = steps;
+  cost.round_off = static_cast<double>(std::numeric_limits<T>::epsilon());
   const T h = T(o.h_fs);
   double cpu = 0;
   auto step = [&](rigid_bodies_state<T>& x, auto&... observers) {

@@ -48,7 +48,7 @@ struct liquid_water_run_result {
   long molecules = 0;
   double box = 0;
   std::vector<double> ratio_percent;        ///< ΔE/ΔV per run, %
-  double ratio_mean = 0, ratio_error = 0;   ///< mean and its standard error, %
+  double ratio_mean = 0, ratio_error = 0;   ///< mean and its standard error, % (NaN for one run: unknown)
   double potential_per_molecule = 0;        ///< ⟨V⟩/N over the runs, kcal/mol
   double temperature = 0;                   ///< ⟨T⟩ over the runs, K
   double ms_per_step = 0;                   ///< wall time
@@ -177,9 +177,18 @@ inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& 
         r.momentum_drift = std::max(r.momentum_drift, std::sqrt((P[0] - P0[0]) * (P[0] - P0[0]) + (P[1] - P0[1]) * (P[1] - P0[1]) + (P[2] - P0[2]) * (P[2] - P0[2])));
       }
       const double n = static_cast<double>(steps);
-      const double dE = std::sqrt(std::max(0.0, e_sq / n - (e_sum / n) * (e_sum / n)));
-      const double dV = std::sqrt(std::max(0.0, v_sq / n - (v_run / n) * (v_run / n)));
-      r.ratio_percent.push_back(dV > 0 ? 100 * dE / dV : 0.0);
+      // rms from the sums; a variance that is not a number (squares beyond double) stays one
+      auto rms = [n](double sq, double sum) {
+        const double v = sq / n - (sum / n) * (sum / n);
+        return std::isnan(v) ? v : std::sqrt(std::max(0.0, v));
+      };
+      const double dE = rms(e_sq, e_sum), dV = rms(v_sq, v_run);
+      const double ratio = 100 * dE / dV;
+      if (!std::isfinite(ratio))
+        throw std::runtime_error("run " + std::to_string(run + 1) + ": ΔE/ΔV is not a number (" +
+                                 (dV == 0 ? std::string("the potential did not fluctuate") : "the energies' squares are beyond double's range") +
+                                 "): the state is not one the scene can measure");
+      r.ratio_percent.push_back(ratio);
       if (progress) progress("run " + std::to_string(run + 1) + "/" + std::to_string(o.runs) + ": ΔE/ΔV = " + std::to_string(100 * dE / dV) + " %");
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -197,7 +206,7 @@ inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& 
   double var = 0;
   for (double x : r.ratio_percent) var += (x - mean) * (x - mean);
   r.ratio_mean = mean;
-  r.ratio_error = r.runs > 1 ? std::sqrt(var / (r.runs - 1) / r.runs) : 0.0;
+  r.ratio_error = r.runs > 1 ? std::sqrt(var / (r.runs - 1) / r.runs) : std::nan("");  // one run: unknown
   return r;
 }
 
