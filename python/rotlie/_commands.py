@@ -30,13 +30,16 @@ def _grid_index(value, grid: int, what: str) -> int:
     return int(x)
 
 
-def map_line(family: str, s, t, grid: int) -> dict:
-    """One body line of ``rotlie map --family FAMILY --grid GRID`` (LV section 5), by the exact solver:
-    the body at triangle coordinates ``s``, ``t`` (multiples of 1/grid, e.g. ``Fraction(3, 20)``)."""
+def map_line(family: str, s, t, grid: int, exact: bool = False) -> dict:
+    """One body line of ``rotlie map --family FAMILY --grid GRID`` (LV section 5): the body at triangle
+    coordinates ``s``, ``t`` (multiples of 1/grid, e.g. ``Fraction(3, 20)``), by the path the map takes
+    for the family (its row computed as the map does, so the line is the map file's), or by the exact
+    solver for that body alone when ``exact`` (``rotlie map --exact``)."""
     grid = operator.index(grid)
     if grid < 1:
         raise ValueError(f"--grid must be an integer in [1, 2000], got '{grid}'")
-    return json.loads(_rotlie.map_line(str(family), _grid_index(s, grid, "s"), _grid_index(t, grid, "t"), grid))
+    return json.loads(_rotlie.map_line(str(family), _grid_index(s, grid, "s"), _grid_index(t, grid, "t"), grid,
+                                          bool(exact)))
 
 
 def md(scene: str, integrator: str, h, T=None, **options) -> dict:

@@ -31,7 +31,8 @@ namespace py = pybind11;
 using rows = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 constexpr long max_steps = 100'000'000;  // per body, as `rotlie integrate` (T/h)
-constexpr long poll_every = 4096;        // steps or evaluations between looks at the cancellation flag
+constexpr long poll_every = 4096;
+constexpr double max_momentum = 1e150, max_momentum_inverse = 1e-150;  // runs::max_decimal_exponent        // steps or evaluations between looks at the cancellation flag
 
 /// Calls f with a value of the scalar named.
 template <class F>
@@ -68,6 +69,14 @@ state_rows checked_rows(const rows& G0, const rows& Q0) {
   state_rows r{G0.data(), Q0.data(), G0.shape(0)};
   for (py::ssize_t i = 0; i < 3 * r.n; ++i)
     if (!std::isfinite(r.G[i])) throw runs::bad_input("G0 must be finite");
+  // as --G0 (a body at rest allowed): no energy or rate of the run leaves double's range
+  for (py::ssize_t row = 0; row < r.n; ++row) {
+    const double* g = r.G + 3 * row;
+    const double length = std::hypot(g[0], g[1], g[2]);
+    if (length != 0 && !(length >= max_momentum_inverse && length <= max_momentum))
+      throw runs::bad_input("G0: |G0| = " + std::to_string(length) + " (row " + std::to_string(row) +
+                            ") is outside the range 1e-150 … 1e150");
+  }
   for (py::ssize_t i = 0; i < 9 * r.n; ++i)
     if (!std::isfinite(r.Q[i])) throw runs::bad_input("Q0 must be finite");
   return r;

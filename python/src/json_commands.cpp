@@ -44,17 +44,27 @@ std::string bch_series(const std::string& name, long degree) {
   return *out;
 }
 
-// The map line of the body at grid indices (i, j) of the grid K, by the exact solver.
-std::string map_line(const std::string& family, long i, long j, long K) {
+// The map line of the body at grid indices (i, j) of the grid K: by the path `rotlie map` takes for
+// the family (its row computed as the map computes it, so that the line is the map file's), or by the
+// exact solver for that body alone.
+std::string map_line(const std::string& family, long i, long j, long K, bool exact) {
   auto out = std::make_shared<std::string>();
   run_symbolic([=] {
     const auto& f = runs::family_to_map(family);
     const long k = runs::integer_in_range(std::to_string(K), "--grid", 1, solver::max_grid_divisions);
     runs::integer_in_range(std::to_string(i), "s·grid", 0, k);
     runs::integer_in_range(std::to_string(j), "t·grid", 0, k);
-    const auto g = solver::grid_point(static_cast<int>(k), static_cast<int>(i), static_cast<int>(j));
-    if (g.symmetric) throw runs::bad_input("the body at s, t is a symmetric top, which the maps leave out");
-    const auto lines = runs::map_row_lines({g}, 0, 1, {0}, std::string(f.name), bch::map_method::exact);
+    if (solver::grid_point(static_cast<int>(k), static_cast<int>(i), static_cast<int>(j)).symmetric)
+      throw runs::bad_input("the body at s, t is a symmetric top, which the maps leave out");
+    std::vector<solver::grid_body> row;  // the map's bodies with this s, in the map's order
+    for (const auto& g : solver::asymmetric_grid(static_cast<int>(k)))
+      if (g.i == i) row.push_back(g);
+    std::size_t at = 0;
+    while (row[at].j != j) ++at;
+    std::vector<char> done(row.size(), 1);  // the row is carried whole; only this body's line is written
+    done[at] = 0;
+    const auto lines = runs::map_row_lines(row, 0, row.size(), done, std::string(f.name),
+                                           runs::map_method_asked(f, exact, false));
     if (lines.size() != 1) throw std::runtime_error("the map row gave no line for the body");
     *out = lines.front().second;
   });
@@ -67,7 +77,7 @@ void bind_json_commands(pybind11::module_& m) {
   namespace py = pybind11;
   m.def("best", &best, py::arg("body"), py::arg("analytic_only"));
   m.def("bch", &bch_series, py::arg("series"), py::arg("degree"));
-  m.def("map_line", &map_line, py::arg("family"), py::arg("i"), py::arg("j"), py::arg("grid"));
+  m.def("map_line", &map_line, py::arg("family"), py::arg("i"), py::arg("j"), py::arg("grid"), py::arg("exact"));
 }
 
 }  // namespace rotlie::python

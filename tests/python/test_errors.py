@@ -77,9 +77,13 @@ def test_a_table_for_another_body_is_refused_unless_forced():
     rotlie.integrate(n2, scaled, [1, 1, 1], h=0.1, steps=1)
 
 
-def test_a_diverging_run_is_a_runtime_error():
-    with pytest.raises(RuntimeError, match="diverged"):
-        rotlie.integrate("ABCBA2", WATER, [1e100, 1e100, 1e100], h=1e300, steps=50)
+def test_momenta_out_of_range_are_refused_as_by_the_command_line():
+    with pytest.raises(ValueError, match="outside the range"):
+        rotlie.integrate("ABCBA2", WATER, [[1, 1, 1], [1e308, 1e308, 1e308]], h=1, steps=3)
+    with pytest.raises(ValueError, match="outside the range"):
+        rotlie.exact_flow(WATER, [1e-200, 0, 0], t=1)
+    G, Q = rotlie.integrate("ABCBA2", WATER, [0, 0, 0], h=1, steps=3)  # a body at rest stays so
+    assert G.tolist() == [0, 0, 0] and Q.tolist() == np.eye(3).tolist()
 
 
 def test_nothing_is_printed(capfd):
