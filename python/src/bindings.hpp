@@ -22,5 +22,7 @@ void bind_bodies(pybind11::module_& m);
 void bind_schemes(pybind11::module_& m);
 void bind_flows(pybind11::module_& m);
 void bind_json_commands(pybind11::module_& m);
+void bind_md(pybind11::module_& m);
+void bind_remainder(pybind11::module_& m);
 
 }  // namespace rotlie::python

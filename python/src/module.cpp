@@ -8,4 +8,6 @@ PYBIND11_MODULE(_rotlie, m) {
   rotlie::python::bind_schemes(m);
   rotlie::python::bind_flows(m);
   rotlie::python::bind_json_commands(m);
+  rotlie::python::bind_md(m);
+  rotlie::python::bind_remainder(m);
 }
