@@ -1,16 +1,15 @@
 # Type stub of the rotlie package (the extension rotlie._rotlie and the Python layer).
 from fractions import Fraction
 from os import PathLike
-from typing import Any, Literal, Sequence, overload
+from typing import Any, Literal, Sequence, TypeAlias, overload
 
 import numpy as np
 import numpy.typing as npt
 
 __version__: str
-Number = str | Fraction | int | float
-BodyLike = "Body" | str | Sequence[Number]
-Scalar = Literal["double", "long-double", "float128"]
-ArrayLike = npt.ArrayLike
+Number: TypeAlias = str | Fraction | int | float
+Scalar: TypeAlias = Literal["double", "long-double", "float128"]
+ArrayLike: TypeAlias = npt.ArrayLike
 
 class Body:
     def __init__(self, I1: Number, I2: Number, I3: Number) -> None: ...
@@ -20,6 +19,8 @@ class Body:
     def moments(self) -> tuple[Fraction, Fraction, Fraction]: ...
     @property
     def text(self) -> str: ...
+
+BodyLike: TypeAlias = Body | str | Sequence[Number]
 
 class Scheme:
     @property
@@ -69,12 +70,15 @@ def order(scheme: Scheme | str, body: BodyLike, G0: Sequence[Number] | str = (1,
           max_level: int = 10, scalar: Scalar = "double", force: bool = False) -> dict[str, Any]: ...
 
 class Remainder:
+    json: dict[str, Any]
+    free: list[str]
     terms: dict[int, dict[tuple[int, int, int], str]]
     def latex(self) -> str: ...
-    def sympy(self) -> Any: ...
+    def sympy(self) -> dict[int, dict[tuple[int, int, int], Any]]: ...
+    def hamiltonian(self, order: int) -> Any: ...
 
 def remainder(scheme_or_word: Scheme | str, order: int = 5, body: BodyLike | None = None, perm: str | None = None,
-              coeffs: dict[str, Number] | None = None) -> Remainder: ...
+              coeffs: dict[str, Number] | None = None, split: str | None = None) -> Remainder: ...
 def best(body: BodyLike, analytic_only: bool = False) -> dict[str, Any]: ...
 def map_line(family: str, s: Number, t: Number, grid: int, exact: bool = False) -> dict[str, Any]: ...
 def bch(series: str, degree: int) -> list[tuple[str, Fraction]]: ...

@@ -66,3 +66,14 @@ def test_table_round_trip(tmp_path):
 def test_solved_name_needs_a_body():
     with pytest.raises(ValueError, match="body"):
         rotlie.scheme("N2:BAC:2")
+
+
+def test_the_stub_declares_every_public_name():
+    import ast
+    import pathlib
+
+    stub = pathlib.Path(rotlie.__file__).with_name("__init__.pyi")
+    declared = {n.name for n in ast.parse(stub.read_text()).body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
+    assert set(rotlie.__all__) <= declared
+    for name in rotlie.__all__:
+        assert getattr(rotlie, name).__doc__, name
