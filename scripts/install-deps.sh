@@ -22,7 +22,7 @@ symbolic=(
 python=(                         # python/: the rotlie Python package (Debian's /usr/bin/python3, 3.11)
   python3-dev pybind11-dev python3-pybind11 # the extension (find_package(Python), find_package(pybind11 CONFIG))
   python3-numpy                  # arrays in and out
-  python3-setuptools python3-venv python3-pip python3-wheel # pip install . in a venv, offline
+  python3-setuptools python3-venv python3-wheel # pip install . in a venv, offline (--no-build-isolation)
   python3-pytest                 # tests/python
   python3-matplotlib             # examples/python (Agg backend)
   python3-sympy                  # optional: remainder terms as SymPy expressions
