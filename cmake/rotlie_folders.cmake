@@ -2,7 +2,7 @@
 # (tests/): the symbolic side and what stands on it only when ROTLIE_WITH_SYMBOLIC is on.
 set(ROTLIE_FOLDERS_BELOW lie bch solver)        # the symbolic side (GiNaC, CLN)
 set(ROTLIE_FOLDERS_NUMERIC schemes models)
-set(ROTLIE_FOLDERS_ABOVE runs reports apps)     # on both sides: the library floor and its front ends
+set(ROTLIE_FOLDERS_ABOVE runs reports apps python)  # on both sides: the library floor and its front ends (python: the module)
 
 # add_subdirectory for every folder of this build, in order.
 function(rotlie_add_folders)

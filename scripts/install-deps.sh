@@ -19,11 +19,19 @@ symbolic=(
   libbenchmark-dev               # bench/
   gnuplot-nox                    # report figures
 )
+python=(                         # python/: the rotlie Python package (Debian's /usr/bin/python3, 3.11)
+  python3-dev pybind11-dev python3-pybind11 # the extension (find_package(Python), find_package(pybind11 CONFIG))
+  python3-numpy                  # arrays in and out
+  python3-setuptools python3-venv python3-wheel # pip install . in a venv, offline (--no-build-isolation)
+  python3-pytest                 # tests/python
+  python3-matplotlib             # examples/python (Agg backend)
+  python3-sympy                  # optional: remainder terms as SymPy expressions
+)
 
 case "${1:-}" in
-  "") packages=("${numeric[@]}" "${symbolic[@]}") ;;
+  "") packages=("${numeric[@]}" "${symbolic[@]}" "${python[@]}") ;;
   --numeric-only) packages=("${numeric[@]}") ;;
-  --fuzz) packages=("${numeric[@]}" "${symbolic[@]}" clang libclang-rt-14-dev) ;;  # fuzz/: libFuzzer
+  --fuzz) packages=("${numeric[@]}" "${symbolic[@]}" "${python[@]}" clang libclang-rt-14-dev) ;;  # fuzz/: libFuzzer
   *) echo "install-deps: error: unknown option '$1' (--numeric-only or --fuzz)" >&2; exit 2 ;;
 esac
 

@@ -1,0 +1,57 @@
+"""best, map_line, bch and md: the command line's JSON as Python objects."""
+from __future__ import annotations
+
+import json
+import operator
+from fractions import Fraction
+
+from . import _rotlie
+from ._bodies import body_text, number_text
+
+
+def best(body, analytic_only: bool = False) -> dict:
+    """The best integrator for ``body`` (LV sections 4–5), as ``rotlie best --json``: the best N, R and P
+    by ||H_R5||, the reference, the gains at equal cost and, unless ``analytic_only``, the measured
+    column (the LV section 4.1 protocol run for the candidates). A symmetric top raises ValueError."""
+    return json.loads(_rotlie.best(body_text(body), bool(analytic_only)))
+
+
+def bch(series: str, degree: int) -> list[tuple[str, Fraction]]:
+    """A BCH-type series in the free Lie algebra (XY, XYX, SYM, XYZ) to ``degree``, as ``rotlie bch``:
+    every Lyndon word of the basis with its exact coefficient."""
+    r = json.loads(_rotlie.bch(str(series), operator.index(degree)))
+    return [(t["word"], Fraction(t["coefficient"])) for t in r["terms"]]
+
+
+def _grid_index(value, grid: int, what: str) -> int:
+    x = Fraction(number_text(value, what)) * grid
+    if x.denominator != 1:
+        raise ValueError(f"{what} = {value} is not a multiple of 1/{grid} (a point of the grid)")
+    return int(x)
+
+
+def map_line(family: str, s, t, grid: int, exact: bool = False) -> dict:
+    """One body line of ``rotlie map --family FAMILY --grid GRID`` (LV section 5): the body at triangle
+    coordinates ``s``, ``t`` (multiples of 1/grid, e.g. ``Fraction(3, 20)``), by the path the map takes
+    for the family (its row computed as the map does, so the line is the map file's), or by the exact
+    solver for that body alone when ``exact`` (``rotlie map --exact``)."""
+    grid = operator.index(grid)
+    if grid < 1:
+        raise ValueError(f"--grid must be an integer in [1, 2000], got '{grid}'")
+    return json.loads(_rotlie.map_line(str(family), _grid_index(s, grid, "s"), _grid_index(t, grid, "t"), grid,
+                                          bool(exact)))
+
+
+def md(scene: str, integrator: str, h, T=None, **options) -> dict:
+    """A van Zon & Schofield scene (``free-water`` or ``dipole-field``) as ``rotlie md --json``.
+
+    ``h`` in fs, ``T`` in ps (the scene's default when None); options: ``runs``, ``seed``, ``scalar``
+    (double, long-double, float128), ``dipole`` (D) and ``field`` (V/Å) for the dipole scene."""
+    known = {"runs", "seed", "scalar", "dipole", "field"}
+    unknown = set(options) - known
+    if unknown:
+        raise TypeError(f"md() got unknown options {sorted(unknown)} (known: {sorted(known)})")
+    text = lambda key, default: default if options.get(key) is None else number_text(options[key], "--" + key)
+    return json.loads(_rotlie.md(str(scene), str(integrator), number_text(h, "--h"),
+                                 "" if T is None else number_text(T, "--T"), text("runs", ""), text("seed", "1"),
+                                 str(options.get("scalar", "double")), text("dipole", "1.84"), text("field", "2.7")))

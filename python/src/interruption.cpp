@@ -1,0 +1,116 @@
+#include "interruption.hpp"
+
+#include <pybind11/pybind11.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdlib>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+namespace rotlie::python {
+namespace {
+
+namespace py = pybind11;
+using namespace std::chrono_literals;
+
+constexpr auto poll_interval = 50ms;  // the longest a Ctrl-C waits to be seen
+
+// One finished-or-not flag with the work's exception, shared by the worker and the waiting caller.
+struct completion {
+  std::mutex m;
+  std::condition_variable cv;
+  bool done = false;
+  std::exception_ptr error;
+
+  void finish(std::exception_ptr e) {
+    std::lock_guard lock(m);
+    done = true;
+    error = std::move(e);
+    cv.notify_all();
+  }
+  bool wait_for(std::chrono::milliseconds d) {
+    std::unique_lock lock(m);
+    return cv.wait_for(lock, d, [this] { return done; });
+  }
+};
+
+// True when a Python signal handler raised (the Python error is then set). Takes the GIL.
+bool interrupted() {
+  py::gil_scoped_acquire gil;
+  return PyErr_CheckSignals() != 0;
+}
+
+// Every symbolic computation holds this while it runs, an abandoned one too.
+std::mutex& symbolic_mutex() {
+  static auto* m = new std::mutex;  // never destroyed: an abandoned worker may still hold it at exit
+  return *m;
+}
+
+// At exit an abandoned symbolic computation must not meet the libraries' static destructors: wait
+// for it to end (the process exits once it has).
+void wait_for_abandoned_work() { std::lock_guard lock(symbolic_mutex()); }
+
+}  // namespace
+
+void run_cancellable(const std::function<void(const cancellation&)>& work) {
+  cancellation cancel;
+  auto state = std::make_shared<completion>();
+  bool was_interrupted = false;
+  {
+    py::gil_scoped_release nogil;
+    std::thread worker([&work, &cancel, state] {
+      try {
+        work(cancel);
+        state->finish(nullptr);
+      } catch (...) {
+        state->finish(std::current_exception());
+      }
+    });
+    while (!state->wait_for(poll_interval)) {
+      if (interrupted()) {
+        was_interrupted = true;
+        cancel.request();
+        break;
+      }
+    }
+    worker.join();  // a cancelled loop stops within one slice of its work
+  }
+  if (was_interrupted) throw py::error_already_set();
+  if (state->error) std::rethrow_exception(state->error);
+}
+
+void run_symbolic(std::function<void()> work) {
+  static const bool registered = [] { return std::atexit(wait_for_abandoned_work) == 0; }();
+  (void)registered;
+  auto state = std::make_shared<completion>();
+  bool was_interrupted = false;
+  {
+    py::gil_scoped_release nogil;
+    std::thread worker([work = std::move(work), state] {
+      std::lock_guard lock(symbolic_mutex());
+      try {
+        work();
+        state->finish(nullptr);
+      } catch (...) {
+        state->finish(std::current_exception());
+      }
+    });
+    while (!state->wait_for(poll_interval)) {
+      if (interrupted()) {
+        was_interrupted = true;
+        break;
+      }
+    }
+    if (was_interrupted)
+      worker.detach();
+    else
+      worker.join();
+  }
+  if (was_interrupted) throw py::error_already_set();
+  if (state->error) std::rethrow_exception(state->error);
+}
+
+}  // namespace rotlie::python

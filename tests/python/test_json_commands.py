@@ -1,0 +1,104 @@
+"""best, bch and map_line: the command line's JSON as Python objects, the same numbers."""
+import json
+from fractions import Fraction
+
+import pytest
+
+import rotlie
+
+from conftest import cli
+
+WATER = rotlie.Body.named("water")
+
+
+def test_bch_as_the_command_line_and_the_literature():
+    terms = rotlie.bch("XY", 5)
+    expected = cli("bch", "--series", "XY", "--degree", "5", "--json")["terms"]
+    assert terms == [(t["word"], Fraction(t["coefficient"])) for t in expected]
+    c = dict(terms)
+    # log(e^X e^Y) = X + Y + [X,Y]/2 + [X,[X,Y]]/12 + [[X,Y],Y]/12 + … (Lyndon basis, standard bracketing)
+    assert (c["A"], c["B"], c["AB"], c["AAB"], c["ABB"]) == (1, 1, Fraction(1, 2), Fraction(1, 12), Fraction(1, 12))
+    with pytest.raises(ValueError):
+        rotlie.bch("XQ", 3)
+    with pytest.raises(ValueError):
+        rotlie.bch("XY", 0)
+
+
+def test_best_as_the_command_line():
+    r = rotlie.best(WATER, analytic_only=True)
+    e = cli("best", "--inertia", "water", "--analytic-only", "--json")
+    timing = {"cpu_seconds", "seconds"}
+    assert {k: v for k, v in r.items() if k not in timing} == {k: v for k, v in e.items() if k not in timing}
+    assert r["N"]["best"] == "N2:BAC:2"  # LV section 4.3: the best N integrator for water
+    with pytest.raises(ValueError):
+        rotlie.best("1,1,1")  # a symmetric top is outside the maps
+
+
+def test_map_line_as_the_command_line(tmp_path):
+    cli("map", "--family", "N", "--grid", "4", "--out", str(tmp_path))
+    lines = [json.loads(line) for line in (tmp_path / "map-N.jsonl").read_text().splitlines()[1:]]
+    for s, t in [(Fraction(1, 4), Fraction(1, 2)), (Fraction(3, 4), Fraction(0))]:
+        expected = next(line for line in lines if line["s"] == str(s) and line["t"] == str(t))
+        assert rotlie.map_line("N", s, t, 4) == expected
+    with pytest.raises(ValueError):
+        rotlie.map_line("N", Fraction(1, 3), 0, 4)  # not a grid point
+    with pytest.raises(ValueError):
+        rotlie.map_line("Z", 0, 0, 4)
+
+
+def test_map_line_by_the_exact_solver_agrees():
+    fast = rotlie.map_line("N", Fraction(1, 4), Fraction(1, 2), 4)
+    exact = rotlie.map_line("N", Fraction(1, 4), Fraction(1, 2), 4, exact=True)
+    assert exact["best"] == fast["best"] and exact["real_solutions"] == fast["real_solutions"]
+    assert abs(exact["remainder"] - fast["remainder"]) <= 1e-12 * fast["remainder"]
+
+
+def without_cpu(d):
+    return {k: v for k, v in d.items() if k != "cpu_s_per_ps"}
+
+
+def test_md_as_the_command_line():
+    r = rotlie.md("free-water", "SIER2/N2:BAC:2", 8, runs=3)
+    e = cli("md", "--scene", "free-water", "--integrator", "SIER2/N2:BAC:2", "--h", "8", "--runs", "3", "--json")
+    assert without_cpu(r) == without_cpu(e)
+    r = rotlie.md("dipole-field", "SIER4", 16.8, T=2, runs=2, scalar="long-double")
+    e = cli("md", "--scene", "dipole-field", "--integrator", "SIER4", "--h", "16.8", "--T", "2", "--runs", "2",
+            "--scalar", "long-double", "--json")
+    assert without_cpu(r) == without_cpu(e)
+    assert r["dLz_over_Lz"][0] < 1e-12  # L_z is conserved by the splitting (vZS Table I: at round-off)
+    for bad in [dict(scene="gas"), dict(integrator="XYZ"), dict(h=-1), dict(scalar="half"), dict(scene="liquid-water")]:
+        args = dict(scene="free-water", integrator="MRDL", h=1.66) | bad
+        with pytest.raises(ValueError):
+            rotlie.md(args.pop("scene"), args.pop("integrator"), args.pop("h"), runs=1, **args)
+
+
+def test_remainder_as_the_command_line():
+    r = rotlie.remainder("N2", order=3, body=WATER, perm="BAC", coeffs={"a1": "1/20", "a2": Fraction(3, 20)})
+    e = cli("remainder", "--scheme", "N2", "--perm", "BAC", "--inertia", "water", "--coeffs", "a1=1/20,a2=3/20",
+            "--order", "3", "--json")
+    assert r.json == e
+    assert r.latex() == cli("remainder", "--scheme", "N2", "--perm", "BAC", "--inertia", "water", "--coeffs",
+                            "a1=1/20,a2=3/20", "--order", "3", "--latex")
+    with pytest.raises(ValueError):
+        rotlie.remainder("N2", order=12)
+
+
+def test_remainder_of_a_solved_scheme():
+    """A dedicated scheme solves H_R3 = 0 (LV eq. 52): its written 40-digit coefficients leave ~1e-38."""
+    s = rotlie.scheme("N2:BAC:2", WATER)
+    r = rotlie.remainder(s, order=5)
+    assert r.free == [] and all(abs(Fraction(c)) < Fraction(1, 10**35) for c in r.terms[3].values())
+    assert any(abs(Fraction(c)) > Fraction(1, 10**6) for c in r.terms[5].values())
+
+
+def test_remainder_symbolic_in_sympy():
+    sympy = pytest.importorskip("sympy")
+    r = rotlie.remainder("ABCBA", order=3)  # Strang: symbolic in I1, I2, I3
+    I1, I2, I3 = sympy.symbols("I1 I2 I3")
+    h3 = r.sympy()[3]
+    # the symbolic coefficients at water's moments are the ones computed for water exactly
+    at_water = rotlie.remainder("ABCBA", order=3, body=WATER).terms[3]
+    values = dict(zip((I1, I2, I3), (sympy.Rational(m.numerator, m.denominator) for m in WATER.moments)))
+    assert set(h3) == set(at_water)
+    assert all(sympy.simplify(c.subs(values) - sympy.Rational(at_water[m])) == 0 for m, c in h3.items())
+    assert r.hamiltonian(3) != 0
