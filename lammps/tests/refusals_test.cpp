@@ -1,0 +1,4 @@
+#include <boost/test/unit_test.hpp>
+BOOST_AUTO_TEST_SUITE(refusals_test)
+BOOST_AUTO_TEST_CASE(placeholder) {}
+BOOST_AUTO_TEST_SUITE_END()
