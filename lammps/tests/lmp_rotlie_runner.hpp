@@ -29,6 +29,7 @@ struct scratch {
     fs::create_directories(dir);
   }
   ~scratch() {
+    if (std::getenv("ROTLIE_LMP_KEEP")) return;  // to look at a failing run's files
     std::error_code ec;
     fs::remove_all(dir, ec);
   }
