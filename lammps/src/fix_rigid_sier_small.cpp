@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <exception>
+#include <limits>
 #include <set>
 
 #include "atom.h"
@@ -154,15 +155,42 @@ void FixRigidSierSmall::kick(double c) {
   }
 }
 
+namespace {
+
+// A steady rotation: L on a principal axis to rounding (the other two body components of L within
+// 16ε of |L|; every body of a 2-d system, whose L is along z). Then w ← the angular velocity
+// L_k/I_k e_k about that axis, the exact free rotation (the general closed form would refine the
+// rounding of the off-axis components in float128 instead).
+bool steady(const double* L, const double* const e[3], const double* inertia, double* w) {
+  double G[3], gg = 0;
+  int k = 0;
+  for (int i = 0; i < 3; ++i) {
+    G[i] = L[0] * e[i][0] + L[1] * e[i][1] + L[2] * e[i][2];
+    gg += G[i] * G[i];
+    if (std::abs(G[i]) > std::abs(G[k])) k = i;
+  }
+  const double off = gg - G[k] * G[k];
+  constexpr double tol = 16 * std::numeric_limits<double>::epsilon();
+  if (!(inertia[k] > 0) || !(off <= tol * tol * gg)) return false;
+  for (int i = 0; i < 3; ++i) w[i] = G[k] / inertia[k] * e[k][i];
+  return true;
+}
+
+}  // namespace
+
 void FixRigidSierSmall::free_flight(double c) {
   const double t = c * update->dt;
   for (int ibody = 0; ibody < nlocal_body; ++ibody) {
     Body* b = &body[ibody];
     for (int i = 0; i < 3; ++i) b->xcm[i] += t * b->vcm[i];
+    const double* axes[3] = {b->ex_space, b->ey_space, b->ez_space};
+    double w[3];
     if (!(b->inertia[2] > 0)) {
       // a linear body: its free rotation is the uniform rotation about its angular velocity
       MathExtra::angmom_to_omega(b->angmom, b->ex_space, b->ey_space, b->ez_space, b->inertia, b->omega);
       rotate_about(b->omega, t, b->ex_space, b->ey_space, b->ez_space);
+    } else if (steady(b->angmom, axes, b->inertia, w)) {
+      rotate_about(w, t, b->ex_space, b->ey_space, b->ez_space);
     } else {
       models::body_state<double> s;
       to_rotlie(b->ex_space, b->ey_space, b->ez_space, b->angmom, s);
