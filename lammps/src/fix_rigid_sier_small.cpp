@@ -18,6 +18,7 @@
 #include "force.h"
 #include "lammps_frame.hpp"
 #include "math_extra.h"
+#include "modify.h"
 #include "mid_step_forces.h"
 #include "rigid_const.h"
 #include "rotlie/models/composition.hpp"
@@ -93,6 +94,16 @@ int FixRigidSierSmall::setmask() {
 void FixRigidSierSmall::init() {
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix " + std::string(style) + " does not support run_style respa");
+  // SIER4's inner force evaluations see only what this fix moves: another fix that integrates atoms
+  // (fix nve on free atoms, a second rigid fix) would move them by whole steps between them and the
+  // composition would lose its order (seen: LAMMPS's rigid/in.rigid.tnr, rods with fix nve on their
+  // tethers, 1000× the energy error of rigid/nve/small). SIER2 (V T V) is LAMMPS's own step layout.
+  if (coefficients_.size() > 3)
+    for (int i = 0; i < modify->nfix; ++i)
+      if (modify->fix[i] != this && modify->fix[i]->time_integrate)
+        error->all(FLERR, "Fix " + std::string(style) + ": fix " + modify->fix[i]->id + " (" + modify->fix[i]->style +
+                              ") also integrates atoms; the inner force evaluations of a step need every moving atom in this fix's stages "
+                              "(use rigid/sier2/small, or put every moving atom in a body of this fix)");
   FixRigidSmall::init();
 }
 

@@ -57,6 +57,7 @@ BOOST_AUTO_TEST_CASE(refused_inputs_give_one_error_line) {
   refused(d, pair, "fix r all rigid/sier2/small molecule rotor lv_water.scheme\n", "not for body", 2);
   refused(d, pair, "fix r all rigid/sier2/small molecule rotor Strang-TV\n", "TV table");
   refused(d, pair, "run_style respa 2 2\nfix r all rigid/sier2/small molecule\n", "respa");
+  refused(d, pair, "fix r all rigid/sier4/small molecule\nfix n all nve\n", "also integrates atoms");
 }
 
 BOOST_AUTO_TEST_CASE(a_table_solved_for_the_bodies_is_accepted) {
