@@ -11,14 +11,10 @@
 #include "version.h"
 
 namespace rotlie::lammps {
-namespace {
-
 using namespace LAMMPS_NS;
 
-Fix* sier2(LAMMPS* lmp, int narg, char** arg) { return new FixRigidSierSmall(lmp, narg, arg, "Strang-TV"); }
-Fix* sier4(LAMMPS* lmp, int narg, char** arg) { return new FixRigidSierSmall(lmp, narg, arg, "PEFRL-TV"); }
-
-}  // namespace
+Fix* create_sier2(LAMMPS* lmp, int narg, char** arg) { return new FixRigidSierSmall(lmp, narg, arg, "Strang-TV"); }
+Fix* create_sier4(LAMMPS* lmp, int narg, char** arg) { return new FixRigidSierSmall(lmp, narg, arg, "PEFRL-TV"); }
 
 const char* header_version() { return LAMMPS_VERSION; }
 
@@ -26,8 +22,8 @@ void register_styles(LAMMPS* lmp) {
   if (std::strcmp(lmp->version, LAMMPS_VERSION) != 0)
     lmp->error->all(FLERR, std::string("rotlie's fix styles were built against LAMMPS ") + LAMMPS_VERSION + ", this is LAMMPS " +
                                lmp->version + ": rebuild lammps/ with this version's headers");
-  (*lmp->modify->fix_map)["rigid/sier2/small"] = &sier2;
-  (*lmp->modify->fix_map)["rigid/sier4/small"] = &sier4;
+  (*lmp->modify->fix_map)["rigid/sier2/small"] = &create_sier2;
+  (*lmp->modify->fix_map)["rigid/sier4/small"] = &create_sier4;
 }
 
 }  // namespace rotlie::lammps

@@ -34,11 +34,13 @@ struct scratch {
     fs::remove_all(dir, ec);
   }
   /// Runs the input (file `name` in the folder) on `ranks` ranks; the exit status, stdout+stderr in output.
-  int run(const std::string& name, const std::string& input, int ranks = 1, const std::string& extra = "") {
+  /// program: lmp_rotlie, or another LAMMPS executable (stock lmp).
+  int run(const std::string& name, const std::string& input, int ranks = 1, const std::string& extra = "",
+          const std::string& program = ROTLIE_LMP_ROTLIE) {
     std::ofstream(dir / name) << input;
     std::string launcher;
     if (ranks > 1) launcher = std::string(ROTLIE_MPIEXEC) + (::geteuid() == 0 ? " --allow-run-as-root" : "") + " -np " + std::to_string(ranks) + " ";
-    const std::string cmd = "cd '" + dir.string() + "' && OMP_NUM_THREADS=1 " + launcher + ROTLIE_LMP_ROTLIE + " -in " + name + " -log none " +
+    const std::string cmd = "cd '" + dir.string() + "' && OMP_NUM_THREADS=1 " + launcher + program + " -in " + name + " -log none " +
                             extra + " > " + name + ".out 2>&1";
     const int status = std::system(cmd.c_str());
     std::ifstream in(dir / (name + ".out"));
