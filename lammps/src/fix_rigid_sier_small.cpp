@@ -10,6 +10,7 @@
 #include <exception>
 #include <limits>
 #include <set>
+#include <stdexcept>
 
 #include "atom.h"
 #include "comm.h"
@@ -74,7 +75,7 @@ FixRigidSierSmall::FixRigidSierSmall(LAMMPS* lmp, arguments&& args, const char* 
     // V T V … V: a kick first and last, the forces of the step's start and end (first same as last)
     for (std::size_t k = 0; k < table->stages.size(); ++k) {
       if (table->stages[k].part != (k % 2 == 0 ? 'V' : 'T') || table->stages.size() % 2 == 0)
-        error->all(FLERR, "Fix " + std::string(style) + ": " + tv_table_ + " does not alternate V T … V");
+        throw std::invalid_argument(tv_table_ + " does not alternate V T ... V");
       coefficients_.push_back(models::parse_scalar<double>(table->stages[k].value));
     }
   } catch (const std::exception& e) {
