@@ -28,10 +28,14 @@ python=(                         # python/: the rotlie Python package (Debian's 
   python3-sympy                  # optional: remainder terms as SymPy expressions
 )
 
+# lammps/: the fix styles rigid/sier2/small, rigid/sier4/small and lmp_rotlie (optional: skipped without
+# them); the headers liblammps-dev lacks come from Debian's source package (lammps/fetch-headers.sh)
+lammps=(liblammps-dev lammps-examples dpkg-dev)  # lmp itself is in symbolic
+
 case "${1:-}" in
-  "") packages=("${numeric[@]}" "${symbolic[@]}" "${python[@]}") ;;
+  "") packages=("${numeric[@]}" "${symbolic[@]}" "${python[@]}" "${lammps[@]}") ;;
   --numeric-only) packages=("${numeric[@]}") ;;
-  --fuzz) packages=("${numeric[@]}" "${symbolic[@]}" "${python[@]}" clang libclang-rt-14-dev) ;;  # fuzz/: libFuzzer
+  --fuzz) packages=("${numeric[@]}" "${symbolic[@]}" "${python[@]}" "${lammps[@]}" clang libclang-rt-14-dev) ;;  # fuzz/: libFuzzer
   *) echo "install-deps: error: unknown option '$1' (--numeric-only or --fuzz)" >&2; exit 2 ;;
 esac
 
@@ -41,11 +45,15 @@ for p in "${packages[@]}"; do
 done
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages already installed"
-  exit 0
+else
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+  echo "install-deps: installing ${missing[*]}"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-sudo=""
-if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
-echo "install-deps: installing ${missing[*]}"
-$sudo apt-get update -qq
-DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# lammps/: LAMMPS's own headers of the installed version (quick when already there)
+if [ "${1:-}" != "--numeric-only" ]; then
+  "$(dirname "$0")/../lammps/fetch-headers.sh"
+fi

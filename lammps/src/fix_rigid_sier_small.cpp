@@ -1,0 +1,256 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "fix_rigid_sier_small.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <limits>
+#include <set>
+#include <stdexcept>
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "lammps_frame.hpp"
+#include "math_extra.h"
+#include "modify.h"
+#include "mid_step_forces.h"
+#include "rigid_const.h"
+#include "rotlie/models/composition.hpp"
+#include "rotlie/schemes/reference_schemes.hpp"
+#include "update.h"
+#include "utils.h"
+
+namespace rotlie::lammps {
+
+using namespace LAMMPS_NS;
+
+struct FixRigidSierSmall::arguments {
+  std::vector<std::string> words;
+  std::string rotor = "exact";
+  std::vector<char*> argv;
+
+  arguments(LAMMPS* lmp, int narg, char** arg) {
+    const std::string style = narg > 2 ? arg[2] : "rigid/sier/small";
+    // thermostat and barostat keywords of fix rigid/small (and of its nvt/npt/nph variants)
+    static const std::set<std::string> refused = {"langevin", "temp", "iso", "aniso", "x", "y", "z",
+                                                  "couple", "tparam", "pchain", "dilate"};
+    static const std::set<std::string> with_value = {"infile", "reinit", "mol", "gravity"};
+    int first = std::min(narg, 4);
+    if (narg > 3 && std::strcmp(arg[3], "custom") == 0) first = std::min(narg, 5);
+    for (int i = 0; i < first; ++i) words.emplace_back(arg[i]);
+    for (int i = first; i < narg; ++i) {
+      const std::string w = arg[i];
+      if (w == "rotor") {
+        if (i + 1 >= narg) lmp->error->all(FLERR, "Fix " + style + ": rotor needs a value (exact, auto, a scheme name or a scheme-table file)");
+        rotor = arg[++i];
+      } else if (refused.count(w)) {
+        lmp->error->all(FLERR, "Fix " + style + ": keyword '" + w +
+                                   "' is a thermostat or barostat; " + style + " integrates at constant energy (NVE only)");
+      } else if (with_value.count(w) && i + 1 < narg) {
+        words.push_back(w);
+        words.emplace_back(arg[++i]);
+      } else {
+        words.push_back(w);  // fix rigid/small names what it does not know
+      }
+    }
+    for (auto& w : words) argv.push_back(w.data());
+  }
+};
+
+FixRigidSierSmall::FixRigidSierSmall(LAMMPS* lmp, int narg, char** arg, const char* tv_table)
+    : FixRigidSierSmall(lmp, arguments(lmp, narg, arg), tv_table) {}
+
+FixRigidSierSmall::FixRigidSierSmall(LAMMPS* lmp, arguments&& args, const char* tv_table)
+    : FixRigidSmall(lmp, static_cast<int>(args.argv.size()), args.argv.data()), tv_table_(tv_table) {
+  try {
+    rotors_ = std::make_unique<body_rotors>(parse_rotor(args.rotor));
+    const auto table = schemes::reference_scheme(tv_table_);
+    // V T V … V: a kick first and last, the forces of the step's start and end (first same as last)
+    for (std::size_t k = 0; k < table->stages.size(); ++k) {
+      if (table->stages[k].part != (k % 2 == 0 ? 'V' : 'T') || table->stages.size() % 2 == 0)
+        throw std::invalid_argument(tv_table_ + " does not alternate V T ... V");
+      coefficients_.push_back(models::parse_scalar<double>(table->stages[k].value));
+    }
+  } catch (const std::exception& e) {
+    error->all(FLERR, "Fix " + std::string(style) + ": " + e.what());
+  }
+  if (comm->me == 0)
+    utils::logmesg(lmp, "  " + std::string(style) + ": " + tv_table_ + ", " + std::to_string((coefficients_.size() - 1) / 2) +
+                            " force evaluations per step, rotor " + args.rotor + "\n");
+}
+
+FixRigidSierSmall::~FixRigidSierSmall() = default;
+
+int FixRigidSierSmall::setmask() {
+  return FixRigidSmall::setmask() & ~(FixConst::INITIAL_INTEGRATE_RESPA | FixConst::FINAL_INTEGRATE_RESPA);
+}
+
+void FixRigidSierSmall::init() {
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR, "Fix " + std::string(style) + " does not support run_style respa");
+  // SIER4's inner force evaluations see only what this fix moves: another fix that integrates atoms
+  // (fix nve on free atoms, a second rigid fix) would move them by whole steps between them and the
+  // composition would lose its order (seen: LAMMPS's rigid/in.rigid.tnr, rods with fix nve on their
+  // tethers, 1000× the energy error of rigid/nve/small). SIER2 (V T V) is LAMMPS's own step layout.
+  if (coefficients_.size() > 3)
+    for (int i = 0; i < modify->nfix; ++i)
+      if (modify->fix[i] != this && modify->fix[i]->time_integrate)
+        error->all(FLERR, "Fix " + std::string(style) + ": fix " + modify->fix[i]->id + " (" + modify->fix[i]->style +
+                              ") also integrates atoms; the inner force evaluations of a step need every moving atom in this fix's stages "
+                              "(use rigid/sier2/small, or put every moving atom in a body of this fix)");
+  FixRigidSmall::init();
+}
+
+void FixRigidSierSmall::setup(int vflag) {
+  FixRigidSmall::setup(vflag);
+  resolve_shapes();
+}
+
+void FixRigidSierSmall::resolve_shapes() {
+  // each rank's distinct shapes with a body ID, gathered on every rank in rank order, so that every
+  // rank resolves the same list and a refusal is one collective error
+  std::vector<double> mine;
+  std::vector<std::array<double, 3>> seen;
+  bool all_known = true;
+  for (int ibody = 0; ibody < nlocal_body; ++ibody) {
+    const Body& b = body[ibody];
+    const auto I = rotlie_moments(b.inertia);
+    if (!rotors_->shape_of(I)) all_known = false;
+    if (std::any_of(seen.begin(), seen.end(), [&](const auto& s) { return same_shape(s, I); })) continue;
+    seen.push_back(I);
+    mine.insert(mine.end(), {I[0], I[1], I[2], static_cast<double>(atom->tag[b.ilocal])});
+  }
+  int unknown = (all_known && shapes_resolved_) ? 0 : 1, any_unknown = 0;
+  MPI_Allreduce(&unknown, &any_unknown, 1, MPI_INT, MPI_MAX, world);
+  if (!any_unknown) return;
+  int count = static_cast<int>(mine.size());
+  std::vector<int> counts(static_cast<std::size_t>(comm->nprocs)), offsets(counts.size());
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r) offsets[r] = total, total += counts[r];
+  std::vector<double> all(static_cast<std::size_t>(total));
+  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, world);
+  std::vector<std::pair<std::array<double, 3>, long>> bodies;
+  for (std::size_t k = 0; k + 3 < all.size(); k += 4) bodies.push_back({{all[k], all[k + 1], all[k + 2]}, static_cast<long>(all[k + 3])});
+  try {
+    rotors_->resolve_shapes(bodies);
+  } catch (const std::exception& e) {
+    error->all(FLERR, "Fix " + std::string(style) + ": " + e.what());
+  }
+  shapes_resolved_ = true;
+  if (comm->me == 0)
+    for (const auto& s : rotors_->shapes()) {
+      char text[160];
+      std::snprintf(text, sizeof text, "  %s: body shape (%.8g, %.8g, %.8g) (body %ld): rotor %s\n", style, s.moments[0],
+                    s.moments[1], s.moments[2], s.first_body, !(s.moments[0] > 0) ? "exact (linear body)" : s.table_name.c_str());
+      utils::logmesg(lmp, text);
+    }
+}
+
+void FixRigidSierSmall::kick(double c) {
+  const double k = c * update->dt * force->ftm2v;
+  for (int ibody = 0; ibody < nlocal_body; ++ibody) {
+    Body* b = &body[ibody];
+    const double dtfm = k / b->mass;
+    for (int i = 0; i < 3; ++i) {
+      b->vcm[i] += dtfm * b->fcm[i];
+      b->angmom[i] += k * b->torque[i];
+    }
+    MathExtra::angmom_to_omega(b->angmom, b->ex_space, b->ey_space, b->ez_space, b->inertia, b->omega);
+  }
+}
+
+namespace {
+
+// A steady rotation: L on a principal axis to rounding (the other two body components of L within
+// 16ε of |L|; every body of a 2-d system, whose L is along z). Then w ← the angular velocity
+// L_k/I_k e_k about that axis, the exact free rotation (the general closed form would refine the
+// rounding of the off-axis components in float128 instead).
+bool steady(const double* L, const double* const e[3], const double* inertia, double* w) {
+  double G[3], gg = 0;
+  int k = 0;
+  for (int i = 0; i < 3; ++i) {
+    G[i] = L[0] * e[i][0] + L[1] * e[i][1] + L[2] * e[i][2];
+    gg += G[i] * G[i];
+    if (std::abs(G[i]) > std::abs(G[k])) k = i;
+  }
+  const double off = gg - G[k] * G[k];
+  constexpr double tol = 16 * std::numeric_limits<double>::epsilon();
+  if (!(inertia[k] > 0) || !(off <= tol * tol * gg)) return false;
+  for (int i = 0; i < 3; ++i) w[i] = G[k] / inertia[k] * e[k][i];
+  return true;
+}
+
+}  // namespace
+
+void FixRigidSierSmall::free_flight(double c) {
+  const double t = c * update->dt;
+  for (int ibody = 0; ibody < nlocal_body; ++ibody) {
+    Body* b = &body[ibody];
+    for (int i = 0; i < 3; ++i) b->xcm[i] += t * b->vcm[i];
+    const double* axes[3] = {b->ex_space, b->ey_space, b->ez_space};
+    double w[3];
+    if (!(b->inertia[2] > 0)) {
+      // a linear body: its free rotation is the uniform rotation about its angular velocity
+      MathExtra::angmom_to_omega(b->angmom, b->ex_space, b->ey_space, b->ez_space, b->inertia, b->omega);
+      rotate_about(b->omega, t, b->ex_space, b->ey_space, b->ez_space);
+    } else if (steady(b->angmom, axes, b->inertia, w)) {
+      rotate_about(w, t, b->ex_space, b->ey_space, b->ez_space);
+    } else {
+      models::body_state<double> s;
+      to_rotlie(b->ex_space, b->ey_space, b->ez_space, b->angmom, s);
+      try {
+        rotors_->rotor_for(rotlie_moments(b->inertia), atom->tag[b->ilocal]).advance(s, t);
+      } catch (const std::exception& e) {
+        error->one(FLERR, "Fix " + std::string(style) + ": " + e.what());
+      }
+      from_rotlie(s, b->ex_space, b->ey_space, b->ez_space, b->angmom);
+    }
+    // the attitude as LAMMPS keeps it: a unit quaternion, the axes derived from it
+    MathExtra::exyz_to_q(b->ex_space, b->ey_space, b->ez_space, b->quat);
+    MathExtra::q_to_exyz(b->quat, b->ex_space, b->ey_space, b->ez_space);
+    MathExtra::angmom_to_omega(b->angmom, b->ex_space, b->ey_space, b->ez_space, b->inertia, b->omega);
+  }
+}
+
+void FixRigidSierSmall::place_atoms(int vflag) {
+  v_init(vflag);
+  commflag = RigidConst::INITIAL;
+  comm->forward_comm_fix(this, 29);
+  set_xv();
+}
+
+void FixRigidSierSmall::initial_integrate(int vflag) {
+  // every stage but the last kick, which final_integrate gives with the forces LAMMPS computes next
+  const std::size_t n = coefficients_.size();
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    if (k % 2 == 0) {
+      if (k > 0) {
+        mid_step_forces(lmp);
+        compute_forces_and_torques();
+      }
+      kick(coefficients_[k]);
+    } else {
+      free_flight(coefficients_[k]);
+      // the constraint virial is tallied in the step's last placement only (rigid/small's formula)
+      place_atoms(k + 2 == n ? vflag : 0);
+    }
+  }
+}
+
+void FixRigidSierSmall::final_integrate() {
+  if (!earlyflag) compute_forces_and_torques();
+  kick(coefficients_.back());
+  commflag = RigidConst::FINAL;
+  comm->forward_comm_fix(this, 10);
+  set_v();
+}
+
+}  // namespace rotlie::lammps

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#pragma once
+// fix rigid/sier2/small and rigid/sier4/small: van Zon & Schofield's SIER2 (Strang-TV, eq. 7) and
+// SIER4 (PEFRL-TV with the corrected h5, eq. 8) on the bodies of LAMMPS's fix rigid/small, whose
+// body bookkeeping (creation from molecules or custom IDs, ghost bodies, exchange between ranks,
+// forces and torques on bodies, atom positions from bodies) they inherit unchanged. They replace the
+// time integration: a TV table's kicks (V) and free flights (T: translation and the free rotation
+// chosen by `rotor VALUE`, exact by default).
+//
+// One LAMMPS step is one step of the table. Its first kick uses the forces of the step's start (a TV
+// table starts and ends with V: first same as last), its last kick the forces LAMMPS computes after
+// initial_integrate; the forces between the free flights (PEFRL-TV: 3 more, f = 4) are computed by
+// the fix itself in initial_integrate, with the sequence of LAMMPS's Verlet (neighbour decision,
+// communication or re-neighbouring, pre_force, pair, bonded, kspace, reverse communication,
+// post_force of every fix): see mid_step_forces.h.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fix_rigid_small.h"
+#include "body_rotors.hpp"
+
+namespace rotlie::lammps {
+
+class FixRigidSierSmall : public LAMMPS_NS::FixRigidSmall {
+ public:
+  /// tv_table: Strang-TV (rigid/sier2/small) or PEFRL-TV (rigid/sier4/small).
+  FixRigidSierSmall(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg, const char* tv_table);
+  ~FixRigidSierSmall() override;
+
+  int setmask() override;
+  void init() override;
+  void setup(int vflag) override;
+  void initial_integrate(int vflag) override;
+  void final_integrate() override;
+
+ private:
+  struct arguments;  // the command's words without `rotor VALUE`, thermostats and barostats refused
+  FixRigidSierSmall(LAMMPS_NS::LAMMPS* lmp, arguments&& args, const char* tv_table);
+
+  void kick(double c);           // V for c h: vcm, angmom, omega of the owned bodies
+  void free_flight(double c);    // T for c h: xcm and the free rotation of the owned bodies
+  void place_atoms(int vflag);   // ghost bodies, then the atoms of every body
+  void resolve_shapes();         // the rotors of every body shape, the same on every rank
+
+  std::vector<double> coefficients_;  ///< the TV table's stage coefficients, V first
+  std::string tv_table_;
+  std::unique_ptr<body_rotors> rotors_;
+  bool shapes_resolved_ = false;
+};
+
+}  // namespace rotlie::lammps

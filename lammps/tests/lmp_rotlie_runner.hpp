@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#pragma once
+// Runs lmp_rotlie (on 1 or more MPI ranks) on an input in a scratch folder, and the water start the
+// tests share: TIP3P at 0.9973 g/cm³ (cutoff 9 Å) from a lattice, 300 steps at 0.5 fs under a Berendsen
+// thermostat in rotlie's own scene (molecules at liquid distances), written as a LAMMPS data file.
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "rotlie/models/md_integrators.hpp"
+#include "rotlie/models/scenes/lammps_water_io.hpp"
+#include "rotlie/models/scenes/liquid_water.hpp"
+#include "rotlie/models/scenes/water_setup.hpp"
+
+namespace rotlie_lammps_test {
+
+namespace fs = std::filesystem;
+using namespace rotlie::models;
+
+inline bool have_mpirun() { return std::string(ROTLIE_MPIEXEC).size() > 0 && fs::exists(ROTLIE_MPIEXEC); }
+
+struct scratch {
+  fs::path dir;
+  explicit scratch(const std::string& name) : dir(fs::temp_directory_path() / ("rotlie_lmp_" + name + "_" + std::to_string(::getpid()))) {
+    fs::create_directories(dir);
+  }
+  ~scratch() {
+    if (std::getenv("ROTLIE_LMP_KEEP")) return;  // to look at a failing run's files
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+  /// Runs the input (file `name` in the folder) on `ranks` ranks; the exit status, stdout+stderr in output.
+  /// program: lmp_rotlie, or another LAMMPS executable (stock lmp).
+  int run(const std::string& name, const std::string& input, int ranks = 1, const std::string& extra = "",
+          const std::string& program = ROTLIE_LMP_ROTLIE) {
+    std::ofstream(dir / name) << input;
+    std::string launcher;
+    if (ranks > 1) launcher = std::string(ROTLIE_MPIEXEC) + (::geteuid() == 0 ? " --allow-run-as-root" : "") + " -np " + std::to_string(ranks) + " ";
+    const std::string cmd = "cd '" + dir.string() + "' && OMP_NUM_THREADS=1 " + launcher + program + " -in " + name + " -log none " +
+                            extra + " > " + name + ".out 2>&1";
+    const int status = std::system(cmd.c_str());
+    std::ifstream in(dir / (name + ".out"));
+    std::ostringstream text;
+    text << in.rdbuf();
+    output = text.str();
+    return status;
+  }
+  std::string output;
+};
+
+struct water_start {
+  double L;
+  liquid_water<double> w;
+  rigid_bodies_state<double> s;
+};
+
+/// 9 Å (rotlie's scene uses 11 Å): 216 molecules fit a box larger than twice the cutoff.
+inline constexpr double cutoff = 9.0;
+
+inline liquid_water<double> dsf_water(double L) {
+  liquid_water_options<double> o;
+  o.box = L;
+  o.cutoff = cutoff;
+  o.interaction = water_interaction::lammps_dsf;
+  return liquid_water<double>(tip3p<double>(), o);
+}
+
+inline water_start liquid_start(long n) {
+  const double L = cubic_box_side<double>(n, tip3p<double>().mass, 0.9973);
+  auto s = lattice_water<double>(tip3p<double>(), n, L, 297, 21);
+  liquid_water_options<double> o;
+  o.box = L;
+  o.cutoff = cutoff;
+  const liquid_water<double> switched(tip3p<double>(), o);
+  with_md_integrator(md_integrator_named("MRDL"), nullptr, tip3p<double>().mass, tip3p<double>().moments, switched, [&](const auto& m) {
+    equilibrate(m, s, 0.5, 300, 297.0, 20.0, [](long, double, double) {});
+    return 0;
+  });
+  s.forces_current = false;
+  return {L, dsf_water(L), s};
+}
+
+inline const std::string water_head = "units real\natom_style full\nboundary p p p\nread_data water.data\n";
+
+/// The largest distance between the sites of two dumps of unwrapped positions (by atom id).
+inline double largest_distance(const std::map<long, vec3<double>>& a, const std::map<long, vec3<double>>& b) {
+  double worst = a.size() == b.size() ? 0 : INFINITY;
+  for (const auto& [id, r] : a) {
+    const auto it = b.find(id);
+    if (it == b.end()) return INFINITY;
+    double d2 = 0;
+    for (int k = 0; k < 3; ++k) d2 += (r[k] - it->second[k]) * (r[k] - it->second[k]);
+    worst = std::max(worst, std::sqrt(d2));
+  }
+  return worst;
+}
+
+inline const std::string final_dump = "write_dump all custom final.dump id xu yu zu modify format float %.17g sort id\n";
+
+}  // namespace rotlie_lammps_test

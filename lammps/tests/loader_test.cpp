@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// Stock lmp (Debian's, with its PYTHON package) loads the fix styles through its `python` command
+// and the loader rotlie_lammps.py (rotlieplugin.so): 50 SIER4 steps of 216 TIP3P end in the same
+// positions and velocities, to the last digit, as lmp_rotlie's, on 1 and 2 ranks.
+#include <boost/test/unit_test.hpp>
+
+#include "lmp_rotlie_runner.hpp"
+
+BOOST_AUTO_TEST_SUITE(loader_test)
+
+using namespace rotlie_lammps_test;
+
+BOOST_AUTO_TEST_CASE(stock_lmp_with_the_python_loader_runs_the_styles) {
+  if (std::system("command -v lmp > /dev/null 2>&1") != 0) {
+    BOOST_TEST_MESSAGE("skipped: no stock lmp");
+    return;
+  }
+  const double L = cubic_box_side<double>(216, tip3p<double>().mass, 0.9973);
+  const auto s = lattice_water<double>(tip3p<double>(), 216, L, 297, 21);
+  const auto w = dsf_water(L);
+  scratch d("loader");
+  write_lammps_water_data(d.dir / "water.data", w, s.bodies);
+  const std::string dump = "write_dump all custom final.dump id x y z vx vy vz modify format float %.17g sort id\n";
+  const std::string body = lammps_water_pair_lines(w) + "fix r all rigid/sier4/small molecule\ntimestep 1.0\nrun 50\n" + dump;
+  const std::string load = std::string("python rotlie_load input 1 SELF format p file ") + ROTLIE_LAMMPS_LOADER + "\npython rotlie_load invoke\n";
+  auto text = [&] {
+    std::ifstream in(d.dir / "final.dump");
+    std::ostringstream t;
+    t << in.rdbuf();
+    return t.str();
+  };
+  for (const int ranks : {1, 2}) {
+    if (ranks > 1 && !have_mpirun()) continue;
+    BOOST_REQUIRE_MESSAGE(d.run("in.launcher", water_head + body, ranks) == 0, d.output);
+    const std::string launcher = text();
+    BOOST_REQUIRE_MESSAGE(d.run("in.stock", water_head + load + body, ranks, "", "lmp") == 0, d.output);
+    const std::string stock = text();
+    BOOST_TEST(launcher.size() > 3 * 216 * 6 * 17u);
+    BOOST_TEST(launcher == stock, ranks << " rank(s): stock lmp with the loader differs from lmp_rotlie");
+    BOOST_TEST_MESSAGE(ranks << " rank(s): stock lmp + python loader, 50 SIER4 steps: dump equal to lmp_rotlie's: " << (launcher == stock));
+  }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
