@@ -16,6 +16,8 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
+#include <optional>
 #include <sstream>
 
 #include "arguments.hpp"
@@ -23,6 +25,7 @@
 #include "map_distribution.hpp"
 #include "progress.hpp"
 #include "rotlie/runs/family_names.hpp"
+#include "rotlie/runs/exclusive_use.hpp"
 #include "rotlie/runs/map_file.hpp"
 #include "rotlie/runs/map_rows.hpp"
 #include "rotlie/runs/output_file.hpp"
@@ -40,8 +43,9 @@ constexpr const char* default_folder = "rotlie-map";
 // indices r K … r K + K − 1. Rows are dealt out to the ranks in turn.
 int owner_of_row(std::size_t row, int ranks) { return static_cast<int>(row % static_cast<std::size_t>(ranks)); }
 
+// --grid 1 has no asymmetric body (it once wrote an empty map with exit 0); 2 has the flat (1/2, 0).
 int checked_grid(const std::string& text) {
-  return static_cast<int>(parse_integer_in_range(text, "--grid", 1, solver::max_grid_divisions));
+  return static_cast<int>(parse_integer_in_range(text, "--grid", 2, solver::max_grid_divisions));
 }
 
 // Rank 0's writer: lines arrive in any order and leave in the grid's order.
@@ -86,6 +90,7 @@ struct prepared_map {
   std::vector<solver::grid_body> bodies;
   runs::resumed_map existing;
   fs::path path;  ///< empty: no file (--json alone)
+  std::shared_ptr<runs::exclusive_use> lock;  ///< the folder, held until the map is written
 };
 
 prepared_map prepare(const map_options& o) {
@@ -101,13 +106,14 @@ prepared_map prepare(const map_options& o) {
   p.existing.done.assign(p.bodies.size(), 0);
   if (folder.empty()) return p;
   check_output_folder(folder, "--out");
+  fs::create_directories(folder);
+  p.lock = std::make_shared<runs::exclusive_use>(folder, "--out");  // a second map into the folder stops here
   p.path = runs::map_file_path(folder, p.family);
   const bool exists = fs::exists(p.path);
   if (exists && !o.resume)
     throw usage_error("--out: " + runs::printable_path(p.path) +
                       " exists: continue it with --resume, or choose another folder; it is left as it is");
   if (exists) p.existing = runs::resume_map_file(p.path, p.family, p.K, runs::map_method_name(p.method), p.bodies);
-  fs::create_directories(folder);
   return p;
 }
 

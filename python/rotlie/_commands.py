@@ -36,22 +36,29 @@ def map_line(family: str, s, t, grid: int, exact: bool = False) -> dict:
     for the family (its row computed as the map does, so the line is the map file's), or by the exact
     solver for that body alone when ``exact`` (``rotlie map --exact``)."""
     grid = operator.index(grid)
-    if grid < 1:
-        raise ValueError(f"--grid must be an integer in [1, 2000], got '{grid}'")
+    if grid < 2:
+        raise ValueError(f"--grid must be at least 2, got {grid}")
     return json.loads(_rotlie.map_line(str(family), _grid_index(s, grid, "s"), _grid_index(t, grid, "t"), grid,
                                           bool(exact)))
 
 
 def md(scene: str, integrator: str, h, T=None, **options) -> dict:
-    """A van Zon & Schofield scene (``free-water`` or ``dipole-field``) as ``rotlie md --json``.
+    """A scene of ``rotlie md`` (``free-water``, ``dipole-field``, ``liquid-water``) as ``rotlie md --json``.
 
-    ``h`` in fs, ``T`` in ps (the scene's default when None); options: ``runs``, ``seed``, ``scalar``
-    (double, long-double, float128), ``dipole`` (D) and ``field`` (V/Å) for the dipole scene."""
-    known = {"runs", "seed", "scalar", "dipole", "field"}
-    unknown = set(options) - known
+    ``h`` is the step in fs, ``T`` the time per run in ps (the scene's default when None). Options are the
+    command line's without the dashes, each scene its own: ``runs``, ``seed``, ``scalar`` (double,
+    long-double, float128), ``dipole`` (D) and ``field`` (MV/m) for the dipole scene; ``molecules``,
+    ``threads`` and ``state`` (a file) for liquid water. An option of another scene raises ValueError, as
+    the command line refuses it; the run's warnings (a step beyond the stable range, round-off) are
+    UserWarnings and are flagged in the result."""
+    scenes = _rotlie.md_scenes()
+    known = sorted({name[2:] for opts in scenes.values() for name in opts})
+    unknown = set(options) - set(known)
     if unknown:
-        raise TypeError(f"md() got unknown options {sorted(unknown)} (known: {sorted(known)})")
-    text = lambda key, default: default if options.get(key) is None else number_text(options[key], "--" + key)
-    return json.loads(_rotlie.md(str(scene), str(integrator), number_text(h, "--h"),
-                                 "" if T is None else number_text(T, "--T"), text("runs", ""), text("seed", "1"),
-                                 str(options.get("scalar", "double")), text("dipole", "1.84"), text("field", "2.7")))
+        raise TypeError(f"md() got unknown options {sorted(unknown)} (known: {known})")
+    given = {} if T is None else {"--T": number_text(T, "--T")}
+    for key, value in options.items():
+        if value is None:
+            continue
+        given["--" + key] = value if key in ("scalar", "state") else number_text(value, "--" + key)
+    return json.loads(_rotlie.md(str(scene), str(integrator), number_text(h, "--h"), {k: str(v) for k, v in given.items()}))

@@ -35,6 +35,16 @@ struct completion {
     std::unique_lock lock(m);
     return cv.wait_for(lock, d, [this] { return done; });
   }
+  /// Runs f on the worker, handing over its exception (or none).
+  template <class F>
+  void run(F&& f) {
+    try {
+      f();
+      finish(nullptr);
+    } catch (...) {
+      finish(std::current_exception());
+    }
+  }
 };
 
 // True when a Python signal handler raised (the Python error is then set). Takes the GIL.
@@ -53,6 +63,13 @@ std::mutex& symbolic_mutex() {
 // for it to end (the process exits once it has).
 void wait_for_abandoned_work() { std::lock_guard lock(symbolic_mutex()); }
 
+// Waits in slices until the work is done (false) or a Python signal handler raised (true).
+bool interrupted_while_waiting(completion& state) {
+  while (!state.wait_for(poll_interval))
+    if (interrupted()) return true;
+  return false;
+}
+
 }  // namespace
 
 void run_cancellable(const std::function<void(const cancellation&)>& work) {
@@ -61,21 +78,9 @@ void run_cancellable(const std::function<void(const cancellation&)>& work) {
   bool was_interrupted = false;
   {
     py::gil_scoped_release nogil;
-    std::thread worker([&work, &cancel, state] {
-      try {
-        work(cancel);
-        state->finish(nullptr);
-      } catch (...) {
-        state->finish(std::current_exception());
-      }
-    });
-    while (!state->wait_for(poll_interval)) {
-      if (interrupted()) {
-        was_interrupted = true;
-        cancel.request();
-        break;
-      }
-    }
+    std::thread worker([&work, &cancel, state] { state->run([&] { work(cancel); }); });
+    was_interrupted = interrupted_while_waiting(*state);
+    if (was_interrupted) cancel.request();
     worker.join();  // a cancelled loop stops within one slice of its work
   }
   if (was_interrupted) throw py::error_already_set();
@@ -91,19 +96,9 @@ void run_symbolic(std::function<void()> work) {
     py::gil_scoped_release nogil;
     std::thread worker([work = std::move(work), state] {
       std::lock_guard lock(symbolic_mutex());
-      try {
-        work();
-        state->finish(nullptr);
-      } catch (...) {
-        state->finish(std::current_exception());
-      }
+      state->run(work);
     });
-    while (!state->wait_for(poll_interval)) {
-      if (interrupted()) {
-        was_interrupted = true;
-        break;
-      }
-    }
+    was_interrupted = interrupted_while_waiting(*state);
     if (was_interrupted)
       worker.detach();
     else

@@ -51,7 +51,7 @@ std::string map_line(const std::string& family, long i, long j, long K, bool exa
   auto out = std::make_shared<std::string>();
   run_symbolic([=] {
     const auto& f = runs::family_to_map(family);
-    const long k = runs::integer_in_range(std::to_string(K), "--grid", 1, solver::max_grid_divisions);
+    const long k = runs::integer_in_range(std::to_string(K), "--grid", 2, solver::max_grid_divisions);
     runs::integer_in_range(std::to_string(i), "s·grid", 0, k);
     runs::integer_in_range(std::to_string(j), "t·grid", 0, k);
     if (solver::grid_point(static_cast<int>(k), static_cast<int>(i), static_cast<int>(j)).symmetric)
@@ -64,7 +64,7 @@ std::string map_line(const std::string& family, long i, long j, long K, bool exa
     std::vector<char> done(row.size(), 1);  // the row is carried whole; only this body's line is written
     done[at] = 0;
     const auto lines = runs::map_row_lines(row, 0, row.size(), done, std::string(f.name),
-                                           runs::map_method_asked(f, exact, false));
+                                           runs::map_method_asked(f, static_cast<int>(k), exact, false));
     if (lines.size() != 1) throw std::runtime_error("the map row gave no line for the body");
     *out = lines.front().second;
   });

@@ -142,6 +142,20 @@ std::optional<map_contents> read_map_contents(const std::filesystem::path& path)
   return m;
 }
 
+namespace {
+
+// A body line holds a result: a failure with its reason, or the best (a name, or null where every
+// system is singular) with its remainder, the reference's remainder and the per-permutation list.
+bool has_result(const nlohmann::json& j) {
+  if (j.contains("failed")) return j["failed"].is_string();
+  const auto string_or_null = [&](const char* k) { return j.contains(k) && (j[k].is_string() || j[k].is_null()); };
+  const auto number_or_null = [&](const char* k) { return j.contains(k) && (j[k].is_number() || j[k].is_null()); };
+  return string_or_null("best") && number_or_null("remainder") && j.contains("reference_remainder") &&
+         j["reference_remainder"].is_number() && number_or_null("ratio") && j.contains("permutations") && j["permutations"].is_array();
+}
+
+}  // namespace
+
 resumed_map resume_map_file(const std::filesystem::path& path, const std::string& family, int K, const std::string& method,
                             const std::vector<solver::grid_body>& bodies) {
   resumed_map out;
@@ -160,24 +174,31 @@ resumed_map resume_map_file(const std::filesystem::path& path, const std::string
     const std::size_t line_number = n + 1;
     const auto j = nlohmann::json::parse(text.lines[n], nullptr, false);
     if (line_number == 1) {
-      if (j.is_discarded() || !j.is_object() || !j.contains("rotlie_map"))
-        throw bad_input(refusal + "is not a rotlie map file; it is left as it is");
-      if (j.value("rotlie_map", 0) != map_format_version || j.value("family", "") != family || j.value("grid", 0) != K)
-        throw bad_input(refusal + "holds the map of family " + j.value("family", "?") + " at --grid " +
-                        std::to_string(j.value("grid", 0)) + ", not " + family + " at --grid " + std::to_string(K) +
-                        "; it is left as it is");
-      if (j.value("method", "exact") != method) {
+      // each field of the type the writer gives it: a grid of 20.9 or 2^32 + 20 is not 20
+      const bool typed = !j.is_discarded() && j.is_object() && j.contains("rotlie_map") && j["rotlie_map"].is_number_integer() &&
+                         j.contains("family") && j["family"].is_string() && j.contains("grid") && j["grid"].is_number_integer() &&
+                         (!j.contains("method") || j["method"].is_string());
+      if (!typed) throw bad_input(refusal + "is not a rotlie map file (its header line is not one); it is left as it is");
+      const auto grid = j["grid"].get<long long>();
+      if (j["rotlie_map"].get<long long>() != map_format_version || j["family"].get<std::string>() != family || grid != K)
+        throw bad_input(refusal + "holds the map of family " + one_line(j["family"].get<std::string>()) + " at --grid " +
+                        std::to_string(grid) + ", not " + family + " at --grid " + std::to_string(K) + "; it is left as it is");
+      const std::string made_by = j.contains("method") ? j["method"].get<std::string>() : "exact";
+      if (made_by != method) {
         const auto flag = [](const std::string& m) { return m == "exact" ? std::string("--exact") : std::string("--fast"); };
-        throw bad_input(refusal + "was computed with " + flag(j.value("method", "exact")) + ", not " + flag(method) +
-                        "; it is left as it is");
+        throw bad_input(refusal + "was computed with " + flag(made_by) + " (" + one_line(made_by) + "), not " + flag(method) + " (" +
+                        method + "); it is left as it is");
       }
       out.has_header = true;
       continue;
     }
     const auto ij = j.is_discarded() ? std::nullopt : map_line_indices(j, K);
     const auto found = ij ? index_of.find(static_cast<long>(ij->first) * (K + 1) + ij->second) : index_of.end();
-    if (found == index_of.end() || j.value("family", "") != family)
+    if (found == index_of.end() || !j.contains("family") || !j["family"].is_string() || j["family"].get<std::string>() != family)
       throw bad_input(refusal + "line " + std::to_string(line_number) + " is not a body of this map; it is left as it is");
+    if (!has_result(j))
+      throw bad_input(refusal + "line " + std::to_string(line_number) +
+                      " holds no result (neither a best with its remainders nor a failure); it is left as it is");
     if (out.done[found->second] != 0)
       throw bad_input(refusal + "line " + std::to_string(line_number) + " repeats a body; it is left as it is");
     out.done[found->second] = 1;

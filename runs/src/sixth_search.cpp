@@ -1,6 +1,7 @@
 #include "rotlie/runs/sixth_search.hpp"
 
 #include <cln/real.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +9,10 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 
+#include "rotlie/runs/exclusive_use.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/solver/sixth_order_search.hpp"
 
@@ -27,25 +30,72 @@ std::vector<std::string> split_list(const std::string& text) {
   return out;
 }
 
-void save_state(const fs::path& file, const std::vector<solver::scanned_system>& done) {
-  const fs::path temporary = file.string() + ".part";
+// What a scan state belongs to: the body as typed (exact moments) and the splitting. A state is
+// refused for any other problem (it would mix two bodies' roots in one folder).
+std::string problem_of(const sixth_search_request& q) {
+  return "inertia " + lie::inertia_text(q.body) + " split " + (q.split == bch::splitting::abc ? "ABC" : "RS");
+}
+
+// The state written whole or not at all, through a temporary of this process's own.
+void save_state(const fs::path& file, const std::string& problem, const std::vector<solver::scanned_system>& done) {
+  const fs::path temporary = file.string() + ".part-" + std::to_string(::getpid());
   {
     std::ofstream out(temporary);
+    out << "problem " << problem << "\n";
     solver::write_scan_state(out, done);
     if (!out) throw std::runtime_error("cannot write " + temporary.string());
   }
   fs::rename(temporary, file);
 }
 
-// Systems already in the state file keep their starts and roots.
-std::vector<solver::scanned_system> resumed_state(const fs::path& state) {
-  if (state.empty() || !fs::exists(state)) return {};
-  std::ifstream in(state);
-  try {
-    return solver::read_scan_state(in);
-  } catch (const std::invalid_argument& e) {
-    throw bad_input(state.string() + ": " + e.what() + " (remove it to start again)");
+constexpr std::uintmax_t largest_state_bytes = 256u << 20;  // far above any scan's state; /dev/zero is refused
+constexpr long double largest_coefficient = 1e6L;           // the starts lie in a box of a few units
+
+// Every root of a system has one value per free coefficient of its word, each finite and of the
+// size a scheme's coefficient can have; anything else is a state this program did not write.
+void check_roots(const solver::scanned_system& r, bch::splitting split, const std::string& where) {
+  const auto layout = bch::layout_scheme(r.word, split, r.permutation);
+  for (const auto& root : r.roots) {
+    bool fits = root.x.size() == layout.free_coefficients.size();
+    for (long double v : root.x) fits = fits && std::isfinite(v) && std::abs(v) <= largest_coefficient;
+    if (!fits)
+      throw bad_input(where + ": a root of " + r.word + ":" + r.permutation + " is not " +
+                      std::to_string(layout.free_coefficients.size()) +
+                      " finite coefficients of a scheme (the file is damaged; remove it to start again)");
   }
+}
+
+// Systems already in the state file keep their starts and roots; a state of another problem, or one
+// that is not a state, is refused and left as it is.
+std::vector<solver::scanned_system> resumed_state(const fs::path& state, const sixth_search_request& q) {
+  if (state.empty() || !fs::exists(state)) return {};
+  const std::string where = "--out: " + one_line(state.string());
+  if (!fs::is_regular_file(state)) throw bad_input(where + " is not a regular file");
+  if (fs::file_size(state) > largest_state_bytes) throw bad_input(where + " is larger than any scan state (remove it to start again)");
+  std::ifstream in(state);
+  std::string first;
+  std::getline(in, first);
+  if (first.rfind("problem ", 0) != 0)
+    throw bad_input(where + " names no problem (an older rotlie wrote it, or it is not a scan state); remove it to start again");
+  const std::string problem = first.substr(8);
+  if (problem != problem_of(q))
+    throw bad_input(where + " is the scan of " + one_line(problem) + ", not of " + problem_of(q) +
+                    ": choose another --out, or remove it to start again");
+  std::vector<solver::scanned_system> systems;
+  try {
+    systems = solver::read_scan_state(in);
+  } catch (const std::invalid_argument& e) {
+    throw bad_input(where + ": " + e.what() + " (remove it to start again)");
+  }
+  for (const auto& r : systems) {
+    try {
+      check_roots(r, q.split, where);
+    } catch (const std::invalid_argument& e) {  // a word or permutation that is not one
+      if (dynamic_cast<const bad_input*>(&e)) throw;
+      throw bad_input(where + ": the system " + one_line(r.word + ":" + r.permutation) + " is not one of this splitting (remove it to start again)");
+    }
+  }
+  return systems;
 }
 
 // A root polished to the digits asked for and written as a table, or why it could not be (a root
@@ -118,8 +168,13 @@ std::vector<solver::scanned_system> sixth_order_systems(const std::string& words
 
 sixth_search_result sixth_search(const sixth_search_request& q, const std::function<void(const std::string&)>& progress) {
   const fs::path state = q.out.empty() ? fs::path() : q.out / "scan-state.txt";
-  if (!q.out.empty()) fs::create_directories(q.out);
-  auto done = resumed_state(state);
+  std::optional<exclusive_use> lock;  // one scan at a time in a folder, held until its tables are written
+  if (!q.out.empty()) {
+    fs::create_directories(q.out);
+    lock.emplace(q.out, "--out");
+  }
+  const std::string problem = problem_of(q);
+  auto done = resumed_state(state, q);
   solver::scan_rule rule;
   rule.budget = q.starts;
   const double cpu0 = cpu_seconds();
@@ -136,7 +191,7 @@ sixth_search_result sixth_search(const sixth_search_request& q, const std::funct
       progress("sixth: system " + std::to_string(index) + " of " + std::to_string(q.systems.size()) + ", " + a.word + ":" + a.permutation);
     const auto system = solver::sixth_order_conditions(bch::layout_scheme(a.word, q.split, a.permutation), q.body);
     solver::continue_scan(system, *it, rule);
-    if (!state.empty()) save_state(state, done);
+    if (!state.empty()) save_state(state, problem, done);
   }
   // Only the systems asked for are reported (the state may hold more).
   std::vector<solver::scanned_system> reported;

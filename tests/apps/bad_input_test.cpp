@@ -312,8 +312,9 @@ const std::vector<bad_input> cases = {
   {{"map", "--grid", "4"}, usage, "--family is required"},
   {{"map", "--family", "N"}, usage, "--grid is required"},
   {{"map", "--family", "Q", "--grid", "4", "--json"}, usage, "--family must be N, R or P"},
-  {{"map", "--family", "N", "--grid", "0", "--json"}, usage, "--grid must be at least 1"},
-  {{"map", "--family", "N", "--grid", "-5", "--json"}, usage, "--grid must be at least 1"},
+  {{"map", "--family", "N", "--grid", "0", "--json"}, usage, "--grid must be at least 2"},
+  {{"map", "--family", "N", "--grid", "-5", "--json"}, usage, "--grid must be at least 2"},
+  {{"map", "--family", "N", "--grid", "1", "--json"}, usage, "--grid must be at least 2"},  // no asymmetric body: once an empty map with exit 0
   {{"map", "--family", "N", "--grid", "100000", "--json"}, usage, "--grid must be at most 2000"},
   {{"map", "--family", "N", "--grid", "99999999999999999999", "--json"}, usage, "--grid must be at most"},
   {{"map", "--family", "N", "--grid", "1e3", "--json"}, usage, "--grid"},

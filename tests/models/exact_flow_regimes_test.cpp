@@ -11,6 +11,7 @@
 #include <boost/multiprecision/cpp_int.hpp>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -369,7 +370,7 @@ BOOST_AUTO_TEST_CASE(a_body_at_rest_stays_at_rest) {
   const models::exact_free_body<double> flow(I, start);
   BOOST_TEST(std::isinf(flow.max_time()));
   const auto r = flow.evaluate(1e6);
-  BOOST_TEST(r.error_estimate == 0.0);
+  BOOST_TEST(r.error_estimate <= 8 * std::numeric_limits<double>::epsilon());  // the floor of every estimate
   for (std::size_t i = 0; i < 9; ++i) BOOST_TEST(r.state.Q.a[i] == start.Q.a[i]);
   for (std::size_t i = 0; i < 3; ++i) BOOST_TEST(r.state.G[i] == 0.0);
 }

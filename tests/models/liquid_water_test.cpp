@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <random>
 #include <set>
 #include <unistd.h>
@@ -279,6 +280,15 @@ BOOST_AUTO_TEST_CASE(a_state_file_round_trips_and_refuses_another_system) {
     }
     return false;
   };
+  auto refused_path = [&](const std::filesystem::path& p, water_state_header<double> expected, const std::string& words) {
+    try {
+      water_state_header<double> g;
+      read_water_state(p, expected, g);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what()).find(words) != std::string::npos;
+    }
+    return false;
+  };
   auto other = h;
   other.molecules = 512;
   BOOST_TEST(refused(other, "holds 27 molecules, not 512"));
@@ -291,6 +301,27 @@ BOOST_AUTO_TEST_CASE(a_state_file_round_trips_and_refuses_another_system) {
   other = h;
   other.system = "dipole-field";
   BOOST_TEST(refused(other, "is for the system 'liquid-water'"));
+  // a damaged file is refused, never read as something it is not
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string good = text.str();
+  auto damaged = [&](const std::string& from, const std::string& to) {
+    std::string t = good;
+    const auto at = t.find(from);
+    BOOST_REQUIRE(at != std::string::npos);
+    t.replace(at, from.size(), to);
+    std::ofstream(path, std::ios::trunc) << t;
+  };
+  damaged("molecules 27\n", "molecules 27junk\n");
+  BOOST_TEST(refused(h, "is not a count"));
+  damaged("time_fs 0\n", "time_fs nan\n");
+  BOOST_TEST(refused(h, "time_fs"));
+  const auto first_row_end = good.find('\n', good.find("columns"));
+  const auto second_row_end = good.find('\n', first_row_end + 1);
+  damaged(good.substr(first_row_end, second_row_end - first_row_end), good.substr(first_row_end, second_row_end - first_row_end) + " 1");
+  BOOST_TEST(refused(h, "more than 18 numbers"));
+  BOOST_TEST(refused_path("/dev/zero", h, "is not a regular file"));
   std::filesystem::remove_all(dir);
 }
 

@@ -1,11 +1,16 @@
 // liquid-water: rigid TIP3P in a periodic box, vZS section V.C (Fig. 1): the energy fluctuation
 // ΔE/ΔV of one integrator and step, with its cost; the equilibrated start is kept in --state.
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <optional>
 #include <string>
 
 #include "rotlie/models/scenes/liquid_water_experiment.hpp"
 #include "rotlie/models/scenes/water_model.hpp"
+#include "rotlie/runs/exclusive_use.hpp"
 #include "rotlie/runs/md_json.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
 #include "scene_support.hpp"
@@ -36,6 +41,23 @@ scene_result run(const scene_request& request) {
   if (o.T_ps * 1000 / o.h_fs < 10) throw bad_input("--T must span at least 10 steps of --h (the fluctuations are rms over a run)");
   if (o.T_ps * 1000 / o.h_fs * o.runs > 1e9) throw bad_input("--T / --h × --runs exceeds 10⁹ steps");
   as_bad_input([&] { models::check_liquid_water_options(o); });  // a box below twice the cutoff
+  // --state: checked and its folder locked before the equilibration, so that a state that cannot be
+  // written, or a second run on the same folder, costs nothing
+  std::optional<exclusive_use> lock;
+  if (!o.state_file.empty()) {
+    namespace fs = std::filesystem;
+    const fs::path state = o.state_file;
+    const fs::path folder = state.has_parent_path() ? state.parent_path() : fs::path(".");
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec))
+      throw bad_input("--state: the folder '" + one_line(folder.string()) + "' does not exist");
+    lock.emplace(folder, "--state");
+    if (fs::exists(state, ec)) {
+      if (!fs::is_regular_file(state, ec)) throw bad_input("--state: '" + one_line(o.state_file) + "' is not a regular file");
+    } else if (::access(folder.c_str(), W_OK) != 0) {
+      throw bad_input("--state: cannot write into the folder '" + one_line(folder.string()) + "'");
+    }
+  }
   const auto rotor = rotor_table(integrator, models::tip3p_body_text());  // before the equilibration: a bad name costs nothing
   o.rotor_table = rotor ? &*rotor : nullptr;
   auto show = [&request](const std::string& text) {

@@ -78,7 +78,7 @@ class exact_free_body {
     if (!isfinite(static_cast<double>(t)) || abs(t) > max_time())
       throw std::domain_error("the exact flow is limited to |ω|·|t| ≤ 2^60 rad (|t| ≤ " +
                               std::to_string(static_cast<double>(max_time())) + " here)");
-    if (!(omega_ > 0)) return {initial_, T(0)};  // G = 0: the body does not turn
+    if (!(omega_ > 0)) return {initial_, bound<T>(T(0))};  // G = 0: the body does not turn (the estimate's floor, as everywhere)
     const T tau = ldexp_(t, eG_ - eI_);
     const auto e = core_.at(tau);
     // a state the scalar cannot represent has no estimate in it (1: nothing is known)

@@ -15,6 +15,9 @@
 // Reading checks the header against the system the caller expects (model, molecule count, box)
 // and refuses another system's file with one line saying what differs. Writing goes to a
 // temporary file renamed into place, so a failed write leaves no half-written state.
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -42,7 +45,7 @@ struct water_state_header {
 
 template <class T>
 void write_water_state(const std::filesystem::path& path, const water_state_header<T>& header, const rigid_bodies_state<T>& s) {
-  const std::filesystem::path tmp = path.string() + ".partial";
+  const std::filesystem::path tmp = path.string() + ".partial-" + std::to_string(::getpid());  // this process's own
   {
     std::ofstream out(tmp);
     if (!out) throw std::runtime_error("cannot write " + path.string());
@@ -71,9 +74,11 @@ template <class T>
 rigid_bodies_state<T> read_water_state(const std::filesystem::path& path, const water_state_header<T>& expected, water_state_header<T>& header) {
   using std::abs;
   using std::isfinite;
+  const std::string where = "state file " + path.string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw std::invalid_argument(where + " is not a regular file");
   std::ifstream in(path);
   if (!in) throw std::invalid_argument("cannot read state file " + path.string());
-  const std::string where = "state file " + path.string();
   auto field = [&](const std::string& key) {
     std::string line;
     if (!std::getline(in, line)) throw std::invalid_argument(where + ": ends before its '" + key + "' line");
@@ -85,10 +90,17 @@ rigid_bodies_state<T> read_water_state(const std::filesystem::path& path, const 
   header.model = field("model");
   const std::string count = field("molecules");
   const std::string box = field("box");
-  header.time_fs = parse_scalar<T>(field("time_fs"));
+  const std::string time = field("time_fs");
   field("columns");
   char* end = nullptr;
+  errno = 0;
   header.molecules = std::strtol(count.c_str(), &end, 10);
+  if (count.empty() || end == count.c_str() || *end != '\0' || errno != 0 || header.molecules < 1)
+    throw std::invalid_argument(where + ": 'molecules " + count.substr(0, 20) + "' is not a count");
+  (void)std::strtod(time.c_str(), &end);
+  if (time.empty() || *end != '\0') throw std::invalid_argument(where + ": 'time_fs " + time.substr(0, 20) + "' is not a number");
+  header.time_fs = parse_scalar<T>(time);
+  if (!isfinite(static_cast<double>(header.time_fs))) throw std::invalid_argument(where + ": its time_fs is not finite");
   header.box = parse_scalar<T>(box);
   if (header.system != expected.system)
     throw std::invalid_argument(where + " is for the system '" + header.system + "', not '" + expected.system + "'");
@@ -114,6 +126,8 @@ rigid_bodies_state<T> read_water_state(const std::filesystem::path& path, const 
       x = parse_scalar<T>(word);
       if (!isfinite(static_cast<double>(x))) throw std::invalid_argument(where + ": molecule " + std::to_string(k + 1) + " has a number that is not finite");
     }
+    if (std::string more; row >> more)
+      throw std::invalid_argument(where + ": molecule " + std::to_string(k + 1) + " has more than 18 numbers");
     auto& b = s.bodies[static_cast<std::size_t>(k)];
     for (int d = 0; d < 3; ++d) {
       b.q[d] = v[d];
