@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
       for (double n : adaptive ? std::vector<double>{1} : steps_per_orbit) {
         const auto p = runs::spin_cost_point_of(c, ref, name, 1 / n, min_cpu);
         curves[family].push_back(p);
-        std::printf("%s,%s,%.3g,%.4e,%.4e,%.0f\n", c.label.c_str(), family.c_str(), p.h, p.error, p.cpu_s, p.evaluations);
+        std::printf("\"%s\",%s,%.3g,%.4e,%.4e,%.0f\n", c.label.c_str(), family.c_str(), p.h, p.error, p.cpu_s, p.evaluations);
       }
     }
     // per body: CPU for a given error, error for a given CPU, as ratios
