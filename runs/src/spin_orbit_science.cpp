@@ -81,8 +81,12 @@ spin_section planar_section(const spin_body& body, double e, const std::vector<s
       a = spin_orbit_map(body, e, a, steps_per_orbit);
       b = spin_orbit_map(body, e, b, steps_per_orbit);
       const double d = state_distance(a, b);
-      growth += std::log(d / shadow_distance);
-      renormalise(a, b, d);
+      if (d > 0) {
+        growth += std::log(d / shadow_distance);
+        renormalise(a, b, d);
+      } else {
+        b = shadow_of(a);  // the two met (to round-off): start the shadow again
+      }
       out.trajectory.push_back(static_cast<int>(j));
       out.theta.push_back(std::remainder(models::spin_angle(a), pi));
       out.rate.push_back(a.G[2] / I[2]);
@@ -100,6 +104,10 @@ double lyapunov_per_orbit(const spin_body& body, double e, const models::body_st
     a = spin_orbit_map(body, e, a, steps_per_orbit);
     b = spin_orbit_map(body, e, b, steps_per_orbit);
     const double d = state_distance(a, b);
+    if (!(d > 0)) {  // the two met (to round-off): start the shadow again, no growth counted
+      b = shadow_of(a);
+      continue;
+    }
     growth += std::log(d / shadow_distance);
     renormalise(a, b, d);
   }
