@@ -3,7 +3,8 @@
 // 4th-order compositions and Boost.Odeint? Error of the final attitude (against RKF78 in long double)
 // against CPU time for the Moon, Mercury and Hyperion (runs::spin_cost_cases), then per body the CPU
 // each method needs for a given error and the error it reaches for a given CPU time, as ratios to the
-// exact rotor (SIER4) and to the best reference composition.
+// exact rotor (SIER4) and to the best reference composition. The best R, P and N rotors are those
+// `rotlie best --analytic-only` ranks first for each body.
 //   spin_bench [--quick]    CSV rows on stdout, then the summary tables
 #include <algorithm>
 #include <cmath>
@@ -27,9 +28,11 @@ std::vector<std::string> methods_for(const std::string& body) {
   if (body == "Hyperion") {
     m.push_back("SIER4/R:ABC:4");
     m.push_back("SIER4/P12:ABC:4");
+    m.push_back("SIER4/N4:ABC:3");  // the cheapest family (9 rotations), best N by ||H_R5||
   } else {
     m.push_back("SIER4/R:CBA:4");
     m.push_back("SIER4/P9:BCA:3");
+    m.push_back("SIER4/N3:BCA:3");
   }
   return m;
 }

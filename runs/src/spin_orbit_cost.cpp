@@ -59,15 +59,17 @@ spin_cost_point spin_cost_point_of(const spin_cost_case& c, const models::body_s
 }
 
 double cpu_at_error(const std::vector<spin_cost_point>& curve, double error) {
-  // the points sorted by error; the first pair that brackets `error` in log-log
+  // the cheapest point at or below `error`, interpolated in log-log with the next cheaper point (above
+  // it): the CPU time needed to reach the error; below round-off the curves turn up again and are not read
   auto pts = curve;
-  std::sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.error < b.error; });
-  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-    const auto &a = pts[i], &b = pts[i + 1];
-    if (a.error <= error && error <= b.error && a.error > 0) {
+  std::sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.cpu_s < b.cpu_s; });
+  for (std::size_t i = 1; i < pts.size(); ++i) {
+    const auto &a = pts[i - 1], &b = pts[i];
+    if (b.error <= error && a.error > error && b.error > 0) {
       const double u = std::log(error / a.error) / std::log(b.error / a.error);
       return std::exp(std::log(a.cpu_s) + u * std::log(b.cpu_s / a.cpu_s));
     }
+    if (b.error <= error) break;
   }
   return std::numeric_limits<double>::quiet_NaN();
 }

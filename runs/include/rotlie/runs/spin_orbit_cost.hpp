@@ -36,8 +36,9 @@ struct spin_cost_point {
 spin_cost_point spin_cost_point_of(const spin_cost_case& c, const models::body_state<long double>& reference, const std::string& method,
                                    double h, double min_cpu_s);
 
-/// CPU seconds a curve (points of one method) needs for `error`, by log-log interpolation between
-/// its two neighbouring points; NaN outside its range.
+/// CPU seconds a curve (points of one method) needs for `error`: the cheapest point at or below it,
+/// interpolated in log-log with the next cheaper one; NaN when the cheapest point is already below it or
+/// none reaches it.
 double cpu_at_error(const std::vector<spin_cost_point>& curve, double error);
 
 }  // namespace rotlie::runs
