@@ -61,7 +61,7 @@ std::string reworded(const CLI::ParseError& e, const CLI::App* sub) {
     return flag + " takes no value" + (equals == std::string::npos ? "" : ", got '" + what.substr(equals + 3) + "'");
   }
   if (dynamic_cast<const CLI::RequiredError*>(&e) && what.find("subcommand") != std::string::npos)
-    return "a subcommand is required (dims, stages, remainder, solve, integrate, order, exact, md, map, best, bch, sixth or report; see rotlie --help)";
+    return "a subcommand is required (dims, stages, remainder, solve, integrate, order, exact, md, map, best, bch, sixth, spin or report; see rotlie --help)";
   return what;
 }
 
@@ -217,7 +217,7 @@ subcommand add_report(CLI::App& app, report_command_options& report) {
   report_cmd->add_option("--out", report.out, "Output folder (default: rotlie-report)");
   report_cmd->add_flag("--quick", report.quick, "Smaller sweeps, for a fast look");
   report_cmd->add_option("--sections", report.sections,
-                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs, liquid-water, maps, maps-truth, beyond, two-parameter, audit");
+                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs, liquid-water, maps, maps-truth, beyond, two-parameter, spin-orbit, audit");
   report_cmd->add_flag("--full", report.full,
                        "The papers' full statistics: liquid water's nine 1-ps runs per point (about 30 min), maps over all bodies at "
                        "the paper's grid (--grid 200; hours for the P family)");
@@ -274,6 +274,26 @@ subcommand add_sixth(CLI::App& app, sixth_options& sixth) {
   return {sixth_cmd, with_folder_checked(sixth, run_sixth)};
 }
 
+// The spin-orbit scene (Touma & Wisdom): a triaxial body on a fixed Kepler orbit.
+subcommand add_spin(CLI::App& app, spin_options& spin) {
+  auto* spin_cmd = app.add_subcommand("spin", "A triaxial body on a fixed Kepler orbit under the quadrupole torque (G M = 1, a = 1, "
+                                              "period 2 pi): its final attitude and spin");
+  spin_cmd->add_option("--body", spin.body, "Hyperion, Moon, Mercury (cited moments), or A,B,C with A <= B <= C")->required();
+  spin_cmd->add_option("--e", spin.e, "Orbital eccentricity in [0, 1)")->required();
+  spin_cmd->add_option("--integrator", spin.integrator,
+                       "SIER2, SIER4 (exact rotor), MRDL, MRDL-reversed, SIER2/X, SIER4/X (rotor by scheme X: reference name, "
+                       "SCHEME:PERM:LABEL solved for the body, or a table file), odeint-dopri5[:TOL], odeint-rkf78[:TOL] (default TOL 1e-10)")
+      ->required();
+  spin_cmd->add_option("--h", spin.h, "The step as a fraction of the orbital period, e.g. 1/1000")->required();
+  spin_cmd->add_option("--T", spin.T, "Length of the run in orbits (whole steps)")->required();
+  spin_cmd->add_option("--theta0", spin.theta0, "Initial rotation of the axes A, B, C about z, radians (default 0)");
+  spin_cmd->add_option("--omega0", spin.omega0, "Initial spin about the C axis, units of the mean motion n (default 1)");
+  spin_cmd->add_option("--obliquity", spin.obliquity, "Initial tilt of the C axis about x, radians (default 0)");
+  spin_cmd->add_option("--scalar", spin.scalar, "double, long-double or float128 (default double)");
+  spin_cmd->add_flag("--json", spin.json, "Machine-readable output on stdout");
+  return {spin_cmd, [&spin] { return run_spin(spin); }};
+}
+
 // Every subcommand's options, filled by CLI11 while it parses: it keeps pointers to them, so they
 // live as long as the parse and are never moved.
 struct all_options {
@@ -290,13 +310,15 @@ struct all_options {
   best_options best;
   bch_options bch;
   sixth_options sixth;
+  spin_options spin;
 };
 
 // The command tree, in the order of rotlie --help.
 std::vector<subcommand> add_subcommands(CLI::App& app, all_options& o) {
   return {add_dims(app, o.dims), add_stages(app, o.stages), add_remainder(app, o.remainder), add_solve(app, o.solve),
           add_integrate(app, o.integrate), add_order(app, o.order), add_exact(app, o.exact), add_md(app, o.md),
-          add_report(app, o.report), add_map(app, o.map), add_best(app, o.best), add_bch(app, o.bch), add_sixth(app, o.sixth)};
+          add_report(app, o.report), add_map(app, o.map), add_best(app, o.best), add_bch(app, o.bch), add_sixth(app, o.sixth),
+          add_spin(app, o.spin)};
 }
 
 // The subcommand argv[1] names, if any.

@@ -29,6 +29,7 @@ const std::vector<std::pair<std::string, section_function>>& all_sections() {
       {"maps-truth", maps_truth_section},
       {"beyond", beyond_section},
       {"two-parameter", two_parameter_section},
+      {"spin-orbit", spin_orbit_section},
       {"audit", audit_section}};
   return sections;
 }

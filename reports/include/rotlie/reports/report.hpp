@@ -76,6 +76,11 @@ report_section beyond_section(const report_options& options);
 /// Section "Beyond the paper: two free parameters at order 4": the Q and QRS families for water.
 report_section two_parameter_section(const report_options& options);
 
+/// Section "Spin–orbit": a body on a fixed Kepler orbit (issue 24): Hyperion's surface of section and
+/// Lyapunov estimates, its synchronous state's tilt instability, Mercury in 3:2, the Moon's libration,
+/// error against CPU time.
+report_section spin_orbit_section(const report_options& options);
+
 /// Section "Audit of the paper's statements": LV sections 4-5 against this run's numbers (last).
 report_section audit_section(const report_options& options);
 

@@ -1,0 +1,27 @@
+#include "rotlie/reports/spin_io.hpp"
+
+namespace rotlie::reports {
+
+nlohmann::json spin_json(const runs::spin_result& r) {
+  const auto& s = r.setup;
+  const auto I = runs::spin_moments(s.body);
+  nlohmann::json Q = nlohmann::json::array();
+  for (int i = 0; i < 3; ++i) Q.push_back({r.Q(i, 0), r.Q(i, 1), r.Q(i, 2)});
+  return {{"body", s.body.name},
+          {"moments", {I[0], I[1], I[2]}},
+          {"e", s.e},
+          {"integrator", s.method.name},
+          {"scalar", s.scalar},
+          {"h", s.h},
+          {"T", s.T},
+          {"steps", s.steps},
+          {"evaluations", r.evaluations},
+          {"Q", Q},
+          {"omega_body", {r.omega_body[0], r.omega_body[1], r.omega_body[2]}},
+          {"theta", r.theta},
+          {"energy_start", r.energy_start},
+          {"energy_end", r.energy_end},
+          {"cpu_s", r.cpu_s}};
+}
+
+}  // namespace rotlie::reports

@@ -1,0 +1,87 @@
+#pragma once
+// The spin–orbit scene on the library floor (`rotlie spin`, the report's "Spin–orbit" section and
+// bench/spin_bench): a body named or given as A,B,C, an integrator named as the command line names it,
+// the run checked and carried out in double, long double or float128.
+//
+// Named bodies (moments with C = 1; the orbit's eccentricity beside them):
+//   Hyperion  uniform ellipsoid of semi-axes 190 × 145 × 114 km, (B − A)/C = 0.264, i.e. Wisdom,
+//             Peale & Mignard (1984)'s ω₀ = √(3(B − A)/C) = 0.89; e = 0.1
+//   Moon      β = (C − A)/B = 631.0e-6, γ = (B − A)/C = 227.7e-6 (lunar laser ranging and GRAIL,
+//             Williams et al. 2014); e = 0.0549
+//   Mercury   C/MR² = 0.346 (Margot et al. 2012), J₂ = 5.031e-5 and C₂₂ = 0.809e-5 (MESSENGER,
+//             Smith et al. 2012): (B − A)/C = 4C₂₂/(C/MR²) = 9.35e-5, (C − A)/C = (J₂ + 2C₂₂)/(C/MR²); e = 0.2056
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rotlie/lie/rigid_body.hpp"
+#include "rotlie/models/md_integrators.hpp"
+#include "rotlie/models/scenes/spin_orbit_odeint.hpp"
+#include "rotlie/models/small_matrix.hpp"
+#include "rotlie/schemes/scheme_table.hpp"
+
+namespace rotlie::runs {
+
+/// A body of the scene: moments A ≤ B ≤ C as exact text "A,B,C" (named bodies: C = 1).
+struct spin_body {
+  std::string name;        ///< Hyperion, Moon, Mercury, or the moments as typed
+  std::string moments;     ///< "A,B,C", exact decimals or rationals
+  double orbit_e = 0;      ///< the real orbit's eccentricity (named bodies)
+  std::string source;      ///< where the moments come from
+};
+
+/// The named bodies, in the order above.
+const std::vector<spin_body>& spin_bodies();
+
+/// A name of spin_bodies() or "A,B,C" with 0 < A ≤ B ≤ C (eq. 77); throws bad_input naming --body.
+spin_body spin_body_named(const std::string& text);
+
+/// An integrator of the scene: a splitting (SIER2, SIER4, MRDL, MRDL-reversed, SIER2/X, SIER4/X with the
+/// rotor table X resolved for the body) or Boost.Odeint's adaptive odeint-dopri5[:TOL], odeint-rkf78[:TOL].
+struct spin_method {
+  std::string name;
+  bool adaptive = false;                       ///< an Odeint method
+  models::odeint_method ode = models::odeint_method::dopri5;
+  double tolerance = 1e-10;                    ///< absolute and relative (Odeint)
+  models::md_integrator splitting;             ///< the TV table and rotor (splittings)
+  std::optional<schemes::scheme_table> rotor;  ///< the rotor table solved or read for the body
+};
+
+/// Throws bad_input naming --integrator.
+spin_method spin_method_named(const std::string& name, const spin_body& body);
+
+/// What a user types (the command line's contract, the strings as given).
+struct spin_request {
+  std::string body, e, integrator, h, T, theta0 = "0", omega0 = "1", obliquity = "0", scalar = "double";
+};
+
+/// The checked run: h a fraction of the orbital period, T in orbits, steps = round(T/h) (the step
+/// used is 2π T/steps, so that the run ends at T exactly).
+struct spin_setup {
+  spin_body body;
+  spin_method method;
+  double e = 0, h = 0, T = 0, theta0 = 0, omega0 = 1, obliquity = 0;
+  long steps = 0;
+  std::string scalar = "double";
+};
+
+/// Throws bad_input (one line naming the option) for anything that does not describe a run.
+spin_setup spin_setup_of(const spin_request& request);
+
+struct spin_result {
+  spin_setup setup;
+  models::mat3<double> Q{};         ///< final attitude: columns the body axes A, B, C in the inertial frame
+  models::vec3<double> omega_body{};  ///< final angular velocity in the body frame (units of n)
+  double theta = 0;                 ///< the A axis' angle in the inertial xy plane
+  double energy_start = 0, energy_end = 0;  ///< T + V(t) at 0 and at the end
+  double cpu_s = 0;                 ///< CPU seconds of the stepping
+  long evaluations = 0;             ///< torque evaluations (force_evaluations; right-hand sides for Odeint)
+};
+
+/// Runs the setup in its scalar. Throws std::runtime_error when the run diverges.
+spin_result spin_run(const spin_setup& setup);
+
+/// The moments of a body in double (A, B, C).
+models::vec3<double> spin_moments(const spin_body& body);
+
+}  // namespace rotlie::runs
