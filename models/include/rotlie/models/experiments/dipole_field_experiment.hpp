@@ -85,12 +85,15 @@ dipole_field_result run_dipole_field(const dipole_field<T>& scene, const md_inte
         const T dH = detail::shifted_rms(sH, sH2, n), dV = detail::shifted_rms(sV, sV2, n);
         const T dL = detail::shifted_rms(sL, sL2, n);
         using std::abs;
-        const double ratio = static_cast<double>(100 * dH / dV), lz = static_cast<double>(dL / abs(lsum / T(n)));
-        if (!std::isfinite(ratio) || !std::isfinite(lz)) {
+        // no division by zero: V that did not fluctuate, or a zero mean L_z, gives no number
+        const T mean_L = abs(lsum / T(n));
+        const double ratio = dV > 0 ? static_cast<double>(100 * dH / dV) : std::nan("");
+        const double lz_ratio = mean_L > 0 ? static_cast<double>(dL / mean_L) : std::nan("");
+        if (!std::isfinite(ratio) || !std::isfinite(lz_ratio)) {
           ++r.undefined_runs;
         } else {
           r.dH_over_dV_percent.push_back(ratio);
-          r.dLz_over_Lz.push_back(lz);
+          r.dLz_over_Lz.push_back(lz_ratio);
 
         }
       }

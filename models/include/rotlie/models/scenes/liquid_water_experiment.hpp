@@ -183,13 +183,13 @@ inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& 
         return std::isnan(v) ? v : std::sqrt(std::max(0.0, v));
       };
       const double dE = rms(e_sq, e_sum), dV = rms(v_sq, v_run);
-      const double ratio = 100 * dE / dV;
+      const double ratio = dV > 0 ? 100 * dE / dV : std::nan("");  // no division by zero
       if (!std::isfinite(ratio))
         throw std::runtime_error("run " + std::to_string(run + 1) + ": ΔE/ΔV is not a number (" +
                                  (dV == 0 ? std::string("the potential did not fluctuate") : "the energies' squares are beyond double's range") +
                                  "): the state is not one the scene can measure");
       r.ratio_percent.push_back(ratio);
-      if (progress) progress("run " + std::to_string(run + 1) + "/" + std::to_string(o.runs) + ": ΔE/ΔV = " + std::to_string(100 * dE / dV) + " %");
+      if (progress) progress("run " + std::to_string(run + 1) + "/" + std::to_string(o.runs) + ": ΔE/ΔV = " + std::to_string(ratio) + " %");
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.steps = steps * o.runs;
