@@ -57,6 +57,25 @@ double orbital_period_amplitude(const std::vector<double>& gamma) {
   return 2 * std::hypot(c, s) / static_cast<double>(n);
 }
 
+// A state and its shadow at shadow_distance, carried one orbit at a time (Benettin's renormalisation):
+// growth sums the log of the separation's growth per orbit.
+struct shadowed_orbit {
+  models::body_state<double> a, b;
+  double growth = 0;
+  explicit shadowed_orbit(const models::body_state<double>& start) : a(start), b(shadow_of(start)) {}
+  void advance(const spin_body& body, double e, long steps_per_orbit) {
+    a = spin_orbit_map(body, e, a, steps_per_orbit);
+    b = spin_orbit_map(body, e, b, steps_per_orbit);
+    const double d = state_distance(a, b);
+    if (!(d > 0)) {  // the two met (to round-off): start the shadow again, no growth counted
+      b = shadow_of(a);
+      return;
+    }
+    growth += std::log(d / shadow_distance);
+    renormalise(a, b, d);
+  }
+};
+
 }  // namespace
 
 models::body_state<double> spin_orbit_map(const spin_body& body, double e, const models::body_state<double>& s, long steps) {
@@ -74,44 +93,22 @@ spin_section planar_section(const spin_body& body, double e, const std::vector<s
   const auto I = spin_moments_in<double>(body);
   spin_section out;
   for (std::size_t j = 0; j < starts.size(); ++j) {
-    auto a = models::spin_orbit_start<double>(I, starts[j].first, starts[j].second, 0.0);
-    auto b = shadow_of(a);
-    double growth = 0;
+    shadowed_orbit o(models::spin_orbit_start<double>(I, starts[j].first, starts[j].second, 0.0));
     for (int k = 0; k < orbits; ++k) {
-      a = spin_orbit_map(body, e, a, steps_per_orbit);
-      b = spin_orbit_map(body, e, b, steps_per_orbit);
-      const double d = state_distance(a, b);
-      if (d > 0) {
-        growth += std::log(d / shadow_distance);
-        renormalise(a, b, d);
-      } else {
-        b = shadow_of(a);  // the two met (to round-off): start the shadow again
-      }
+      o.advance(body, e, steps_per_orbit);
       out.trajectory.push_back(static_cast<int>(j));
-      out.theta.push_back(std::remainder(models::spin_angle(a), pi));
-      out.rate.push_back(a.G[2] / I[2]);
+      out.theta.push_back(std::remainder(models::spin_angle(o.a), pi));
+      out.rate.push_back(o.a.G[2] / I[2]);
     }
-    out.lyapunov.push_back(growth / orbits);
+    out.lyapunov.push_back(o.growth / orbits);
   }
   return out;
 }
 
 double lyapunov_per_orbit(const spin_body& body, double e, const models::body_state<double>& start, int orbits, long steps_per_orbit) {
-  auto a = start;
-  auto b = shadow_of(a);
-  double growth = 0;
-  for (int k = 0; k < orbits; ++k) {
-    a = spin_orbit_map(body, e, a, steps_per_orbit);
-    b = spin_orbit_map(body, e, b, steps_per_orbit);
-    const double d = state_distance(a, b);
-    if (!(d > 0)) {  // the two met (to round-off): start the shadow again, no growth counted
-      b = shadow_of(a);
-      continue;
-    }
-    growth += std::log(d / shadow_distance);
-    renormalise(a, b, d);
-  }
-  return growth / orbits;
+  shadowed_orbit o(start);
+  for (int k = 0; k < orbits; ++k) o.advance(body, e, steps_per_orbit);
+  return o.growth / orbits;
 }
 
 double resonant_rate(const spin_body& body, double e, double p, double lo, double hi, long steps_per_orbit) {
