@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "rotlie/models/md_integrators.hpp"
 #include "rotlie/models/scenes/lammps_water_io.hpp"
@@ -100,5 +101,38 @@ inline double largest_distance(const std::map<long, vec3<double>>& a, const std:
 }
 
 inline const std::string final_dump = "write_dump all custom final.dump id xu yu zu modify format float %.17g sort id\n";
+
+/// `steps` steps of 1 fs of `fix_line` (e.g. "fix r all rigid/sier2/small molecule") in lmp_rotlie on
+/// the 216-molecule DSF start, against rotlie's own `integrator` on the same start: the largest site
+/// distance (Å), compared modulo the box since LAMMPS's unwrapped positions start from wrapped centres.
+/// `output` receives LAMMPS's output when the run fails (the distance is then infinite).
+inline double largest_distance_to_rotlie(const std::string& folder, const std::string& fix_line, const char* integrator, int steps,
+                                         std::string& output) {
+  const auto start = liquid_start(216);
+  scratch d(folder);
+  write_lammps_water_data(d.dir / "water.data", start.w, start.s.bodies);
+  const std::string input = water_head + lammps_water_pair_lines(start.w) + fix_line + "\ntimestep 1.0\nthermo 100\nrun " +
+                            std::to_string(steps) + "\n" + final_dump;
+  if (d.run("in.water", input) != 0) {
+    output = d.output;
+    return INFINITY;
+  }
+  const auto rows = read_lammps_dump(d.dir / "final.dump");
+  if (rows.size() != 3 * 216u) return INFINITY;
+  auto s = start.s;
+  with_md_integrator(md_integrator_named(integrator), nullptr, tip3p<double>().mass, tip3p<double>().moments, start.w, [&](const auto& m) {
+    for (int k = 0; k < steps; ++k) m.step(s, 1.0);
+    return 0;
+  });
+  std::vector<vec3<double>> x;
+  start.w.site_positions(s.bodies, x);
+  double worst = 0;
+  for (const auto& [id, r] : rows) {
+    const auto& y = x[static_cast<std::size_t>(id - 1)];
+    const vec3<double> dx = minimum_image(vec3<double>{r[0] - y[0], r[1] - y[1], r[2] - y[2]}, start.L);
+    worst = std::max(worst, std::sqrt(dot(dx, dx)));
+  }
+  return worst;
+}
 
 }  // namespace rotlie_lammps_test
