@@ -7,63 +7,43 @@
 #include <iostream>
 #include <sstream>
 
-#include "arguments.hpp"
 #include "commands.hpp"
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/two_parameter_io.hpp"
-#include "rotlie/solver/two_parameter.hpp"
-#include "rotlie/runs/body_names.hpp"
 #include "rotlie/runs/family_names.hpp"
-#include "rotlie/runs/scheme_names.hpp"
+#include "rotlie/runs/two_parameter_solve.hpp"
 
 namespace rotlie::app {
 namespace {
-
-constexpr int max_digits = 300;
-constexpr long max_starts = 100000;
 
 std::string decimal(const cln::cl_RA& x) { return lie::to_decimal(x, 2); }
 
 }  // namespace
 
 int run_solve_two_parameter(const solve_options& options) {
-  const auto split = runs::family_to_solve(options.family).split;
-  auto words = solver::two_parameter_words(split);
-  if (!options.scheme.empty()) {
-    if (std::find(words.begin(), words.end(), options.scheme) == words.end())
-      throw usage_error("--scheme '" + options.scheme + "' is not a word of the " + options.family + " family (" + words.front() +
-                        " … " + words.back() + ")");
-    words = {options.scheme};
-  }
-  const std::vector<std::string> perms = runs::permutations_named(options.perm);
-  const lie::moments_of_inertia body = runs::required_body(options.inertia);
-  const int digits = static_cast<int>(parse_integer_in_range(options.digits, "--digits", 10, max_digits));
-  solver::minimum_search_options search;
-  search.starts = static_cast<int>(parse_integer_in_range(options.starts, "--starts", 1, max_starts));
-  search.seed = static_cast<std::uint64_t>(parse_integer_in_range(options.seed, "--seed", 0, 1L << 62));
-
-  const auto result = solver::solve_two_parameter(body, split, words, perms, search, digits);
+  const auto solved = runs::solve_two_parameter(
+      {options.family, options.scheme, options.perm, options.inertia, options.digits, options.starts, options.seed});
+  const auto& result = solved.result;
   if (!options.out.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(options.out, ec);
     if (ec) throw std::runtime_error("cannot create the output folder " + options.out + ": " + ec.message());
     for (const auto& e : result.entries) {
       if (!e.polished) continue;
-      const auto s = solver::two_parameter_conditions(bch::layout_scheme(e.word, split, e.permutation), body);
       std::string file = runs::two_parameter_name(e);
       std::replace(file.begin(), file.end(), ':', '_');
       reports::write_file_atomically(std::filesystem::path(options.out) / (file + ".scheme"),
-                                     solver::two_parameter_table_text(s, e.best, digits, body, runs::two_parameter_name(e),
-                                                                      "rotlie solve --family " + options.family));
+                                     solved.table_text(e, "rotlie solve --family " + options.family));
     }
   }
   if (options.json) {
-    std::cout << reports::two_parameter_json(result, options.family, body, digits, search.starts).dump(2) << "\n";
+    std::cout << reports::two_parameter_json(result, options.family, solved.body, solved.digits, solved.search.starts).dump(2)
+              << "\n";
     return 0;
   }
   std::cout << "Two free parameters at order 4 (" << options.family << ", " << result.entries.size() << " systems, "
-            << search.starts << " starts each, " << std::fixed << std::setprecision(1) << result.seconds << " s CPU)\n"
+            << solved.search.starts << " starts each, " << std::fixed << std::setprecision(1) << result.seconds << " s CPU)\n"
             << std::defaultfloat;
   std::cout << "rank  scheme  ||H_R5||  minima(hits of converged/starts)  projected-gradient  order-residual\n";
   int rank = 0;

@@ -60,16 +60,22 @@ _rotlie_save = Scheme.save
 Scheme.save = _save
 
 
-def solve(body, family: str = "N", perm: str | None = None, scheme: str | None = None, digits: int = 40) -> list[Scheme]:
+def solve(body, family: str = "N", perm: str | None = None, scheme: str | None = None, digits: int = 40,
+          starts: int | None = None, seed: int | None = None) -> list[Scheme]:
     """Every real solution of a dedicated family for ``body``, ranked by ||H_R5|| (eq. 64) as ``rotlie solve``.
 
-    ``family``: N, R or P; ``perm``: one permutation (ABC, BCA, CAB, ACB, CBA, BAC) or all (None);
-    ``scheme``: one member (N2) or all (None); ``digits``: 10 … 300, the coefficients' decimal digits.
-    Each Scheme is named ``SCHEME:PERM:LABEL`` and carries ``remainder_norm`` (||H_R5||, natural units,
-    the body scaled to I3 = 1).
+    ``family``: N, R or P (every real solution, exact elimination), or Q or QRS (two free parameters:
+    the smallest local minimum of ||H_R5|| found on each system's surface H_R3 = 0 from ``starts``
+    random starts, default 40, drawn from ``seed``, default 1; systems where no minimum was polished
+    are left out); ``perm``: one permutation (ABC, BCA, CAB, ACB, CBA, BAC) or all (None); ``scheme``:
+    one member (N2; a word for Q, QRS) or all (None); ``digits``: 10 … 300, the coefficients' decimal
+    digits. Each Scheme is named ``SCHEME:PERM:LABEL`` (``FAMILY:WORD:PERM`` for Q, QRS) and carries
+    ``remainder_norm`` (||H_R5||, natural units, the body scaled to I3 = 1).
     """
     return _rotlie.solve(body_text(body), str(family), "all" if perm is None else str(perm),
-                         "" if scheme is None else str(scheme), operator.index(digits))
+                         "" if scheme is None else str(scheme), operator.index(digits),
+                         "" if starts is None else str(operator.index(starts)),
+                         "" if seed is None else str(operator.index(seed)))
 
 
 def _rows(G0, Q0):

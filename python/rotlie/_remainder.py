@@ -60,10 +60,13 @@ def remainder(scheme_or_word, order: int = 5, body=None, perm: str | None = None
         parts = s.name.split(":")
         if len(parts) != 3:
             raise ValueError(f"{s.name}: remainder takes a Scheme solved here (SCHEME:PERM:LABEL), a name or a word")
-        word, perm = parts[0], parts[1] if perm is None else perm
+        if parts[0] in ("Q", "QRS"):  # FAMILY:WORD:PERM, a system of two free parameters
+            word, perm, split = parts[1], parts[2] if perm is None else perm, "ABC" if parts[0] == "Q" else "RS"
+        else:
+            word, perm = parts[0], parts[1] if perm is None else perm
         if body is None and s.inertia:
             body = ",".join(s.inertia.split())
-        free = set(_rotlie.free_coefficients(word, perm))
+        free = set(_rotlie.free_coefficients(word, perm, "" if split is None else str(split)))
         for name, (_, value) in zip(s.stage_names, s.stages):
             if name in free:
                 coefficient_items.setdefault(name, value)

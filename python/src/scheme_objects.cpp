@@ -19,6 +19,7 @@
 #include "rotlie/runs/family_names.hpp"
 #include "rotlie/runs/output_file.hpp"
 #include "rotlie/runs/scheme_names.hpp"
+#include "rotlie/runs/two_parameter_solve.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
@@ -85,15 +86,30 @@ scheme_object scheme_by_name(const std::string& name, const std::string& body, b
   return *out;
 }
 
+// Q, QRS: every searched system whose best minimum was polished, ranked as `rotlie solve` ranks them.
+std::vector<scheme_object> solve_two_parameter(const runs::two_parameter_inputs& inputs) {
+  const auto solved = runs::solve_two_parameter(inputs);
+  std::vector<scheme_object> out;
+  for (const auto& e : solved.result.entries)
+    if (e.polished)
+      out.push_back({schemes::parse_scheme_table(solved.table_text(e, "rotlie.solve(family=\"" + inputs.family + "\")")),
+                     e.best.remainder});
+  return out;
+}
+
 std::vector<scheme_object> solve(const std::string& body, const std::string& family, const std::string& perm,
-                                 const std::string& scheme, long digits) {
+                                 const std::string& scheme, long digits, const std::string& starts, const std::string& seed) {
   auto out = std::make_shared<std::vector<scheme_object>>();
   auto sink = std::make_shared<warnings>();
   run_symbolic([=] {
     const auto& f = runs::family_to_solve(family);
-    if (f.kind == bch::family_kind::two_free_parameters)
-      throw runs::bad_input("--family " + family +
-                            ": the two-parameter searches are not offered from Python (use rotlie solve --family " + family + ")");
+    if (f.kind == bch::family_kind::two_free_parameters) {
+      *out = solve_two_parameter({family, scheme, perm, body, std::to_string(digits), starts.empty() ? "40" : starts,
+                                  seed.empty() ? "1" : seed});
+      return;
+    }
+    if (!starts.empty() || !seed.empty())
+      throw runs::bad_input("--starts and --seed apply to the families of two free parameters (Q, QRS), not " + family);
     const auto members = runs::members_asked(f, scheme);
     const auto perms = runs::permutations_named(perm);
     const auto moments = runs::required_body(body);
@@ -173,7 +189,8 @@ void bind_schemes(py::module_& m) {
       });
   m.def("load_table", &load_table, py::arg("path"));
   m.def("scheme", &scheme_by_name, py::arg("name"), py::arg("body"), py::arg("force"));
-  m.def("solve", &solve, py::arg("body"), py::arg("family"), py::arg("perm"), py::arg("scheme"), py::arg("digits"));
+  m.def("solve", &solve, py::arg("body"), py::arg("family"), py::arg("perm"), py::arg("scheme"), py::arg("digits"),
+        py::arg("starts"), py::arg("seed"));
 }
 
 }  // namespace rotlie::python

@@ -1,6 +1,11 @@
 #include "rotlie/reports/remainder_io.hpp"
 
+#include <cln/rational.h>
+#include <cln/real.h>
+
 #include <sstream>
+
+#include "rotlie/lie/exact_number.hpp"
 
 #include "rotlie/reports/expression_io.hpp"
 
@@ -8,6 +13,18 @@ namespace rotlie::reports {
 namespace {
 
 std::string split_name(const bch::remainder_result& r) { return r.layout.split == bch::splitting::abc ? "ABC" : "RS"; }
+
+// A body in another unit moves H_Rk's coefficients by powers of its scale (H_R5 of a body in units
+// of 1e-100 is ~1e500): beyond a double's range a numeric `value` would be null or 0, so the exact
+// coefficient is given there as a decimal string instead (17 significant digits).
+nlohmann::json value_of(const GiNaC::numeric& n) {
+  static const cln::cl_RA largest = cln::expt(cln::cl_RA(10), 300), smallest = cln::recip(largest);
+  if (n.is_rational()) {
+    const cln::cl_RA x = cln::the<cln::cl_RA>(n.to_cl_N());
+    if (!cln::zerop(x) && (cln::abs(x) > largest || cln::abs(x) < smallest)) return lie::to_decimal(x, 17);
+  }
+  return n.to_double();
+}
 
 std::string title(const bch::remainder_result& r) {
   std::string t = r.name.empty() ? r.layout.word : r.name + " (" + r.layout.word + ")";
@@ -22,7 +39,7 @@ nlohmann::json remainder_json(const bch::remainder_result& r) {
     nlohmann::json terms = nlohmann::json::array();
     for (const auto& [m, c] : r.k.remainder[static_cast<std::size_t>(k)].terms()) {
       nlohmann::json t = {{"G", {m[0], m[1], m[2]}}, {"coeff", format_expression(c, r.symbols, expression_style::text)}};
-      if (GiNaC::is_a<GiNaC::numeric>(c)) t["value"] = GiNaC::ex_to<GiNaC::numeric>(c).to_double();
+      if (GiNaC::is_a<GiNaC::numeric>(c)) t["value"] = value_of(GiNaC::ex_to<GiNaC::numeric>(c));
       terms.push_back(std::move(t));
     }
     orders.push_back({{"order", k}, {"terms", terms}});

@@ -32,6 +32,22 @@ def test_messages_match_the_command_line():
                   "order", "--scheme", "ABCBA2", "--inertia", "water", "--min-level", "5", "--max-level", "3")
 
 
+def test_remainder_and_two_parameter_limits_match_the_command_line():
+    """The limits on a raw word (runs/remainder_run) and the Q, QRS inputs are refused as by the CLI."""
+    raises_as_cli(lambda: rotlie.remainder("ABCBACBCBABCBACBA", order=7),
+                  "remainder", "--scheme", "ABCBACBCBABCBACBA", "--order", "7")
+    raises_as_cli(lambda: rotlie.remainder("AB" * 21 + "C", order=3), "remainder", "--scheme", "AB" * 21 + "C", "--order", "3")
+    raises_as_cli(lambda: rotlie.remainder("ABABA", order=3), "remainder", "--scheme", "ABABA", "--order", "3")
+    raises_as_cli(lambda: rotlie.remainder("ABCBA", order=3, coeffs={"x": 1}),
+                  "remainder", "--scheme", "ABCBA", "--order", "3", "--coeffs", "x=1")
+    raises_as_cli(lambda: rotlie.solve(WATER, family="Q", scheme="ABCBA"),
+                  "solve", "--family", "Q", "--scheme", "ABCBA", "--inertia", "water")
+    raises_as_cli(lambda: rotlie.solve(WATER, family="QRS", starts=0),
+                  "solve", "--family", "QRS", "--starts", "0", "--inertia", "water")
+    with pytest.raises(ValueError, match="--starts and --seed apply to"):
+        rotlie.solve(WATER, family="N", seed=3)
+
+
 def test_bad_arrays_and_values():
     s = rotlie.scheme("ABCBA4-SS3-Yoshida")
     with pytest.raises(ValueError):

@@ -1,4 +1,6 @@
 """solve: the same schemes, coefficients and ranking as `rotlie solve --json`."""
+from fractions import Fraction
+
 import rotlie
 
 from conftest import cli
@@ -29,3 +31,28 @@ def test_one_member_one_permutation_more_digits():
     # a solved scheme by its name is the same table as solve's at the default 40 digits
     at_40 = rotlie.solve("0.4,0.7,1", family="N", perm="BAC", scheme="N2")
     assert rotlie.scheme(at_40[0].name, rotlie.Body("0.4", "0.7", "1")) == at_40[0]
+
+
+def test_water_QRS_family_as_the_command_line():
+    """The two-parameter search (Q, QRS): the same systems, minima and coefficients as the CLI."""
+    expected = cli("solve", "--family", "QRS", "--inertia", "water", "--starts", "12", "--seed", "7", "--json")
+    schemes = rotlie.solve("water", family="QRS", starts=12, seed=7)
+    polished = [e for e in expected["systems"] if e["polished"]]
+    assert len(schemes) == len(polished) > 0
+    for s, e in zip(schemes, polished):
+        assert s.name == e["name"]
+        assert s.remainder_norm == e["remainder"]
+        assert s.order == 4
+        assert dict(zip(s.stage_names, (value for _, value in s.stages))) == e["coefficients"]
+
+
+def test_a_two_parameter_scheme_is_of_order_four():
+    """A Q scheme leaves H_R2 and H_R3 at its written digits (LV eq. 52) and converges at order 4 (a second method)."""
+    best = rotlie.solve("water", family="Q", scheme="ABACBABABCABA", perm="ABC", starts=8)[0]
+    assert best.name == "Q:ABACBABABCABA:ABC"
+    r = rotlie.remainder(best, order=5)
+    assert r.free == []
+    assert all(abs(Fraction(c)) < Fraction(1, 10**35) for k in (2, 3) for c in r.terms[k].values())
+    assert any(abs(Fraction(c)) > Fraction(1, 10**6) for c in r.terms[5].values())
+    measured = rotlie.order(best, "water", scalar="float128", min_level=2, max_level=5)
+    assert abs(measured["slope"] - 4) < 0.1
