@@ -8,6 +8,7 @@
 
 #include "rotlie/bch/lyndon_projection.hpp"
 #include "rotlie/bch/word_coefficients.hpp"
+#include "rotlie/lie/stop_request.hpp"
 
 namespace rotlie::bch {
 namespace {
@@ -41,6 +42,7 @@ exact_lie_series project(free_series name, const std::vector<std::uint8_t>& fact
   const auto& basis = *s.basis;
   for (int d = 1; d <= max_degree; ++d) {
     if (odd_only && d % 2 == 0) continue;
+    lie::stop_point();
     check_word_coefficient_bound(d, factors.size());
     s.denominator[static_cast<std::size_t>(d)] = word_denominator(d);
     const std::size_t first = basis.begin(d), count = basis.end(d) - first;

@@ -10,6 +10,8 @@
 #include <mutex>
 #include <thread>
 
+#include "rotlie/lie/stop_request.hpp"
+
 namespace rotlie::python {
 namespace {
 
@@ -17,6 +19,7 @@ namespace py = pybind11;
 using namespace std::chrono_literals;
 
 constexpr auto poll_interval = 50ms;  // the longest a Ctrl-C waits to be seen
+constexpr auto stop_grace = 500ms;    // the longest an interrupted symbolic call waits for its stop point
 
 // One finished-or-not flag with the work's exception, shared by the worker and the waiting caller.
 struct completion {
@@ -91,18 +94,27 @@ void run_symbolic(std::function<void()> work) {
   static const bool registered = [] { return std::atexit(wait_for_abandoned_work) == 0; }();
   (void)registered;
   auto state = std::make_shared<completion>();
+  auto stop = std::make_shared<std::atomic<bool>>(false);  // outlives an abandoned worker
   bool was_interrupted = false;
   {
     py::gil_scoped_release nogil;
-    std::thread worker([work = std::move(work), state] {
+    std::thread worker([work = std::move(work), state, stop] {
       std::lock_guard lock(symbolic_mutex());
+      const lie::stop_scope scope(*stop);
       state->run(work);
     });
     was_interrupted = interrupted_while_waiting(*state);
-    if (was_interrupted)
-      worker.detach();
-    else
+    if (was_interrupted) {
+      // The work stops at its next stop point (lie/stop_request.hpp); wait a little for it, and
+      // abandon it only if that point is further away.
+      stop->store(true);
+      if (state->wait_for(stop_grace))
+        worker.join();
+      else
+        worker.detach();
+    } else {
       worker.join();
+    }
   }
   if (was_interrupted) throw py::error_already_set();
   if (state->error) std::rethrow_exception(state->error);

@@ -1,9 +1,11 @@
 #pragma once
 // Long calls run with the GIL released and stay interruptible: the work runs on a worker thread
 // while the calling thread waits in slices, taking the GIL between slices so that Python runs its
-// signal handlers (Ctrl-C raises KeyboardInterrupt there). Work that can stop early polls a
-// cancellation flag; work that cannot (the symbolic side) is left to finish in the background,
-// its result discarded, and the next symbolic call waits for it (GiNaC and CLN are not thread-safe).
+// signal handlers (Ctrl-C raises KeyboardInterrupt there). Numeric loops poll a cancellation flag.
+// The symbolic side stops at its stop points (lie/stop_request.hpp, between units of work such as
+// one system solved); GiNaC and CLN cannot be interrupted inside one operation, so work whose next
+// point is further away runs on to it in the background, its result discarded, and the next symbolic
+// call waits for it (GiNaC and CLN are not thread-safe).
 #include <atomic>
 #include <functional>
 
@@ -24,9 +26,10 @@ class cancellation {
 /// the work has seen the cancellation and stopped. Called with the GIL held.
 void run_cancellable(const std::function<void(const cancellation&)>& work);
 
-/// The same for work that cannot stop early: on Ctrl-C it is abandoned (it runs on to its end in the
-/// background, serialised with every other symbolic call) and KeyboardInterrupt is raised at once.
-/// `work` must own everything it touches (capture by value).
+/// The same for symbolic work: on Ctrl-C it is asked to stop at its next stop point; if it has not
+/// stopped within half a second it is abandoned (it runs on to that point in the background,
+/// serialised with every other symbolic call). KeyboardInterrupt is raised within a second either
+/// way. `work` must own everything it touches (capture by value).
 void run_symbolic(std::function<void()> work);
 
 }  // namespace rotlie::python

@@ -7,6 +7,7 @@
 
 #include "bindings.hpp"
 #include "interruption.hpp"
+#include "rotlie/lie/stop_request.hpp"
 #include "rotlie/runs/scenes.hpp"
 
 namespace rotlie::python {
@@ -16,7 +17,8 @@ namespace {
 std::string md(const std::string& scene, const std::string& integrator, const std::string& h,
                const std::map<std::string, std::string>& options) {
   auto out = std::make_shared<runs::scene_result>();
-  const runs::scene_request request{scene, integrator, h, options, {}};
+  // a scene's progress lines (a run of an ensemble ended, an equilibration stage) are its stop points
+  const runs::scene_request request{scene, integrator, h, options, [](const std::string&) { lie::stop_point(); }};
   run_symbolic([request, out] { *out = runs::run_scene(request); });  // a rotor SCHEME:PERM:LABEL is solved symbolically
   for (const auto& w : out->warnings)
     if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 2) != 0) throw pybind11::error_already_set();

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "rotlie/bch/families.hpp"
+#include "rotlie/lie/stop_request.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/solver/body_grid.hpp"
 #include "rotlie/solver/scheme_table.hpp"
@@ -16,6 +17,7 @@ measured_family measure_family(const fixed_reduced_step_protocol& protocol, cons
                                const solver::family_result& solved, const solver::map_point& point) {
   measured_family m;
   for (const auto& x : solved.solutions) {
+    lie::stop_point();
     const double e = protocol.error(solver::scheme_table_of(x, body));
     m.candidates.push_back({solver::scheme_table_name(x), x.analytic_remainder, e});
     if (point.best && solver::scheme_table_name(x) == solver::scheme_table_name(*point.best)) m.analytic_best_error = e;
@@ -51,6 +53,7 @@ best_result best_for_body(const lie::moments_of_inertia& body, bool analytic_onl
   const double start = process_cpu_seconds();
   const fixed_reduced_step_protocol protocol(body);
   const auto show = [&](const std::string& line) {
+    lie::stop_point();  // between the phases, each a minute at most
     if (progress) progress(line);
   };
   for (const auto& f : bch::families()) {

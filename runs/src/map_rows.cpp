@@ -1,5 +1,6 @@
 #include "rotlie/runs/map_rows.hpp"
 
+#include "rotlie/lie/stop_request.hpp"
 #include "rotlie/runs/map_file.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/solver/body_map.hpp"
@@ -27,6 +28,7 @@ std::vector<std::pair<std::size_t, std::string>> map_row_lines(const std::vector
   bool any = false;
   for (std::size_t k = first; k < first + count; ++k) any = any || done[k] == 0;
   if (!any) return out;
+  lie::stop_point();
   if (method != bch::map_method::exact) {
     try {
       const std::vector<solver::grid_body> row(bodies.begin() + static_cast<std::ptrdiff_t>(first),
@@ -41,7 +43,10 @@ std::vector<std::pair<std::size_t, std::string>> map_row_lines(const std::vector
     }
   }
   for (std::size_t k = first; k < first + count; ++k)
-    if (done[k] == 0) out.emplace_back(k, body_line(bodies[k], family));
+    if (done[k] == 0) {
+      lie::stop_point();
+      out.emplace_back(k, body_line(bodies[k], family));
+    }
   return out;
 }
 

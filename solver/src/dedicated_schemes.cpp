@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "rotlie/bch/modified_hamiltonian.hpp"
+#include "rotlie/lie/stop_request.hpp"
 #include "rotlie/lie/theorems.hpp"
 #include "rotlie/solver/critical_points.hpp"
 #include "rotlie/solver/real_solutions.hpp"
@@ -88,6 +89,7 @@ family_result solve_dedicated(const lie::moments_of_inertia& body, const std::ve
     const auto named = bch::find_named_scheme(scheme);
     if (!named) throw std::invalid_argument("unknown scheme '" + scheme + "'");
     for (const auto& perm : permutations) {
+      lie::stop_point();
       auto t = clock_type::now();
       const auto layout = bch::layout_scheme(named->word, named->split, perm);
       const std::size_t unknowns = layout.free_coefficients.size();

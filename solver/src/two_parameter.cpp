@@ -15,6 +15,7 @@
 
 #include "rotlie/bch/stage_hamiltonian.hpp"
 #include "rotlie/lie/exact_number.hpp"
+#include "rotlie/lie/stop_request.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 #include "rotlie/solver/sixth_order_search.hpp"
 #include "rotlie/solver/scheme_table.hpp"
@@ -499,6 +500,7 @@ two_parameter_result solve_two_parameter(const lie::moments_of_inertia& body, bc
   std::vector<two_parameter_system> systems;
   for (const auto& word : words)
     for (const auto& perm : permutations) {
+      lie::stop_point();
       two_parameter_entry e;
       e.word = word;
       e.permutation = perm;
@@ -525,6 +527,7 @@ two_parameter_result solve_two_parameter(const lie::moments_of_inertia& body, bc
       continue;
     }
     ++polished;
+    lie::stop_point();
     try {
       e.best = polish_minimum(systems[i], e.search.minima.front(), digits);
       e.polished = e.best.order >= 4;

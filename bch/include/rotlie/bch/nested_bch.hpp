@@ -15,6 +15,7 @@
 #include "rotlie/bch/lie_series.hpp"
 #include "rotlie/lie/multivariate_polynomial.hpp"
 #include "rotlie/lie/poisson_bracket.hpp"
+#include "rotlie/lie/stop_request.hpp"
 
 namespace rotlie::bch {
 
@@ -68,11 +69,17 @@ std::vector<lie::polynomial<R>> nested_bch(const std::vector<lie::polynomial<R>>
     const auto& series = cached_bch_series(max_order, true);
     const std::size_t n = x.size();
     z = x[n / 2];
-    for (std::size_t i = n / 2; i-- > 0;) z = evaluate(series, std::vector<lie::polynomial<R>>{x[i], z}, algebra, max_order);
+    for (std::size_t i = n / 2; i-- > 0;) {
+      lie::stop_point();
+      z = evaluate(series, std::vector<lie::polynomial<R>>{x[i], z}, algebra, max_order);
+    }
   } else {
     const auto& series = cached_bch_series(max_order, false);
     z = x.front();
-    for (std::size_t i = 1; i < x.size(); ++i) z = evaluate(series, std::vector<lie::polynomial<R>>{z, x[i]}, algebra, max_order);
+    for (std::size_t i = 1; i < x.size(); ++i) {
+      lie::stop_point();
+      z = evaluate(series, std::vector<lie::polynomial<R>>{z, x[i]}, algebra, max_order);
+    }
   }
   std::vector<lie::polynomial<R>> by_order(static_cast<std::size_t>(max_order) + 1);
   for (const auto& [m, c] : z.terms()) by_order[m.degree() - 1].add_term(m, c);
