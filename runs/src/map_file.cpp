@@ -7,6 +7,7 @@
 #include <cln/rational.h>
 #include <cln/rational_io.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -119,6 +120,7 @@ map_file_text read_map_file(const std::filesystem::path& path) {
     at = end + 1;
     out.whole_length = at;
   }
+  out.torn_tail = text.substr(out.whole_length);
   return out;
 }
 
@@ -167,9 +169,18 @@ resumed_map resume_map_file(const std::filesystem::path& path, const std::string
     throw bad_input("--resume: cannot read '" + path.string() + "'");
   }
   out.whole_length = text.whole_length;
+  const std::string refusal = "--resume: " + printable_path(path) + " ";
+  // A line is appended by one write of printable JSON: a kill can leave only a prefix of one. Other
+  // bytes after the last whole line (binary data, another program's text) are not ours to drop.
+  const auto& tail = text.torn_tail;
+  const bool a_cut_line = tail.empty() || (tail.front() == '{' && std::none_of(tail.begin(), tail.end(), [](char c) {
+                                             return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+                                           }));
+  if (!a_cut_line)
+    throw bad_input(refusal + "ends with " + std::to_string(tail.size()) +
+                    " bytes that are not the start of a map line (not a write cut by a kill); it is left as it is");
   std::map<long, std::size_t> index_of;
   for (std::size_t k = 0; k < bodies.size(); ++k) index_of[static_cast<long>(bodies[k].i) * (K + 1) + bodies[k].j] = k;
-  const std::string refusal = "--resume: " + printable_path(path) + " ";
   for (std::size_t n = 0; n < text.lines.size(); ++n) {
     const std::size_t line_number = n + 1;
     const auto j = nlohmann::json::parse(text.lines[n], nullptr, false);

@@ -130,6 +130,23 @@ BOOST_AUTO_TEST_CASE(a_killed_and_resumed_map_is_the_uninterrupted_file) {
   BOOST_TEST((slurp(file) == expected));
 }
 
+BOOST_AUTO_TEST_CASE(bytes_no_kill_could_leave_after_the_last_line_are_refused_and_kept) {
+  // A kill leaves at most the start of one JSON line; binary data (or no header at all) was once
+  // taken for a torn line and overwritten by a fresh map.
+  const std::string whole = slurp(reference_map() / "map-N.jsonl");
+  const std::string header = whole.substr(0, whole.find('\n') + 1);
+  const fs::path dir = scratch() / "garbage", file = dir / "map-N.jsonl";
+  fs::create_directories(dir);
+  for (const std::string& text : {std::string("\x00\xff\x01garbage", 10), header + std::string("\x00\xff\x01", 3),
+                                  header + "not a map line"}) {
+    { std::ofstream(file, std::ios::binary | std::ios::trunc) << text; }
+    const auto r = run("map --family N --grid 8 --resume --out " + dir.string());
+    BOOST_TEST(r.status == 2, r.err);
+    BOOST_TEST(r.err.find("not the start of a map line") != std::string::npos, r.err);
+    BOOST_TEST((slurp(file) == text));
+  }
+}
+
 BOOST_AUTO_TEST_CASE(a_file_of_another_grid_or_family_is_refused_and_left_as_it_is) {
   const std::string expected = slurp(reference_map() / "map-N.jsonl");
   const fs::path dir = scratch() / "other";

@@ -121,6 +121,16 @@ BOOST_AUTO_TEST_CASE(a_step_lost_in_round_off_is_flagged_and_warned) {
   BOOST_TEST_REQUIRE(w.status == 0, w.err);
   BOOST_TEST(nlohmann::json::parse(w.out).at("round_off_floor").get<bool>());
   BOOST_TEST(w.err.find("tau measures round-off") != std::string::npos, w.err);
+  // free water at 10^-50 fs: δ grows to 6e-10 over 10^6 steps (about 3 ε per step), far above 1000 ε but all
+  // round-off (a τ of 1.6e-39 ps was once reported without a word)
+  const auto tiny = run("md --scene free-water --integrator SIER4 --h 1e-50 --runs 2 --T 1e-47 --json");
+  BOOST_TEST_REQUIRE(tiny.status == 0, tiny.err);
+  BOOST_TEST(nlohmann::json::parse(tiny.out).at("round_off_floor").get<bool>());
+  BOOST_TEST(tiny.err.find("within what the scalar's round-off reaches in 1000000 steps") != std::string::npos, tiny.err);
+  // a working step is not flagged
+  BOOST_TEST(!md_json("--scene free-water --integrator SIER4/RS4-S5-McLachlan:CBA --h 2 --runs 2 --T 1")
+                  .at("round_off_floor")
+                  .get<bool>());
 }
 
 BOOST_AUTO_TEST_CASE(the_error_of_one_run_is_unknown_not_zero) {

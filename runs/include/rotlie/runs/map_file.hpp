@@ -42,6 +42,7 @@ std::filesystem::path map_file_path(const std::filesystem::path& folder, const s
 struct map_file_text {
   std::vector<std::string> lines;  ///< header first, then body lines, in file order
   std::size_t whole_length = 0;    ///< bytes up to the end of the last whole line
+  std::string torn_tail;           ///< the bytes after it (a write a kill cut, or something else)
 };
 
 /// Reads the file's whole lines. Throws std::runtime_error when it cannot be read.

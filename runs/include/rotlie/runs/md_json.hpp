@@ -17,7 +17,7 @@ namespace rotlie::runs {
 /// "round_off_floor") and one warning line each for a reader.
 struct md_verdict {
   bool unstable = false;         ///< the energy error is as large as the potential's own fluctuation (≥ 100 %)
-  bool round_off_floor = false;  ///< the measured fluctuation is within 1000 ε of round-off: it measures the scalar
+  bool round_off_floor = false;  ///< the measured error is within 1000 ε, or within 10 ε per step taken: it measures the scalar
   std::vector<std::string> warnings;
 };
 md_verdict verdict_of(const models::free_water_result& r);
