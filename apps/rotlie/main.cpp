@@ -29,7 +29,7 @@ int fail(const std::string& message, int status) {
 }
 
 const char* const exit_status_help =
-    "Exit status: 0 success; 1 the run failed (a write error such as a full disk, a numerical failure); "
+    "Exit status: 0 success; 1 the run failed (a write error such as a full disk, an output folder in use by another run, a numerical failure); "
     "2 bad arguments. A closed output pipe ends rotlie by SIGPIPE (status 141), as it does the standard filters.";
 
 // CLI11's wording, said in rotlie's: which option, and what was wrong with it.

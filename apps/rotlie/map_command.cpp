@@ -240,6 +240,8 @@ int run_map(const map_options& options) {
       throw;  // before any work was handed out: the other ranks were told and have ended
     } catch (const runs::bad_input&) {
       throw;  // before any work was handed out: the other ranks were told and have ended
+    } catch (const runs::folder_in_use&) {
+      throw;  // likewise (prepare's refusal, exit 1)
     } catch (const std::exception& e) {
       // After the work was handed out the other ranks would wait for ever: end the whole job.
       std::cerr << "rotlie: error: " << one_line(e.what()) << "\n";

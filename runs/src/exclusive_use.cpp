@@ -21,7 +21,7 @@ exclusive_use::exclusive_use(const std::filesystem::path& folder, std::string_vi
     ::close(fd_);
     fd_ = -1;
     if (e == EWOULDBLOCK)
-      throw bad_input(std::string(option) + ": another rotlie run is using the folder '" + where +
+      throw folder_in_use(std::string(option) + ": another rotlie run is using the folder '" + where +
                       "'; wait for it to finish or choose another folder");
     throw bad_input(std::string(option) + ": cannot lock the folder '" + where + "': " + std::strerror(e));
   }
