@@ -27,6 +27,7 @@
 
 #include "rotlie/models/free_body_motion.hpp"
 #include "rotlie/models/rigid_body.hpp"
+#include "rotlie/schemes/message_number.hpp"
 #include "rotlie/schemes/quad.hpp"
 
 namespace rotlie::models {
@@ -77,7 +78,7 @@ class exact_free_body {
     using std::isfinite;
     if (!isfinite(static_cast<double>(t)) || abs(t) > max_time())
       throw std::domain_error("the exact flow is limited to |ω|·|t| ≤ 2^60 rad (|t| ≤ " +
-                              std::to_string(static_cast<double>(max_time())) + " here)");
+                              schemes::message_number(static_cast<double>(max_time())) + " here)");
     if (!(omega_ > 0)) return {initial_, bound<T>(T(0))};  // G = 0: the body does not turn (the estimate's floor, as everywhere)
     const T tau = ldexp_(t, eG_ - eI_);
     const auto e = core_.at(tau);

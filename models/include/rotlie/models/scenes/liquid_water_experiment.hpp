@@ -18,6 +18,7 @@
 #include "rotlie/models/scenes/water_observables.hpp"
 #include "rotlie/models/scenes/water_setup.hpp"
 #include "rotlie/models/scenes/water_state_io.hpp"
+#include "rotlie/schemes/message_number.hpp"
 
 namespace rotlie::models {
 
@@ -122,7 +123,7 @@ inline rigid_bodies_state<double> liquid_water_start(const liquid_water_run_opti
     // the lattice start is far from equilibrium: a shorter step and a tight coupling first
     equilibrate(method, s, o.equilibration_h_fs / 4, 400, o.kelvin, 10.0, [](long, double, double) {});
     equilibrate(method, s, o.equilibration_h_fs, steps, o.kelvin, o.berendsen_tau_fs, [&](long k, double T, double v) {
-      if (progress) progress("equilibration " + std::to_string(static_cast<double>(k) * o.equilibration_h_fs / 1000) + " ps: T = " + std::to_string(T) + " K, V/N = " + std::to_string(v) + " kcal/mol");
+      if (progress) progress("equilibration " + schemes::message_number(static_cast<double>(k) * o.equilibration_h_fs / 1000) + " ps: T = " + schemes::message_number(T) + " K, V/N = " + schemes::message_number(v) + " kcal/mol");
     }, 500);
     return 0;
   });
@@ -163,10 +164,10 @@ inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& 
         try {
           method.step(s, o.h_fs);
         } catch (const std::invalid_argument&) {  // a rotor refusing a non-finite momentum: the run blew up
-          throw std::runtime_error("the run diverged (a momentum is not finite) at h = " + std::to_string(o.h_fs) + " fs");
+          throw std::runtime_error("the run diverged (a momentum is not finite) at h = " + schemes::message_number(o.h_fs) + " fs");
         }
         const double V = sys.potential_energy(s), K = sys.kinetic_energy(s), E = V + K;
-        if (!std::isfinite(E)) throw std::runtime_error("the run diverged (energy not finite) at h = " + std::to_string(o.h_fs) + " fs");
+        if (!std::isfinite(E)) throw std::runtime_error("the run diverged (energy not finite) at h = " + schemes::message_number(o.h_fs) + " fs");
         e_sum += E - e_ref;
         e_sq += (E - e_ref) * (E - e_ref);
         v_run += V - v_ref;
