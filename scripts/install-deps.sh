@@ -14,6 +14,7 @@ symbolic=(
   libeigen3-dev                  # solver/ (eigenvalues)
   libgsl-dev                     # bench/ only: GSL against Boost.Math for the exact flow (the libraries do not use it)
   libcli11-dev nlohmann-json3-dev # apps/rotlie, reports/
+  liblzma-dev xz-utils           # the full-resolution maps shipped xz-compressed (data/)
   libopenmpi-dev openmpi-bin     # rotlie map over MPI ranks (optional: without them it runs as one process)
   lammps                         # liquid water side by side with LAMMPS (optional: the comparison is skipped without lmp)
   libbenchmark-dev               # bench/

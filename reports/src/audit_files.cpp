@@ -14,6 +14,7 @@
 #include "rotlie/reports/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/runs/map_file.hpp"
+#include "rotlie/runs/shipped_data.hpp"
 
 namespace rotlie::reports {
 namespace {
@@ -102,8 +103,13 @@ const csv_table* report_files::csv(const std::string& file) {
 const audit_map* report_files::map(const std::string& family) {
   auto it = maps_.find(family);
   if (it == maps_.end()) {
+    // the map the maps section drew: --maps DIR, else the shipped one (data/maps-K200), else the one it wrote
     const fs::path given = in_.maps_folder.empty() ? fs::path() : runs::map_file_path(in_.maps_folder, family);
-    it = maps_.emplace(family, read_map_file(!given.empty() && fs::exists(given) ? given : runs::map_file_path(in_.folder, family))).first;
+    const auto shipped = runs::shipped_map(family);
+    const fs::path file = !given.empty() && fs::exists(given) ? given
+                          : shipped                          ? *shipped
+                                                             : runs::map_file_path(in_.folder, family);
+    it = maps_.emplace(family, read_map_file(file)).first;
   }
   return it->second ? &*it->second : nullptr;
 }

@@ -64,6 +64,7 @@ std::string gnuplot_script(const chart& c) {
       if (with_z) g << " " << s.z[i];
       g << "\n";
       if (s.segments && i % 2 == 1) g << "\n";  // a blank line ends a segment
+      if (s.cells && i % 5 == 4) g << "\n";     // and a cell
     }
     g << "EOD\n";
   }
@@ -91,7 +92,13 @@ std::string gnuplot_script(const chart& c) {
   for (std::size_t k = 0; k < c.series.size(); ++k) {
     const auto& s = c.series[k];
     g << (first ? "" : ", \\\n     ") << "$s" << k;
-    if (!s.z.empty()) {
+    if (s.cells && !s.z.empty()) {
+      g << " using 1:2:3 with filledcurves closed fc palette fs solid 1.0 noborder notitle";
+    } else if (s.cells) {
+      const std::string colour = s.colour.empty() ? std::string("'#7f7f7f'") : gnuplot_text(s.colour);
+      g << " using 1:2 with filledcurves closed fc rgb " << colour << " fs solid 1.0 border lc rgb " << colour
+        << " lw 0.5 title " << gnuplot_text(s.name);
+    } else if (!s.z.empty()) {
       g << " using 1:2:3 with points pt 5 ps " << (s.point_size > 0 ? s.point_size : 0.5) << " lc palette notitle";
     } else if (s.segments) {
       g << " using 1:2 with lines lw 2 lc rgb 'black' title " << gnuplot_text(s.name);

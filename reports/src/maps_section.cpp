@@ -18,6 +18,7 @@
 #include "rotlie/runs/map_check.hpp"
 #include "rotlie/runs/map_file.hpp"
 #include "rotlie/runs/map_rows.hpp"
+#include "rotlie/runs/shipped_data.hpp"
 #include "rotlie/solver/body_grid.hpp"
 
 namespace rotlie::reports {
@@ -46,6 +47,7 @@ struct family_map {
   std::vector<body_result> bodies;
   std::vector<nlohmann::json> lines;  ///< the body lines, for the check against the exact solver
   bool from_file = false;
+  bool shipped = false;  ///< the full-resolution map shipped with rotlie (data/maps-K200)
 };
 
 body_result from_line(const nlohmann::json& j, int K) {
@@ -124,17 +126,45 @@ const std::array<const char*, 15> palette = {"#1f77b4", "#ff7f0e", "#2ca02c", "#
                                               "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf",
                                               "#393b79", "#e7ba52", "#637939", "#ad494a", "#000000"};
 
-double point_size(int K) { return std::clamp(60.0 / K, 0.25, 3.0); }
+// Each body's cell: the quadrilateral between the midpoints to its grid neighbours, i.e. the grid
+// points (2i ± 1, 2j ± 1) of the grid 2K (clamped to it) placed in (I1, I2), so that the cells
+// tile the triangle and a map is drawn continuously, without gaps where the placement stretches.
+class body_cells {
+ public:
+  explicit body_cells(int K) : K_(K) {}
+  /// Appends the five points (four corners, the first repeated) of the cell of body (i, j).
+  void add(int i, int j, std::vector<double>& x, std::vector<double>& y) {
+    const std::array<std::pair<int, int>, 5> corners = {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}}};
+    for (const auto& [di, dj] : corners) {
+      const auto p = corner(std::clamp(2 * i + di, 0, 2 * K_), std::clamp(2 * j + dj, 0, 2 * K_));
+      x.push_back(p.first);
+      y.push_back(p.second);
+    }
+  }
+
+ private:
+  std::pair<double, double> corner(int a, int b) {
+    auto [it, fresh] = placed_.try_emplace({a, b});
+    if (fresh) {
+      const auto g = solver::grid_point(2 * K_, a, b);
+      it->second = {cln::double_approx(g.body.I[0]), cln::double_approx(g.body.I[1])};
+    }
+    return it->second;
+  }
+  int K_;
+  std::map<std::pair<int, int>, std::pair<double, double>> placed_;
+};
 
 std::string categories_chart(const report_options& options, const family_map& m, bool by_permutation,
                              const std::string& name, const std::string& caption, std::vector<std::filesystem::path>& files) {
   std::map<std::string, chart_series> by;
+  std::map<std::string, int> bodies_of;
+  body_cells cells(m.K);
   for (const auto& b : m.bodies) {
     if (b.best.empty()) continue;
     const std::string key = by_permutation ? b.permutation : b.best.substr(0, b.best.find(':'));
-    auto& s = by[key];
-    s.x.push_back(b.I1);
-    s.y.push_back(b.I2);
+    cells.add(b.i, b.j, by[key].x, by[key].y);
+    ++bodies_of[key];
   }
   auto c = triangle_chart("Best " + m.family + std::string(by_permutation ? " permutation" : " integrator") +
                           " by ‖H_R5‖, --grid " + std::to_string(m.K));
@@ -146,10 +176,9 @@ std::string categories_chart(const report_options& options, const family_map& m,
     });
   for (std::size_t k = 0; k < keys.size(); ++k) {
     auto s = by[keys[k]];
-    s.name = keys[k] + " (" + std::to_string(s.x.size()) + ")";
-    s.points_only = true;
+    s.name = keys[k] + " (" + std::to_string(bodies_of[keys[k]]) + ")";
+    s.cells = true;
     s.colour = palette[k % palette.size()];
-    s.point_size = point_size(m.K);
     c.series.push_back(std::move(s));
   }
   const auto f = write_chart(options.out_dir, name, c);
@@ -171,12 +200,12 @@ std::string ratio_chart(const report_options& options, const family_map& m, cons
   c.colour_label = "log10 ratio";
   chart_series s;
   s.name = "log10 ratio";
-  s.point_size = point_size(m.K);
+  s.cells = true;
+  body_cells cells(m.K);
   for (const auto& b : m.bodies)
     if (b.ratio && *b.ratio > 0) {
-      s.x.push_back(b.I1);
-      s.y.push_back(b.I2);
-      s.z.push_back(std::log10(*b.ratio));
+      cells.add(b.i, b.j, s.x, s.y);
+      s.z.insert(s.z.end(), 5, std::log10(*b.ratio));
     }
   if (!s.z.empty()) {
     const auto [lo, hi] = std::minmax_element(s.z.begin(), s.z.end());
@@ -282,7 +311,7 @@ std::string fast_path_check(const report_options& options, const std::vector<fam
   std::vector<std::string> differences;
   for (const auto& m : maps) {
     if (m.method == "exact") continue;
-    const bool many = options.full || m.from_file;
+    const bool many = options.full || (m.from_file && !m.shipped);  // the shipped maps' own check is a slow test
     const std::size_t count = many ? full_checks : m.family == "P" ? default_checks_P : default_checks_N;
     const auto start = std::chrono::steady_clock::now();
     const auto r = runs::check_map_lines(m.family, m.K, m.lines, count, 14, [&](int done, int of) {
@@ -338,6 +367,13 @@ report_section maps_section(const report_options& options) {
       maps.push_back(read_map(file, family));
       continue;
     }
+    if (const auto shipped = runs::shipped_map(family)) {  // the paper's grid, computed once (data/README.md)
+      maps.push_back(read_map(*shipped, family));
+      maps.back().shipped = true;
+      maps.back().source = "the shipped map data/maps-K200/" + shipped->filename().string() + " (--grid " +
+                           std::to_string(maps.back().K) + ", " + maps.back().method + ")";
+      continue;
+    }
     const int K = options.full ? full_grid
                   : options.quick ? (family == "N" ? quick_grid_N : quick_grid_P)
                                   : (family == "N" ? default_grid_N : default_grid_P);
@@ -349,7 +385,9 @@ report_section maps_section(const report_options& options) {
     if (m.seconds > 0) md << ", " << std::fixed << std::setprecision(0) << m.seconds << " s";
     md << std::defaultfloat << "); ";
   }
-  md << "the paper's grid is --grid 200 (40,401 points). The default report computes coarse grids (N by continuation "
+  md << "the paper's grid is --grid 200 (40,401 points). A family whose full-resolution map is shipped with rotlie "
+        "(data/maps-K200, made by scripts/make-full-data.sh; data/README.md says how) is drawn from it; for the others "
+        "the default report computes coarse grids (N by continuation "
         "confirmed by the exact solver; P by the exact solver at every body, since the screened path, checked at --grid 200, "
         "can miss the best between the far-apart bodies of a coarse grid); `rotlie report --full` computes --grid 200 here "
         "(P by the screened path: every system solved exactly at both ends of each row, the best of each body made complete; about "

@@ -17,6 +17,7 @@
 
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/runs/output_file.hpp"
+#include "rotlie/runs/text_file.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
@@ -106,12 +107,9 @@ std::filesystem::path map_file_path(const std::filesystem::path& folder, const s
   return folder / ("map-" + family + ".jsonl");
 }
 
-map_file_text read_map_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read the map file " + printable_path(path));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+namespace {
+
+map_file_text lines_of(const std::string& text) {
   map_file_text out;
   for (std::size_t at = 0;;) {
     const auto end = text.find('\n', at);
@@ -124,10 +122,20 @@ map_file_text read_map_file(const std::filesystem::path& path) {
   return out;
 }
 
+}  // namespace
+
+map_file_text read_map_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read the map file " + printable_path(path));
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return lines_of(buffer.str());
+}
+
 std::optional<map_contents> read_map_contents(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) return std::nullopt;
-  const auto text = read_map_file(path);
+  const auto text = lines_of(read_text_file(path));  // a map file, or one shipped xz-compressed
   if (text.lines.empty()) return std::nullopt;
   map_contents m;
   m.header = nlohmann::json::parse(text.lines.front(), nullptr, false);

@@ -22,6 +22,9 @@ struct chart_series {
   /// fourth CSV column); the series then needs no legend entry.
   std::vector<double> z{};
   bool segments = false;     ///< points 2k, 2k + 1 are one line segment (a contour), black
+  /// Maps drawn continuously: points 5k … 5k + 4 are one closed quadrilateral (a body's cell, its
+  /// first corner repeated), filled with `colour`, or by z (one value per corner, all equal).
+  bool cells = false;
   std::string colour{};      ///< "#rrggbb" for this series, else gnuplot's own
   double point_size = 0;     ///< 0: gnuplot's default
 };

@@ -1,0 +1,28 @@
+#include "rotlie/runs/shipped_data.hpp"
+
+#include <cstdlib>
+#include <vector>
+
+namespace rotlie::runs {
+namespace {
+
+std::vector<std::filesystem::path> data_folders() {
+  std::vector<std::filesystem::path> out;
+  if (const char* given = std::getenv("ROTLIE_DATA"); given && *given) out.emplace_back(given);
+  out.emplace_back(ROTLIE_INSTALLED_DATA_DIR);
+  out.emplace_back(ROTLIE_SOURCE_DATA_DIR);
+  return out;
+}
+
+}  // namespace
+
+std::optional<std::filesystem::path> shipped_map(const std::string& family) {
+  for (const auto& folder : data_folders()) {
+    const auto file = folder / "maps-K200" / ("map-" + family + ".jsonl.xz");
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(file, ec)) return file;
+  }
+  return std::nullopt;
+}
+
+}  // namespace rotlie::runs
