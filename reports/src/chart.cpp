@@ -103,9 +103,13 @@ std::string gnuplot_script(const chart& c) {
     } else if (s.segments) {
       g << " using 1:2 with lines lw 2 lc rgb 'black' title " << gnuplot_text(s.name);
     } else {
+      // point types that stay apart when curves coincide: filled and open circles, squares, triangles, diamonds
+      constexpr int kinds[] = {7, 4, 5, 8, 9, 6, 11, 12, 13, 10};
+      const int pt = s.point_type > 0 ? s.point_type : kinds[k % std::size(kinds)];
       g << " using 1:2 with "
-        << (s.points_only ? "points pt " + (s.colour.empty() ? std::to_string(7 + 2 * k) : std::string("5"))
-                          : std::string("linespoints pt 7 ps 0.6"));
+        << (s.points_only ? "points pt " + (s.point_type > 0 ? std::to_string(pt)
+                                             : s.colour.empty() ? std::to_string(7 + 2 * k) : std::string("5"))
+                          : "linespoints pt " + std::to_string(pt) + " ps 0.8");
       if (s.point_size > 0) g << " ps " << s.point_size;
       if (!s.colour.empty()) g << " lc rgb " << gnuplot_text(s.colour);
       // gnuplot's palette has 8 colours: the next eight series are dashed, then dotted

@@ -100,6 +100,12 @@ report_section section(const report_options& options, const budget& b) {
   cpu.y_label = "ΔE/ΔV (%)";
   std::ostringstream slopes, failures;
   double v_per_molecule = 0, temperature = 0;
+  // A run whose energy error reaches the potential's own fluctuation (≥ 100 %) or blows up has left the
+  // integrator's stable range: it is marked at the 100 % line, not drawn as a point of its curve (the
+  // axis once ran to 10⁸ %).
+  constexpr double diverged_percent = 100;
+  chart_series gone_h{"diverged (≥ 100 %)", {}, {}, true}, gone_cpu{"diverged (≥ 100 %)", {}, {}, true};
+  for (auto* g : {&gone_h, &gone_cpu}) g->colour = "#000000", g->point_type = 2, g->point_size = 1.5;
   for (const auto& sw : sweeps) {
     chart_series a{sw.integrator, {}, {}, false}, c{sw.integrator, {}, {}, false};
     std::vector<double> hf, ratio;
@@ -115,6 +121,13 @@ report_section section(const report_options& options, const budget& b) {
         table << "| " << sw.integrator << " | " << r.f << " | " << significant_text(h, 3) << " | " << significant_text(h / r.f, 3) << " | " << significant_text(r.ratio_mean, 3) << " | "
               << (r.runs > 1 ? significant_text(r.ratio_error, 2) : std::string()) << " | " << significant_text(r.ms_per_step, 3) << " | " << significant_text(r.cpu_ms_per_step, 3) << " | " << significant_text(per_ps, 3) << " | " << significant_text(r.potential_per_molecule, 5)
               << " | " << significant_text(r.temperature, 4) << " | " << significant_text(r.energy_drift_per_ps, 2) << " |\n";
+        if (!(r.ratio_mean < diverged_percent)) {
+          gone_h.x.push_back(h / r.f), gone_h.y.push_back(diverged_percent);
+          gone_cpu.x.push_back(per_ps), gone_cpu.y.push_back(diverged_percent);
+          failures << "- " << sw.integrator << " at h = " << significant_text(h, 3) << " fs: ΔE/ΔV = "
+                   << significant_text(r.ratio_mean, 3) << " %, beyond the stable range\n";
+          continue;
+        }
         a.x.push_back(h / r.f), a.y.push_back(r.ratio_mean);
         c.x.push_back(per_ps), c.y.push_back(r.ratio_mean);
         hf.push_back(h / r.f), ratio.push_back(r.ratio_mean);
@@ -122,6 +135,7 @@ report_section section(const report_options& options, const budget& b) {
       } catch (const std::runtime_error& e) {
         table << "| " << sw.integrator << " | | " << significant_text(h, 3) << " | | diverged | | | | | | | |\n";
         failures << "- " << sw.integrator << " at h = " << significant_text(h, 3) << " fs: " << e.what() << "\n";
+        gone_h.x.push_back(h / models::md_integrator_named(sw.integrator).f), gone_h.y.push_back(diverged_percent);
       }
     }
     if (sw.integrator == "SIER2") slopes << "- SIER2: slope " << significant_text(slope(hf, ratio, 2.01), 3) << " over h/f ≤ 2 fs (order 2 expected)\n";
@@ -148,6 +162,11 @@ report_section section(const report_options& options, const budget& b) {
      << "sampled every step; the ± is the standard error over the runs (blank with one run). Times were measured "
         "with two threads on a machine shared with other jobs: CPU time (both threads together) is the robust "
         "measure, wall time depends on the load.\n\n";
+  for (const auto& [chart_of, gone] : {std::pair{&fig1, &gone_h}, std::pair{&cpu, &gone_cpu}}) {
+    chart_of->horizontal_line = diverged_percent;
+    chart_of->horizontal_label = "100 %: stable range ends";
+    if (!gone->x.empty()) chart_of->series.push_back(*gone);
+  }
   const auto f1 = write_chart(options.out_dir, "liquid_water_fig1", fig1);
   const auto f2 = write_chart(options.out_dir, "liquid_water_cpu", cpu);
   s.files.insert(s.files.end(), f1.written.begin(), f1.written.end());

@@ -27,6 +27,7 @@ struct chart_series {
   bool cells = false;
   std::string colour{};      ///< "#rrggbb" for this series, else gnuplot's own
   double point_size = 0;     ///< 0: gnuplot's default
+  int point_type = 0;        ///< gnuplot's point type; 0: one per series, so that curves that coincide stay apart
 };
 
 struct chart {
