@@ -233,7 +233,7 @@ void write_all(int fd, const std::string& text, const std::filesystem::path& pat
   while (written < text.size()) {
     const auto n = ::write(fd, text.data() + written, text.size() - written);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw std::runtime_error("cannot write to '" + printable_path(path) + "': " + std::strerror(errno));
+    if (n <= 0) throw std::runtime_error("cannot write to " + printable_path(path) + ": " + std::strerror(errno));
     written += static_cast<std::size_t>(n);
   }
 }
@@ -243,9 +243,9 @@ void write_all(int fd, const std::string& text, const std::filesystem::path& pat
 map_file_writer::map_file_writer(const std::filesystem::path& path, const resumed_map& existing, const std::string& header)
     : path_(path) {
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-  if (fd_ < 0) throw std::runtime_error("cannot open '" + printable_path(path) + "': " + std::strerror(errno));
+  if (fd_ < 0) throw std::runtime_error("cannot open " + printable_path(path) + ": " + std::strerror(errno));
   if (::ftruncate(fd_, static_cast<off_t>(existing.has_header ? existing.whole_length : 0)) != 0)
-    throw std::runtime_error("cannot truncate '" + printable_path(path) + "': " + std::strerror(errno));
+    throw std::runtime_error("cannot truncate " + printable_path(path) + ": " + std::strerror(errno));
   if (!existing.has_header) write_all(fd_, header + "\n", path_);
 }
 
@@ -257,7 +257,7 @@ void map_file_writer::append(const std::string& line) { write_all(fd_, line + "\
 
 void map_file_writer::finish() {
   if (::fsync(fd_) != 0 && errno != EINVAL)
-    throw std::runtime_error("cannot flush '" + printable_path(path_) + "': " + std::strerror(errno));
+    throw std::runtime_error("cannot flush " + printable_path(path_) + ": " + std::strerror(errno));
 }
 
 }  // namespace rotlie::runs
