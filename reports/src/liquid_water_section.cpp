@@ -16,7 +16,9 @@
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
+#include "rotlie/reports/report_csv_reader.hpp"
 #include "rotlie/runs/protocol_curves.hpp"
+#include "rotlie/runs/shipped_data.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
 namespace rotlie::reports {
@@ -60,6 +62,55 @@ double slope(const std::vector<double>& x, const std::vector<double>& y, double 
       sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly, n += 1;
     }
   return n < 2 ? NAN : (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+// Fig. 1 at the paper's statistics from the shipped full run (data/vzs-fig1), beside this run's own:
+// the chart of ΔE/ΔV against h/f and the table with the standard errors over the nine runs.
+std::string shipped_fig1(const report_options& options, const std::filesystem::path& file,
+                         std::vector<std::filesystem::path>& files) {
+  const auto t = read_csv(file);
+  if (!t) return "";
+  const auto col = [&](const char* name) {
+    const auto c = t->column(name);
+    if (!c) throw std::runtime_error(file.string() + " has no column " + name);
+    return *c;
+  };
+  const std::size_t who = col("integrator"), f = col("f"), h = col("h_fs"), hf = col("h_over_f_fs"), runs = col("runs"),
+                    ratio = col("dE_over_dV_percent"), error = col("standard_error_percent"), diverged = col("diverged");
+  chart c;
+  c.title = "Liquid water (512 TIP3P), the paper's statistics (shipped full run)";
+  c.x_label = "h/f (fs)";
+  c.y_label = "ΔE/ΔV (%)";
+  c.horizontal_line = 100;
+  c.horizontal_label = "100 %: stable range ends";
+  std::map<std::string, std::size_t> series_of;
+  chart_series gone{"diverged (≥ 100 %)", {}, {}, true};
+  gone.colour = "#000000", gone.point_type = 2, gone.point_size = 1.5;
+  std::ostringstream table;
+  table << "| integrator | f | h (fs) | runs | ΔE/ΔV (%) | ± (standard error) |\n|:--|--:|--:|--:|--:|--:|\n";
+  for (const auto& row : t->rows) {
+    const bool out = row.at(diverged) == "1";
+    table << "| " << row.at(who) << " | " << row.at(f) << " | " << row.at(h) << " | " << row.at(runs) << " | "
+          << (out ? std::string("diverged") : significant_text(std::stod(row.at(ratio)), 3)) << " | "
+          << (out || row.at(error).empty() || row.at(error) == "nan" ? std::string() : significant_text(std::stod(row.at(error)), 2))
+          << " |\n";
+    if (out) {
+      gone.x.push_back(std::stod(row.at(hf))), gone.y.push_back(100);
+      continue;
+    }
+    auto [it, fresh] = series_of.try_emplace(row.at(who), c.series.size());
+    if (fresh) c.series.push_back({row.at(who), {}, {}, false});
+    c.series[it->second].x.push_back(std::stod(row.at(hf)));
+    c.series[it->second].y.push_back(std::stod(row.at(ratio)));
+  }
+  if (!gone.x.empty()) c.series.push_back(gone);
+  const auto written = write_chart(options.out_dir, "liquid_water_fig1_full", c);
+  files.insert(files.end(), written.written.begin(), written.written.end());
+  return "### Fig. 1 at the paper's statistics (shipped data)\n\nThe full section's run (`rotlie report --full --sections "
+         "liquid-water`: nine 1-ps runs per point after 10 ps of equilibration), shipped as data/vzs-fig1/" +
+         file.filename().string() + " with the command and commit that made it (data/README.md).\n\n" +
+         chart_markdown(written, "liquid_water_fig1_full", "vZS Fig. 1 with the paper's nine 1-ps runs per point.") + "\n" +
+         table.str() + "\n";
 }
 
 report_section section(const report_options& options, const budget& b) {
@@ -188,6 +239,8 @@ report_section section(const report_options& options, const budget& b) {
      << chart_markdown(f2, "liquid_water_cpu", "ΔE/ΔV against measured time per simulated ps.") << "\n"
      << table.str() << "\nFitted slopes:\n\n" << slopes.str() << "\n";
   if (!failures.str().empty()) md << "Failures (where each integrator stops working):\n\n" << failures.str() << "\n";
+  if (!options.full)
+    if (const auto shipped = runs::shipped_file("vzs-fig1/liquid_water_points.csv")) md << shipped_fig1(options, *shipped, s.files);
 
   // physical sanity: g_OO(r) and V/N
   say("g(r)");

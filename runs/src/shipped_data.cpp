@@ -16,13 +16,17 @@ std::vector<std::filesystem::path> data_folders() {
 
 }  // namespace
 
-std::optional<std::filesystem::path> shipped_map(const std::string& family) {
+std::optional<std::filesystem::path> shipped_file(const std::string& relative) {
   for (const auto& folder : data_folders()) {
-    const auto file = folder / "maps-K200" / ("map-" + family + ".jsonl.xz");
+    const auto file = folder / relative;
     std::error_code ec;
     if (std::filesystem::is_regular_file(file, ec)) return file;
   }
   return std::nullopt;
+}
+
+std::optional<std::filesystem::path> shipped_map(const std::string& family) {
+  return shipped_file("maps-K200/map-" + family + ".jsonl.xz");
 }
 
 }  // namespace rotlie::runs

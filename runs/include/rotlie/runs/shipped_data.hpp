@@ -8,6 +8,9 @@
 
 namespace rotlie::runs {
 
+/// A shipped file by its path inside data/ (vzs-fig1/liquid_water_points.csv), when present.
+std::optional<std::filesystem::path> shipped_file(const std::string& relative);
+
 /// The shipped map of a family at the paper's grid (maps-K200/map-F.jsonl.xz), when present.
 std::optional<std::filesystem::path> shipped_map(const std::string& family);
 
