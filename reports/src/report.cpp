@@ -25,6 +25,7 @@ const std::vector<std::pair<std::string, section_function>>& all_sections() {
       {"accuracy", accuracy_section},       {"stability", stability_section},  {"exact-flow", exact_flow_section},
       {"vzs", vzs_section},
       {"liquid-water", liquid_water},
+      {"lammps", lammps_section},
       {"maps", maps_section},
       {"maps-truth", maps_truth_section},
       {"beyond", beyond_section},
