@@ -133,18 +133,21 @@ def equilibrate(runner):
     return data
 
 
-def measure(runner, data, molecules, ranks, integrator, h, timed_evaluations, repeats, energy_ps, purpose):
+def measure(runner, data, molecules, ranks, integrator, h, timed_evaluations, repeats, energy_ps, purpose, shift="no", kacc="1.0e-5"):
     fix, fix_args, f = INTEGRATORS[integrator]
     tsteps = max(5, round(timed_evaluations / f))
     esteps = max(10, round(energy_ps * 1000 / h))
     rx, ry, rz = REPLICAS[molecules]
-    name = "%s-%d-%dr-%s-h%g" % (purpose, molecules, ranks, integrator.replace("/", "_"), h)
+    name = "%s-%d-%dr-%s-h%g%s" % (purpose, molecules, ranks, integrator.replace("/", "_"), h,
+                                   "" if (shift, kacc) == ("no", "1.0e-5") else "-shift_%s-pppm_%s" % (shift, kacc))
     load_before = os.getloadavg()[0]
     started = time.time()
     code, log, text = runner.lammps(name, ranks, os.path.join(HERE, "in.tip3p-bench"),
                                     {"data": data, "rx": rx, "ry": ry, "rz": rz, "fix": fix, "args": fix_args,
-                                     "dt": h, "tsteps": tsteps, "repeats": repeats, "esteps": esteps})
+                                     "dt": h, "tsteps": tsteps, "repeats": repeats, "esteps": esteps,
+                                     "shift": shift, "kacc": kacc})
     row = {"purpose": purpose, "molecules": molecules, "ranks": ranks, "integrator": integrator, "h_fs": h, "f": f,
+           "lj_shift": shift, "pppm_accuracy": kacc,
            "timed_steps": tsteps, "repeats": repeats, "energy_steps": esteps, "load_before": round(load_before, 2)}
     runs = parse_log(log) if os.path.exists(log) else []
     energy = runs[repeats]["rows"] if code == 0 and len(runs) == repeats + 1 else []
@@ -167,7 +170,7 @@ def measure(runner, data, molecules, ranks, integrator, h, timed_evaluations, re
     row["load_after"] = round(os.getloadavg()[0], 2)
     row["seconds"] = round(time.time() - started, 1)
     print("  %-8s %6d mol %d rank(s) %-18s h=%-4g %-8s %s" % (
-        purpose, molecules, ranks, integrator, h, row["status"],
+        purpose + ("" if (shift, kacc) == ("no", "1.0e-5") else " (shift %s, pppm %s)" % (shift, kacc)), molecules, ranks, integrator, h, row["status"],
         "%.2f ms/step, ΔE/ΔV %.3g %%, load %.1f" % (row["wall_ms_per_step"], row["dE_over_dV_percent"], load_before)
         if row["status"] == "ok" else row.get("message", "")), flush=True)
     return row
@@ -297,6 +300,9 @@ def main():
     p.add_argument("--sizes", default="512,4096,32768", help="molecule counts among 512, 4096, 32768")
     p.add_argument("--ranks", default="1,2", help="MPI rank counts")
     p.add_argument("--no-chart", action="store_true", help="skip the several-h sweep at 512 molecules")
+    p.add_argument("--floor", action="store_true",
+                   help="also the energy floor's diagnosis at 512 molecules: the smallest steps with the LJ energy "
+                        "shifted to 0 at the cutoff, and with pppm 1e-6 (about 3 minutes)")
     p.add_argument("--full", action="store_true", help="1-ps energy runs, 3 timing repeats, finer h: about 75 min")
     args = p.parse_args()
 
@@ -333,6 +339,12 @@ def main():
         for integrator, steps in chart_steps(args.full).items():
             for h in steps:
                 rows.append(measure(runner, data, 512, 1, integrator, h, timed, 1, energy_ps, "chart"))
+    if args.floor:
+        timed, repeats, energy_ps = b[512]
+        for shift, kacc in (("yes", "1.0e-5"), ("yes", "1.0e-6")):
+            for integrator, h in (("rigid/nve/small", 0.5), ("rigid/nve/small", 2), ("rigid/sier4/small", 2), ("rigid/sier4/small", 4),
+                                  ("rigid/sier4/small", 8)):
+                rows.append(measure(runner, data, 512, 1, integrator, h, timed, 1, energy_ps, "floor", shift, kacc))
     goal_rows = goals(rows)
     write_csv(os.path.join(out, "lammps_bench.csv"), rows)
     write_csv(os.path.join(out, "lammps_goals.csv"), goal_rows)

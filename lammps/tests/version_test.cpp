@@ -56,7 +56,7 @@ BOOST_AUTO_TEST_CASE(another_version_is_refused_in_one_line) {
   BOOST_TEST_MESSAGE("a library claiming LAMMPS 1 Jan 2000 → " << (errors.empty() ? "(no error)" : errors.front()));
   BOOST_TEST(r.status != 0);
   BOOST_TEST(r.output.find("registered into LAMMPS") == std::string::npos, r.output);
-  BOOST_REQUIRE(errors.size() == 1u, r.output);
+  BOOST_REQUIRE_MESSAGE(errors.size() == 1u, r.output);
   BOOST_TEST(errors.front().rfind("ERROR:", 0) == 0u, errors.front());
   BOOST_TEST(errors.front().find("this is LAMMPS 1 Jan 2000") != std::string::npos, errors.front());
   BOOST_TEST(errors.front().find("built against LAMMPS " LAMMPS_VERSION) != std::string::npos, errors.front());

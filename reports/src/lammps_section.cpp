@@ -9,7 +9,7 @@
 
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/number_text.hpp"
-#include "rotlie/reports/report.hpp"
+#include "rotlie/reports/lammps_section.hpp"
 #include "rotlie/reports/report_csv_reader.hpp"
 
 namespace rotlie::reports {

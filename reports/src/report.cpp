@@ -8,6 +8,7 @@
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report_folder.hpp"
 #include "rotlie/reports/liquid_water_section.hpp"
+#include "rotlie/reports/lammps_section.hpp"
 #include "rotlie/reports/vzs_section.hpp"
 
 namespace rotlie::reports {

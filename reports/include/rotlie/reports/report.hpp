@@ -81,9 +81,6 @@ report_section two_parameter_section(const report_options& options);
 /// error against CPU time.
 report_section spin_orbit_section(const report_options& options);
 
-/// Section "In LAMMPS": rotlie's fix styles in LAMMPS, rendered from <out_dir>/lammps-bench/ (lammps/bench/lammps_bench.py).
-report_section lammps_section(const report_options& options);
-
 /// Section "Audit of the paper's statements": LV sections 4-5 against this run's numbers (last).
 report_section audit_section(const report_options& options);
 
