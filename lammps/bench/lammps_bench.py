@@ -16,8 +16,10 @@ Writes into --out (default build/release/lammps-bench; never a source folder):
   summary.md         the table and the goals in markdown
   runs/              LAMMPS's logs
 
-Default sweep: about 8 minutes of wall time on 2 idle cores. --full: 1-ps energy runs at every
-size, three timing repeats and a finer h grid: about 75 minutes on 2 idle cores.
+Cost: the default sweep is about 8 minutes of wall time on 2 idle cores (estimated from the CPU time
+LAMMPS reported; measured: 18 minutes at a load average of 3.4 to 7.5). --full (1-ps energy runs at
+every size, three timing repeats, a finer h grid) about 30 minutes on 2 idle cores, estimated from
+the same per-step costs, not run. --floor adds about 3 minutes.
 """
 import argparse
 import csv
@@ -285,6 +287,12 @@ def summary(path, rows, goal_rows, args, seconds, loads):
                     r["molecules"], r["ranks"], r["integrator"], r["h_fs"], g(r, "wall_ms_per_step", "%.2f"),
                     g(r, "wall_ms_per_force", "%.2f"), g(r, "modify_ms_per_step", "%.3f"), g(r, "cpu_ms_per_ps", "%.0f"),
                     g(r, "dE_over_dV_percent", "%.3g"), r["load_before"]))
+        floor = [r for r in rows if r["purpose"] in ("floor", "chart") and r["status"] == "ok"]
+        if any(r["purpose"] == "floor" for r in floor):
+            f.write("\n| integrator | h (fs) | LJ shifted | PPPM accuracy | ΔE/ΔV (%) |\n|:--|--:|:--|--:|--:|\n")
+            for r in floor:
+                f.write("| %s | %g | %s | %s | %.3g |\n" % (r["integrator"], r["h_fs"], r["lj_shift"], r["pppm_accuracy"],
+                                                         r["dE_over_dV_percent"]))
         f.write("\n| goal | molecules | ranks | value | alternative | met | note |\n|:--|--:|--:|--:|--:|:--|:--|\n")
         for r in goal_rows:
             f.write("| %s | %d | %d | %.3g | %.3g | %s | %s |\n" % (r["goal"], r["molecules"], r["ranks"], r["value"],
@@ -303,7 +311,7 @@ def main():
     p.add_argument("--floor", action="store_true",
                    help="also the energy floor's diagnosis at 512 molecules: the smallest steps with the LJ energy "
                         "shifted to 0 at the cutoff, and with pppm 1e-6 (about 3 minutes)")
-    p.add_argument("--full", action="store_true", help="1-ps energy runs, 3 timing repeats, finer h: about 75 min")
+    p.add_argument("--full", action="store_true", help="1-ps energy runs, 3 timing repeats, finer h: about 30 min on 2 idle cores")
     args = p.parse_args()
 
     out = os.path.abspath(args.out)

@@ -39,7 +39,8 @@ std::string number(double x, int digits) { return std::isfinite(x) ? significant
 
 std::string how_to_produce(const fs::path& out_dir) {
   return "Produce it with `lammps/bench/lammps_bench.py --out " + (out_dir / "lammps-bench").string() +
-         "` (Debian's `/usr/bin/python3`, the build's `lmp_rotlie`; about 8 minutes on 2 idle cores, `--full` about 75), "
+         "` (Debian's `/usr/bin/python3`, the build's `lmp_rotlie`; about 8 minutes on 2 idle cores, `--full` about 30, "
+         "`--floor` adds the energy floor's diagnosis), "
          "then run `rotlie report --sections lammps` into the same folder.\n\n";
 }
 
@@ -87,6 +88,25 @@ chart cost_chart(const csv_table& runs) {
   return c;
 }
 
+// The energy floor's diagnosis (lammps_bench.py --floor): the same runs with the LJ energy shifted to 0 at
+// the cutoff and a tighter PPPM, beside the default runs at the same steps.
+void floor_table(std::ostringstream& md, const csv_table& runs) {
+  std::ostringstream rows;
+  for (const auto& r : runs.rows) {
+    const row_view v{runs, r};
+    if (v["status"] != "ok" || v["molecules"] != "512" || v["ranks"] != "1") continue;
+    if (v["purpose"] != "floor" && v["purpose"] != "chart") continue;
+    rows << "| `" << v["integrator"] << "` | " << v["h_fs"] << " | " << (v["lj_shift"].empty() ? "no" : v["lj_shift"]) << " | "
+         << (v["pppm_accuracy"].empty() ? "1.0e-5" : v["pppm_accuracy"]) << " | " << number(v.number("dE_over_dV_percent"), 3) << " |\n";
+  }
+  if (rows.str().empty() || std::none_of(runs.rows.begin(), runs.rows.end(), [&](const auto& r) { return row_view{runs, r}["purpose"] == "floor"; }))
+    return;
+  md << "Where the energy error stops falling with h (512 molecules, 1 rank; `lammps_bench.py --floor` runs the same inputs "
+        "with `pair_modify shift yes` and with `pppm 1e-6`):\n\n| integrator | h (fs) | LJ shifted | PPPM accuracy | ΔE/ΔV (%) |\n"
+        "|:--|--:|:--|--:|--:|\n"
+     << rows.str() << "\n";
+}
+
 void goals_table(std::ostringstream& md, const csv_table& goals) {
   md << "| goal | molecules | ranks | value | second figure | met | note |\n|:--|--:|--:|--:|--:|:--|:--|\n";
   for (const auto& r : goals.rows) {
@@ -126,7 +146,8 @@ report_section lammps_section(const report_options& options) {
   md << "Read from [lammps-bench/lammps_bench.csv](lammps-bench/lammps_bench.csv) (written by `lammps/bench/lammps_bench.py`; "
         "logs in `lammps-bench/runs/`). The machine's one-minute load average during the runs was between "
      << number(load_min, 3) << " and " << number(load_max, 3)
-     << ": wall times depend on it, above all on 2 ranks of a 2-core machine that other work shares.\n\n"
+     << " (it counts the benchmark's own 1 or 2 processes): wall times depend on it, above all on 2 ranks of a 2-core "
+        "machine that other work shares; CPU time (wall time × LAMMPS's reported CPU use × ranks) depends on it less.\n\n"
      << table.str();
   const auto c = cost_chart(*runs);
   if (!c.series.empty()) {
@@ -134,6 +155,7 @@ report_section lammps_section(const report_options& options) {
     s.files.insert(s.files.end(), files.written.begin(), files.written.end());
     md << chart_markdown(files, "lammps_cost", "ΔE/ΔV against CPU time per simulated ps, several h per integrator.") << "\n";
   }
+  floor_table(md, *runs);
   if (const auto goals = read_csv(dir / "lammps_goals.csv")) {
     md << "The issue's goals on these runs (SIER4 against `rigid/nve/small` at equal CPU per ps: each `rigid/nve/small` "
           "point of the chart against SIER4's curve interpolated in log–log at the same cost):\n\n";
