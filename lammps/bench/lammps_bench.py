@@ -19,7 +19,7 @@ Writes into --out (default build/release/lammps-bench; never a source folder):
 Cost: the default sweep is about 8 minutes of wall time on 2 idle cores (estimated from the CPU time
 LAMMPS reported; measured: 18 minutes at a load average of 3.4 to 7.5). --full (1-ps energy runs at
 every size, three timing repeats, a finer h grid) about 30 minutes on 2 idle cores, estimated from
-the same per-step costs, not run. --floor adds about 3 minutes.
+the same per-step costs, not run. --floor adds about 4 minutes.
 """
 import argparse
 import csv
@@ -112,7 +112,8 @@ class Runner:
         env_threads = ["-x", "OMP_NUM_THREADS=1"]
         if ranks == 1:
             return [self.args.lmp] + lmp_args
-        return [self.args.mpiexec, "--allow-run-as-root", "--oversubscribe", "--bind-to", "none"] + env_threads + \
+        yield_ = ["--mca", "mpi_yield_when_idle", "1"] if self.args.mpi_yield else []
+        return [self.args.mpiexec, "--allow-run-as-root", "--oversubscribe", "--bind-to", "none"] + yield_ + env_threads + \
                ["-np", str(ranks), self.args.lmp] + lmp_args
 
     def lammps(self, name, ranks, input_file, variables):
@@ -208,18 +209,21 @@ def goals(rows):
                 out.append({"goal": "SIER2 step / rigid/nve/small step <= 1.05", "molecules": molecules, "ranks": ranks,
                             "value": whole, "alternative": own, "met": whole <= 1.05,
                             "note": "alternative: rigid/nve/small's step with SIER2's Modify time instead of its own"})
-    # SIER4 against rigid/nve/small at equal CPU per ps (goal ≥ 10): chart points, log-log interpolation
-    chart = {}
+    # SIER4 against rigid/nve/small at equal CPU per ps (goal ≥ 10): each rigid/nve/small point against SIER4's
+    # broken line in log-log, within one force field (the chart's, and each of --floor's)
+    groups = {}
     for r in ok:
-        if r["purpose"] == "chart":
-            chart.setdefault(r["integrator"], []).append((r["cpu_ms_per_ps"], r["dE_over_dV_percent"]))
-    sier4 = sorted(chart.get("rigid/sier4/small", []))
-    for x, y in sorted(chart.get("rigid/nve/small", [])):
-        y4 = log_interpolate(sier4, x)
-        out.append({"goal": "nve dE/dV / sier4 dE/dV at equal CPU per ps >= 10", "molecules": 512, "ranks": 1,
-                    "value": y / y4 if y4 else math.nan, "alternative": x, "met": (y / y4 >= 10) if y4 else "n/a",
-                    "note": "alternative: CPU ms per ps of the rigid/nve/small point"
-                            + ("" if y4 else " (outside SIER4's measured CPU range)")})
+        if r["purpose"] in ("chart", "floor"):
+            key = (r["purpose"], r["lj_shift"], r["pppm_accuracy"])
+            groups.setdefault(key, {}).setdefault(r["integrator"], []).append((r["cpu_ms_per_ps"], r["dE_over_dV_percent"], r["h_fs"]))
+    for (purpose, shift, kacc), chart in groups.items():
+        sier4 = sorted((x, y) for x, y, _ in chart.get("rigid/sier4/small", []))
+        for x, y, h in sorted(chart.get("rigid/nve/small", [])):
+            y4 = log_interpolate(sier4, x)
+            out.append({"goal": "nve dE/dV / sier4 dE/dV at equal CPU per ps >= 10", "molecules": 512, "ranks": 1,
+                        "value": y / y4 if y4 else math.nan, "alternative": x, "met": (y / y4 >= 10) if y4 else "n/a",
+                        "note": "rigid/nve/small at h = %g fs; LJ shifted %s, pppm %s; alternative: its CPU ms per ps%s"
+                                % (h, shift, kacc, "" if y4 else " (outside SIER4's measured CPU range)")})
     # 1 -> 2 ranks at 32,768 molecules (goal ≥ 1.8 in wall time)
     for integrator in INTEGRATORS:
         one, two = find("table", 32768, 1, integrator), find("table", 32768, 2, integrator)
@@ -229,6 +233,26 @@ def goals(rows):
                         "alternative": two["load_before"], "met": one["wall_ms_per_step"] / two["wall_ms_per_step"] >= 1.8,
                         "note": integrator + "; alternative: load average before the 2-rank run"})
     return out
+
+
+TEXT_COLUMNS = {"purpose", "integrator", "status", "message", "lj_shift", "pppm_accuracy"}
+
+
+def read_rows(path):
+    """The rows of a lammps_bench.csv, numbers as numbers (for --render-only)."""
+    rows = []
+    with open(path, newline="") as f:
+        for r in csv.DictReader(f):
+            row = {}
+            for k, v in r.items():
+                if k in TEXT_COLUMNS or v == "":
+                    row[k] = v
+                else:
+                    row[k] = int(v) if re.fullmatch(r"-?\d+", v) else float(v)
+            row["lj_shift"] = row.get("lj_shift") or "no"
+            row["pppm_accuracy"] = row.get("pppm_accuracy") or "1.0e-5"
+            rows.append({k: v for k, v in row.items() if v != ""})
+    return rows
 
 
 def write_csv(path, rows):
@@ -276,9 +300,10 @@ def summary(path, rows, goal_rows, args, seconds, loads):
 
     with open(path, "w") as f:
         f.write("# rotlie inside LAMMPS: benchmark\n\n")
-        f.write("Rigid TIP3P, lj/cut/coul/long 9 Å, pppm 1e-5; %s sweep, %.0f s wall; load average (1 min) "
-                "between %.2f and %.2f during the runs on %d cores.\n\n" % ("full" if args.full else "default", seconds,
-                                                                               min(loads), max(loads), os.cpu_count()))
+        f.write("Rigid TIP3P, lj/cut/coul/long 9 Å, pppm 1e-5; %s; load average (1 min) between %.2f and %.2f during "
+                "the runs on %d cores (it counts the benchmark's own 1 or 2 processes).\n\n" % (
+                    "rendered again from lammps_bench.csv" if seconds is None else
+                    "%s sweep, %.0f s wall" % ("full" if args.full else "default", seconds), min(loads), max(loads), os.cpu_count()))
         f.write("| molecules | ranks | integrator | h (fs) | wall ms/step | ms per force evaluation | fix's own ms/step | "
                 "CPU ms per ps | ΔE/ΔV (%) | load |\n|--:|--:|:--|--:|--:|--:|--:|--:|--:|--:|\n")
         for r in rows:
@@ -311,6 +336,10 @@ def main():
     p.add_argument("--floor", action="store_true",
                    help="also the energy floor's diagnosis at 512 molecules: the smallest steps with the LJ energy "
                         "shifted to 0 at the cutoff, and with pppm 1e-6 (about 3 minutes)")
+    p.add_argument("--mpi-yield", action="store_true",
+                   help="ranks yield the core while they wait (Open MPI's mpi_yield_when_idle; helps on a loaded machine)")
+    p.add_argument("--render-only", action="store_true",
+                   help="run nothing: the goals, chart and summary again from --out's lammps_bench.csv")
     p.add_argument("--full", action="store_true", help="1-ps energy runs, 3 timing repeats, finer h: about 30 min on 2 idle cores")
     args = p.parse_args()
 
@@ -331,6 +360,12 @@ def main():
     if any(r > 1 for r in ranks) and not shutil.which(args.mpiexec):
         fail("no MPI launcher %s for more than one rank" % args.mpiexec)
     os.makedirs(out, exist_ok=True)
+    if args.render_only:
+        if not os.path.exists(os.path.join(out, "lammps_bench.csv")):
+            fail("--render-only: no lammps_bench.csv in %s" % out)
+        rows = read_rows(os.path.join(out, "lammps_bench.csv"))
+        render(out, rows, args, None)
+        return
 
     started = time.time()
     runner = Runner(args, out)
@@ -350,16 +385,21 @@ def main():
     if args.floor:
         timed, repeats, energy_ps = b[512]
         for shift, kacc in (("yes", "1.0e-5"), ("yes", "1.0e-6")):
-            for integrator, h in (("rigid/nve/small", 0.5), ("rigid/nve/small", 2), ("rigid/sier4/small", 2), ("rigid/sier4/small", 4),
-                                  ("rigid/sier4/small", 8)):
+            for integrator, h in (("rigid/nve/small", 0.5), ("rigid/nve/small", 1), ("rigid/nve/small", 2), ("rigid/sier4/small", 2),
+                                  ("rigid/sier4/small", 4), ("rigid/sier4/small", 8)):
                 rows.append(measure(runner, data, 512, 1, integrator, h, timed, 1, energy_ps, "floor", shift, kacc))
-    goal_rows = goals(rows)
     write_csv(os.path.join(out, "lammps_bench.csv"), rows)
+    render(out, rows, args, time.time() - started)
+
+
+def render(out, rows, args, seconds):
+    goal_rows = goals(rows)
     write_csv(os.path.join(out, "lammps_goals.csv"), goal_rows)
     write_chart(os.path.join(out, "lammps_bench.png"), rows)
     loads = [r["load_before"] for r in rows] + [r["load_after"] for r in rows]
-    summary(os.path.join(out, "summary.md"), rows, goal_rows, args, time.time() - started, loads)
-    print("wrote %s/{lammps_bench.csv,lammps_goals.csv,lammps_bench.png,summary.md} in %.0f s" % (out, time.time() - started))
+    summary(os.path.join(out, "summary.md"), rows, goal_rows, args, seconds, loads)
+    print("wrote %s/{lammps_bench.csv,lammps_goals.csv,lammps_bench.png,summary.md}%s" % (
+        out, "" if seconds is None else " in %.0f s" % seconds))
 
 
 if __name__ == "__main__":

@@ -13,7 +13,8 @@ to find out why its energy is not conserved (the input or the fixes).
 
 Writes into --out (default build/release/lammps-examples; never a source folder):
   rigid_examples.csv, rigid_examples.md and runs/ (the modified inputs and LAMMPS's logs).
-About 3 minutes of wall time on 2 idle cores.
+About 3 minutes of wall time on 2 idle cores. On 2 ranks the MPI processes yield the core while they wait
+(Open MPI's mpi_yield_when_idle): on a machine shared with other work, busy waiting made them crawl.
 """
 import argparse
 import csv
@@ -115,7 +116,7 @@ def run(args, folder, name, text, ranks):
     log = path + ".log"
     cmd = [args.lmp, "-in", name, "-log", os.path.basename(log), "-screen", "none"]
     if ranks > 1:
-        cmd = [args.mpiexec, "--allow-run-as-root", "--bind-to", "none", "-x", "OMP_NUM_THREADS=1", "-np", str(ranks)] + cmd
+        cmd = [args.mpiexec, "--allow-run-as-root", "--bind-to", "none", "--mca", "mpi_yield_when_idle", "1", "-x", "OMP_NUM_THREADS=1", "-np", str(ranks)] + cmd
     try:
         done = subprocess.run(cmd, cwd=folder, env=dict(os.environ, OMP_NUM_THREADS="1"), capture_output=True, text=True,
                               timeout=600)
