@@ -78,11 +78,23 @@ def micelle(text, style, variant):
     return text
 
 
+def co2(text, style, variant):
+    # the input's CO2 (linear rigid molecules, lj/cut/coul/long with ewald) without its Monte Carlo
+    # exchange (fix gcmc): the molecules it creates, at constant energy for 5000 steps of 1 fs
+    head = text[:text.index("fix             myrigid")]
+    if variant == "ewald 1e-8, LJ shifted":  # the force field's energy floor lowered
+        head = replaced(head, "kspace_style    ewald 0.0001", "kspace_style    ewald 1.0e-8\npair_modify     tail no shift yes", "in.gcmc.co2")
+    return head + "fix             myrigid co2 %s molecule mol co2mol\n%srun 5000\n" % (style, THERMO)
+
+
 EXAMPLES = [
     ("rigid", "in.rigid.atomvar", ["rigid"] + RIGID_SMALL_FAMILY, atomvar, ["as written"],
      "9 clumps of 9 LJ atoms, bodies by an atom-style variable (custom), 10000 steps"),
     ("rigid", "in.rigid.tnr", ["rigid/nve"] + RIGID_SMALL_FAMILY, tnr, ["as written"],
      "tethered nanorods: linear rigid rods (molecule) and fix nve tethers, 2000 constant-energy steps after the input's thermostatted 5000"),
+    ("gcmc", "in.gcmc.co2", RIGID_SMALL_FAMILY, co2, ["as written", "ewald 1e-8, LJ shifted"],
+     "8 linear rigid CO2 (a zero moment), lj/cut/coul/long 14 Å with ewald 1e-4, the input's start at 338 K without "
+     "its fix gcmc, 5000 steps of 1 fs"),
     ("micelle", "in.micelle-rigid", RIGID_SMALL_FAMILY, micelle,
      ["as written", "every step", "h/5", "h/5, every step", "no Langevin before"],
      "2-d (enforce2d) surfactants as rigid molecules in fix nve solvent: the input's last 500 steps"),
