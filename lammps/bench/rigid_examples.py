@@ -174,7 +174,7 @@ def main():
         for variant in variants:
             for style in styles:
                 for n in ranks:
-                    input_name = "%s.%s.%s.%dr" % (name, style.replace("/", "_"), re.sub(r"[^a-z0-9]+", "_", variant), n)
+                    input_name = "%s.%s.%s.%dr" % (name, style.replace("/", "_"), re.sub(r"[^a-z0-9]+", "_", variant.lower()), n)
                     status, rows, loop, errors = run(args, work, input_name, make(text, style, variant), n)
                     row = {"example": "%s/%s" % (folder, name), "variant": variant, "fix": style, "ranks": n, "what": what}
                     if status == 0 and rows and all(math.isfinite(r["TotEng"]) for r in rows):
