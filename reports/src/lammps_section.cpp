@@ -117,6 +117,36 @@ void goals_table(std::ostringstream& md, const csv_table& goals) {
   md << "\n";
 }
 
+// LAMMPS's own rigid examples (lammps/bench/rigid_examples.py): std of etotal per input, variant and fix,
+// 1 and 2 ranks side by side.
+void examples_table(std::ostringstream& md, const csv_table& runs) {
+  md << "| input | variant | fix | std(etotal), 1 rank | 2 ranks |\n|:--|:--|:--|--:|--:|\n";
+  auto shown = [](const row_view& v) { return v["status"] == "ran" ? number(v.number("std_etotal"), 3) : v["status"]; };
+  for (const auto& r : runs.rows) {
+    const row_view v{runs, r};
+    if (v["ranks"] != "1") continue;
+    std::string two;
+    for (const auto& o : runs.rows) {
+      const row_view w{runs, o};
+      if (w["ranks"] == "2" && w["example"] == v["example"] && w["variant"] == v["variant"] && w["fix"] == v["fix"]) two = shown(w);
+    }
+    md << "| `" << v["example"] << "` | " << v["variant"] << " | `" << v["fix"] << "` | " << shown(v) << " | " << two << " |\n";
+  }
+  md << "\n";
+}
+
+void examples_part(std::ostringstream& md, const fs::path& out_dir) {
+  if (const auto examples = read_csv(out_dir / "lammps-examples" / "rigid_examples.csv")) {
+    md << "LAMMPS's own example inputs with rigid bodies, the rigid fix of their constant-energy run swapped "
+          "([lammps-examples/rigid_examples.csv](lammps-examples/rigid_examples.csv), `lammps/bench/rigid_examples.py`; "
+          "what each input and variant is: lammps/README.md):\n\n";
+    examples_table(md, *examples);
+  } else {
+    md << "LAMMPS's own example inputs with rigid bodies: `lammps/bench/rigid_examples.py --out "
+       << (out_dir / "lammps-examples").string() << "` puts their table here.\n\n";
+  }
+}
+
 }  // namespace
 
 report_section lammps_section(const report_options& options) {
@@ -137,6 +167,7 @@ report_section lammps_section(const report_options& options) {
     md << "The benchmark's results (`lammps-bench/lammps_bench.csv` in this report's folder) are not there: the report "
           "does not run LAMMPS itself (the default sweep takes minutes). "
        << how_to_produce(options.out_dir);
+    examples_part(md, options.out_dir);
     s.markdown = md.str();
     return s;
   }
@@ -161,6 +192,7 @@ report_section lammps_section(const report_options& options) {
           "point of the chart against SIER4's curve interpolated in log–log at the same cost):\n\n";
     goals_table(md, *goals);
   }
+  examples_part(md, options.out_dir);
   md << "To measure again: " << how_to_produce(options.out_dir);
   s.markdown = md.str();
   return s;
