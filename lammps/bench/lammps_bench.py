@@ -338,7 +338,7 @@ def main():
     p.add_argument("--no-chart", action="store_true", help="skip the several-h sweep at 512 molecules")
     p.add_argument("--floor", action="store_true",
                    help="also the energy floor's diagnosis at 512 molecules: the smallest steps with the LJ energy "
-                        "shifted to 0 at the cutoff, and with pppm 1e-6 (about 3 minutes)")
+                        "shifted to 0 at the cutoff, and with pppm 1e-6 (about 4 minutes)")
     p.add_argument("--mpi-yield", action="store_true",
                    help="ranks yield the core while they wait (Open MPI's mpi_yield_when_idle; helps on a loaded machine)")
     p.add_argument("--render-only", action="store_true",
