@@ -31,7 +31,8 @@ python=(                         # python/: the rotlie Python package (Debian's 
 
 # lammps/: the fix styles rigid/sier2/small, rigid/sier4/small and lmp_rotlie (optional: skipped without
 # them); the headers liblammps-dev lacks come from Debian's source package (lammps/fetch-headers.sh)
-lammps=(liblammps-dev lammps-examples dpkg-dev)  # lmp itself is in symbolic
+# python3-lammps: LAMMPS's Python module, for the loader's route from Python (lammps/tests/loader_test.cpp)
+lammps=(liblammps-dev lammps-examples dpkg-dev python3-lammps)  # lmp itself is in symbolic
 
 case "${1:-}" in
   "") packages=("${numeric[@]}" "${symbolic[@]}" "${python[@]}" "${lammps[@]}") ;;

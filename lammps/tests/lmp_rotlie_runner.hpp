@@ -40,7 +40,10 @@ struct scratch {
           const std::string& program = ROTLIE_LMP_ROTLIE) {
     std::ofstream(dir / name) << input;
     std::string launcher;
-    if (ranks > 1) launcher = std::string(ROTLIE_MPIEXEC) + (::geteuid() == 0 ? " --allow-run-as-root" : "") + " -np " + std::to_string(ranks) + " ";
+    // Open MPI's flags: root may run it, and more ranks than cores (4 ranks on a 2-core machine)
+    if (ranks > 1)
+      launcher = std::string(ROTLIE_MPIEXEC) + (::geteuid() == 0 ? " --allow-run-as-root" : "") + (ranks > 2 ? " --oversubscribe" : "") + " -np " +
+                 std::to_string(ranks) + " ";
     const std::string cmd = "cd '" + dir.string() + "' && OMP_NUM_THREADS=1 " + launcher + program + " -in " + name + " -log none " +
                             extra + " > " + name + ".out 2>&1";
     const int status = std::system(cmd.c_str());

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Stock lmp (Debian's, with its PYTHON package) loads the fix styles through its `python` command
 // and the loader rotlie_lammps.py (rotlieplugin.so): 50 SIER4 steps of 216 TIP3P end in the same
-// positions and velocities, to the last digit, as lmp_rotlie's, on 1 and 2 ranks.
+// positions and velocities, to the last digit, as lmp_rotlie's, on 1 and 2 ranks. So does a Python
+// program that drives LAMMPS through Debian's `lammps` module (python3-lammps) and loads the styles
+// with rotlie_lammps.load_into (skipped where the module is not installed).
 #include <boost/test/unit_test.hpp>
 
 #include "lmp_rotlie_runner.hpp"
@@ -39,6 +41,42 @@ BOOST_AUTO_TEST_CASE(stock_lmp_with_the_python_loader_runs_the_styles) {
     BOOST_TEST(launcher == stock, ranks << " rank(s): stock lmp with the loader differs from lmp_rotlie");
     BOOST_TEST_MESSAGE(ranks << " rank(s): stock lmp + python loader, 50 SIER4 steps: dump equal to lmp_rotlie's: " << (launcher == stock));
   }
+}
+
+BOOST_AUTO_TEST_CASE(the_lammps_python_module_with_the_loader_runs_the_styles) {
+  const std::string python = ROTLIE_LAMMPS_PYTHON;
+  if (std::system((python + " -c 'import lammps' > /dev/null 2>&1").c_str()) != 0) {
+    BOOST_TEST_MESSAGE("skipped: " << python << " has no lammps module (Debian: python3-lammps)");
+    return;
+  }
+  const double L = cubic_box_side<double>(216, tip3p<double>().mass, 0.9973);
+  const auto s = lattice_water<double>(tip3p<double>(), 216, L, 297, 21);
+  const auto w = dsf_water(L);
+  scratch d("python_module");
+  write_lammps_water_data(d.dir / "water.data", w, s.bodies);
+  const std::string input = water_head + lammps_water_pair_lines(w) + "fix r all rigid/sier4/small molecule\ntimestep 1.0\nrun 50\n" +
+                            "write_dump all custom final.dump id x y z vx vy vz modify format float %.17g sort id\n";
+  auto text = [&] {
+    std::ifstream in(d.dir / "final.dump");
+    std::ostringstream t;
+    t << in.rdbuf();
+    return t.str();
+  };
+  BOOST_REQUIRE_MESSAGE(d.run("in.launcher", input) == 0, d.output);
+  const std::string launcher = text();
+  std::filesystem::remove(d.dir / "final.dump");
+  const std::string loader_dir = std::filesystem::path(ROTLIE_LAMMPS_LOADER).parent_path().string();
+  std::ofstream(d.dir / "in.module") << input;
+  std::ofstream(d.dir / "drive.py") << "import sys\nsys.path.insert(0, '" << loader_dir << "')\n"
+                                    << "from lammps import lammps\nimport rotlie_lammps\n"
+                                    << "lmp = lammps(cmdargs=['-log', 'none', '-screen', 'none'])\n"
+                                    << "rotlie_lammps.load_into(lmp)\nlmp.file('in.module')\nlmp.close()\n";
+  const std::string cmd = "cd '" + d.dir.string() + "' && OMP_NUM_THREADS=1 " + python + " drive.py > drive.out 2>&1";
+  BOOST_REQUIRE_MESSAGE(std::system(cmd.c_str()) == 0, "the Python program failed (drive.out in " << d.dir << ")");
+  const std::string module = text();
+  BOOST_TEST(launcher.size() > 3 * 216 * 6 * 17u);
+  BOOST_TEST(launcher == module, "the lammps module with the loader differs from lmp_rotlie");
+  BOOST_TEST_MESSAGE("lammps Python module + rotlie_lammps.load_into, 50 SIER4 steps: dump equal to lmp_rotlie's: " << (launcher == module));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -8,6 +8,7 @@
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report_folder.hpp"
 #include "rotlie/reports/liquid_water_section.hpp"
+#include "rotlie/reports/lammps_section.hpp"
 #include "rotlie/reports/vzs_section.hpp"
 
 namespace rotlie::reports {
@@ -25,6 +26,7 @@ const std::vector<std::pair<std::string, section_function>>& all_sections() {
       {"accuracy", accuracy_section},       {"stability", stability_section},  {"exact-flow", exact_flow_section},
       {"vzs", vzs_section},
       {"liquid-water", liquid_water},
+      {"lammps", lammps_section},
       {"maps", maps_section},
       {"maps-truth", maps_truth_section},
       {"beyond", beyond_section},
