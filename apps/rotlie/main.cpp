@@ -217,7 +217,7 @@ subcommand add_report(CLI::App& app, report_command_options& report) {
   report_cmd->add_option("--out", report.out, "Output folder (default: rotlie-report)");
   report_cmd->add_flag("--quick", report.quick, "Smaller sweeps, for a fast look");
   report_cmd->add_option("--sections", report.sections,
-                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs, liquid-water, maps, maps-truth, beyond, two-parameter, spin-orbit, audit");
+                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs, liquid-water, lammps, maps, maps-truth, beyond, two-parameter, spin-orbit, audit");
   report_cmd->add_flag("--full", report.full,
                        "The papers' full statistics: liquid water's nine 1-ps runs per point (about 30 min), maps over all bodies at "
                        "the paper's grid (--grid 200; hours for the P family)");

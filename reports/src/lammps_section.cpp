@@ -4,6 +4,7 @@
 // and says how to produce them when they are absent.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -11,6 +12,7 @@
 #include "rotlie/reports/number_text.hpp"
 #include "rotlie/reports/lammps_section.hpp"
 #include "rotlie/reports/report_csv_reader.hpp"
+#include "rotlie/runs/shipped_data.hpp"
 
 namespace rotlie::reports {
 namespace {
@@ -135,11 +137,26 @@ void examples_table(std::ostringstream& md, const csv_table& runs) {
   md << "\n";
 }
 
+// A CSV the benchmark scripts wrote into this report's folder (`local`), else the measurement shipped
+// with rotlie (data/lammps/); `where` says which, as a markdown link or the shipped path.
+std::optional<csv_table> measured_csv(const fs::path& out_dir, const std::string& local, std::string& where) {
+  if (auto t = read_csv(out_dir / local)) {
+    where = "[" + local + "](" + local + ")";
+    return t;
+  }
+  const std::string name = fs::path(local).filename().string();
+  if (const auto shipped = runs::shipped_file("lammps/" + name)) {
+    where = "data/lammps/" + name + " (the measurement shipped with rotlie, on a 2-core machine other work shared)";
+    return read_csv(*shipped);
+  }
+  return std::nullopt;
+}
+
 void examples_part(std::ostringstream& md, const fs::path& out_dir) {
-  if (const auto examples = read_csv(out_dir / "lammps-examples" / "rigid_examples.csv")) {
+  std::string where;
+  if (const auto examples = measured_csv(out_dir, "lammps-examples/rigid_examples.csv", where)) {
     md << "LAMMPS's own example inputs with rigid bodies, the rigid fix of their constant-energy run swapped "
-          "([lammps-examples/rigid_examples.csv](lammps-examples/rigid_examples.csv), `lammps/bench/rigid_examples.py`; "
-          "what each input and variant is: lammps/README.md):\n\n";
+          "(" << where << ", `lammps/bench/rigid_examples.py`; what each input and variant is: lammps/README.md):\n\n";
     examples_table(md, *examples);
   } else {
     md << "LAMMPS's own example inputs with rigid bodies: `lammps/bench/rigid_examples.py --out "
@@ -161,8 +178,8 @@ report_section lammps_section(const report_options& options) {
         "others at 2 fs (the same force evaluations per simulated ps). ΔE/ΔV is the rms fluctuation of etotal over that "
         "of pe, sampled every step (as in the liquid-water section); the timed runs tally no energy in between. "
         "\"fix's own\" is LAMMPS's Modify time, the integrator's share of the step.\n\n";
-  const fs::path dir = options.out_dir / "lammps-bench";
-  const auto runs = read_csv(dir / "lammps_bench.csv");
+  std::string where;
+  const auto runs = measured_csv(options.out_dir, "lammps-bench/lammps_bench.csv", where);
   if (!runs) {
     md << "The benchmark's results (`lammps-bench/lammps_bench.csv` in this report's folder) are not there: the report "
           "does not run LAMMPS itself (the default sweep takes minutes). "
@@ -174,8 +191,7 @@ report_section lammps_section(const report_options& options) {
   double load_min = INFINITY, load_max = -INFINITY;
   std::ostringstream table;
   benchmark_table(table, *runs, load_min, load_max);
-  md << "Read from [lammps-bench/lammps_bench.csv](lammps-bench/lammps_bench.csv) (written by `lammps/bench/lammps_bench.py`; "
-        "logs in `lammps-bench/runs/`). The machine's one-minute load average during the runs was between "
+  md << "Read from " << where << " (written by `lammps/bench/lammps_bench.py`). The machine's one-minute load average during the runs was between "
      << number(load_min, 3) << " and " << number(load_max, 3)
      << " (it counts the benchmark's own 1 or 2 processes): wall times depend on it, above all on 2 ranks of a 2-core "
         "machine that other work shares; CPU time (wall time × LAMMPS's reported CPU use × ranks) depends on it less.\n\n"
@@ -187,7 +203,8 @@ report_section lammps_section(const report_options& options) {
     md << chart_markdown(files, "lammps_cost", "ΔE/ΔV against CPU time per simulated ps, several h per integrator.") << "\n";
   }
   floor_table(md, *runs);
-  if (const auto goals = read_csv(dir / "lammps_goals.csv")) {
+  std::string goals_where;
+  if (const auto goals = measured_csv(options.out_dir, "lammps-bench/lammps_goals.csv", goals_where)) {
     md << "The issue's goals on these runs (SIER4 against `rigid/nve/small` at equal CPU per ps: each `rigid/nve/small` "
           "point of the chart against SIER4's curve interpolated in log–log at the same cost):\n\n";
     goals_table(md, *goals);
