@@ -72,10 +72,7 @@ spin_outcome<T> step_spin_orbit(const spin_method& m, const models::vec3<T>& I, 
     auto x = models::spin_orbit_state(start);
     const double cpu0 = models::thread_cpu_seconds();
     for (long k = 1; k <= steps; ++k) {
-      method.step(x, h);
-      // the clock set to k h: the free flights' sums of c h drift by round-off (up to an ulp of t per
-      // stage), and a body locked in resonance follows the orbit's phase, so its attitude would too
-      x.t = T(k) * h;
+      method.step(x, h);  // the engine writes the clock: x.t is k h to round-off (step_clock.hpp)
       obs(k, x.t, x.bodies[0].rot);
     }
     out.cpu_s = models::thread_cpu_seconds() - cpu0;
