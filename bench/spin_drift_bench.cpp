@@ -3,8 +3,10 @@
 // Boost.Odeint's RKF78 at equal CPU, in double, for the regular states of runs::spin_drift_cases().
 // The reference is RKF78 in long double at tolerance 1e-18; SIER4 in long double at a step four
 // times finer is a second one, and their distance is printed as the floor the errors are read to.
-//   spin_drift_bench           10⁴ orbits for the Moon and Mercury, 10³ for Hyperion (about 3 CPU minutes)
-//   spin_drift_bench --full    10⁶ orbits for the Moon and Mercury, 10⁵ for Hyperion (about 3 CPU hours)
+//   spin_drift_bench           10⁴ orbits for the Moon and Mercury, 10³ for Hyperion (about 5 CPU minutes)
+//   spin_drift_bench --full    10⁶ orbits for the Moon and Mercury, 10⁵ for Hyperion (about 8 CPU hours:
+//                              the long double references are 90 % of it)
+//   --body NAME                one body's case only
 // CSV rows on stdout (case, method, orbits, angle, cpu_s), then one table per case.
 #include <cstdio>
 #include <string>
@@ -31,10 +33,23 @@ std::string best_dedicated(const std::string& body) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool full = argc > 1 && std::string(argv[1]) == "--full";
+  bool full = false;
+  std::string only;  // --body NAME: that body's case alone
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--full")
+      full = true;
+    else if (a == "--body" && i + 1 < argc)
+      only = argv[++i];
+    else {
+      std::fprintf(stderr, "usage: spin_drift_bench [--full] [--body Moon|Mercury|Hyperion]\n");
+      return 2;
+    }
+  }
   const double cpu_start = rotlie::models::thread_cpu_seconds();
   std::printf("case,method,scalar,steps_per_orbit,orbits,angle,cpu_s\n");
   for (const auto& c : runs::spin_drift_cases()) {
+    if (!only.empty() && c.body != only) continue;
     const bool hyperion = c.body == "Hyperion";
     const auto checkpoints = checkpoints_to(hyperion ? (full ? 100000 : 1000) : (full ? 1000000 : 10000));
     const std::string tol = runs::rkf78_tolerance_at_equal_cpu(c, 100);
