@@ -6,9 +6,10 @@
 //   spin_drift_bench           10⁴ orbits for the Moon and Mercury, 10³ for Hyperion (about 5 CPU minutes)
 //   spin_drift_bench --full    10⁶ orbits for the Moon and Mercury, 10⁵ for Hyperion (about 8 CPU hours:
 //                              the long double references are 90 % of it)
-//   --body NAME                one body's case only
+//   --body NAME                one body's case only;  --orbits N  the last checkpoint instead (10², 10³, … up to N)
 // CSV rows on stdout (case, method, orbits, angle, cpu_s), then one table per case.
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -35,14 +36,17 @@ std::string best_dedicated(const std::string& body) {
 int main(int argc, char** argv) {
   bool full = false;
   std::string only;  // --body NAME: that body's case alone
+  long orbits = 0;   // --orbits N: the last checkpoint (a power of ten from 100), instead of the defaults
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--full")
       full = true;
     else if (a == "--body" && i + 1 < argc)
       only = argv[++i];
+    else if (a == "--orbits" && i + 1 < argc)
+      orbits = std::atol(argv[++i]);
     else {
-      std::fprintf(stderr, "usage: spin_drift_bench [--full] [--body Moon|Mercury|Hyperion]\n");
+      std::fprintf(stderr, "usage: spin_drift_bench [--full] [--body Moon|Mercury|Hyperion] [--orbits N]\n");
       return 2;
     }
   }
@@ -51,7 +55,11 @@ int main(int argc, char** argv) {
   for (const auto& c : runs::spin_drift_cases()) {
     if (!only.empty() && c.body != only) continue;
     const bool hyperion = c.body == "Hyperion";
-    const auto checkpoints = checkpoints_to(hyperion ? (full ? 100000 : 1000) : (full ? 1000000 : 10000));
+    const auto checkpoints = checkpoints_to(orbits > 0 ? orbits : hyperion ? (full ? 100000 : 1000) : (full ? 1000000 : 10000));
+    if (checkpoints.empty()) {
+      std::fprintf(stderr, "spin_drift_bench: --orbits must be at least 100\n");
+      return 2;
+    }
     const std::string tol = runs::rkf78_tolerance_at_equal_cpu(c, 100);
     const auto ref = runs::spin_track_of(c, "odeint-rkf78:1e-18", true, 1, checkpoints);
     const auto second = runs::spin_track_of(c, "SIER4", true, 4 * c.steps_per_orbit, checkpoints);
