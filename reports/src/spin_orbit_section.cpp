@@ -119,7 +119,7 @@ void islands(std::ostringstream& md, const report_options& o, const runs::spin_b
      << significant_text((width[1] + width[2]) / 0.5, 3)
      << " times (Chirikov's criterion: overlap above 1): the 3:2 centre lies inside the 1:1 resonance's width, and the estimate's "
         "chaotic band, "
-     << fixed_text(1 - width[0], 2) << "–" << fixed_text(2 + width[2], 2) << " n, is the measured zone's.\n\n";
+     << fixed_text(1 - width[0], 2) << "–" << fixed_text(2 + width[2], 2) << " n, lies within the measured zone.\n\n";
   // starts on a finer grid through both 3:2 orbits' pericentre rates
   const double step = o.quick ? 0.05 : 0.025;
   int regular = 0, total = 0;
