@@ -8,12 +8,14 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/runs/spin_orbit_cost.hpp"
+#include "rotlie/runs/spin_orbit_drift.hpp"
 #include "rotlie/runs/spin_orbit_science.hpp"
 
 namespace rotlie::reports {
@@ -66,6 +68,75 @@ void bodies_table(std::ostringstream& md) {
   md << "\n";
 }
 
+// Which resonances keep an island: the symmetric periodic orbits of the pericentre map (θ = 0 or π/2 at
+// pericentre, found by bisection), their turns per orbit and the trace of their Jacobian; the
+// resonance-overlap estimate; and starts on a finer grid around the 3:2 orbits' rates.
+void islands(std::ostringstream& md, const report_options& o, const runs::spin_body& body, const budget& bu) {
+  if (o.progress) o.progress("Spin-orbit: Hyperion's resonant periodic orbits");
+  const double e = 0.1, half_pi = pi / 2;
+  const auto I = runs::spin_moments(body);
+  const double w0 = std::sqrt(3 * (I[1] - I[0]) / I[2]);
+  struct family {
+    double p, theta0, lo, hi;
+  };
+  // brackets around each symmetric orbit's pericentre rate (a strong asphericity moves them far from p n)
+  const std::vector<family> families = {{0.5, half_pi, 0.8, 1.0}, {1, 0, 0.4, 0.7},      {1.5, 0, 1.85, 2.1},
+                                        {1.5, half_pi, 1.2, 1.4}, {2, 0, 2.2, 2.45}, {2.5, 0, 2.6, 2.8}};
+  md << "**Which islands survive.** The centre of an island is a periodic orbit; by the time-reversal symmetry the p:1 orbits "
+        "start at pericentre with θ = 0 or π/2 and reach θ ≡ θ₀ + pπ (mod π) at apocentre (found by bisection on the rate). "
+        "The trace of the one-orbit map's Jacobian at such an orbit (central differences) says whether an island surrounds it "
+        "(|tr| < 2, elliptic) or not (|tr| > 2, hyperbolic); SIER4 at h = 1/200 orbit:\n\n"
+     << "| p | θ at pericentre | θ'/n at pericentre | turns per orbit | trace | |\n|--:|:--|--:|--:|--:|:--|\n";
+  for (const auto& f : families) {
+    double w = std::nan("");
+    try {
+      w = runs::resonant_rate(body, e, f.p, f.lo, f.hi, 200, f.theta0);
+    } catch (const std::runtime_error&) {
+    }
+    if (!std::isfinite(w)) {
+      md << "| " << f.p << " | " << (f.theta0 == 0 ? "0" : "π/2") << " | none in " << f.lo << "–" << f.hi << " | | | |\n";
+      continue;
+    }
+    const double tr = runs::planar_map_trace(body, e, f.theta0, w, 200), turns = runs::spin_winding(body, e, f.theta0, w, 1, 200);
+    md << "| " << f.p << " | " << (f.theta0 == 0 ? "0" : "π/2") << " | " << significant_text(w, 6) << " | " << significant_text(turns, 6) << " | "
+       << significant_text(tr, 4) << " | " << (std::abs(tr) < 2 ? "elliptic: an island" : "hyperbolic: no island") << " |\n";
+  }
+  md << "\nBoth symmetric 3:2 orbits exist and both are hyperbolic: **Hyperion has no 3:2 island** at (B − A)/C = 0.264, e = 0.1, while the "
+        "1:2, 1:1, 2:1 and 5:2 islands survive (issue 24 expected a 3:2 island; there is none). Wisdom (1987, AJ 94, 1350) writes that "
+        "this region is so strongly perturbed that the 3/2 resonance … (a quote; the transcript consulted breaks off there, so the "
+        "conclusion rests on the table above). The resonance-overlap estimate agrees: the p:1 island's half-width in θ'/n is ω₀√H(p, e), ω₀ = √(3(B − A)/C) = "
+     << significant_text(w0, 4) << ", with Cayley's H (WPM 1984):\n\n| p | H(p, e) | half-width ω₀√H | spans θ'/n |\n|--:|--:|--:|:--|\n";
+  double width[3];
+  int k = 0;
+  for (const double p : {1.0, 1.5, 2.0}) {
+    const double H = runs::cayley_coefficient(p, e), wd = w0 * std::sqrt(std::abs(H));
+    width[k++] = wd;
+    md << "| " << p << " | " << significant_text(H, 4) << " | " << significant_text(wd, 3) << " | " << fixed_text(p - wd, 2) << "–"
+       << fixed_text(p + wd, 2) << " |\n";
+  }
+  md << "\nThe 1:1 and 3:2 half-widths add to " << significant_text((width[0] + width[1]) / 0.5, 3) << " times the distance 0.5 between their "
+        "centres, the 3:2 and 2:1 ones to "
+     << significant_text((width[1] + width[2]) / 0.5, 3)
+     << " times (Chirikov's criterion: overlap above 1): the 3:2 centre lies inside the 1:1 resonance's width, and the estimate's "
+        "chaotic band, "
+     << fixed_text(1 - width[0], 2) << "–" << fixed_text(2 + width[2], 2) << " n, lies within the measured zone.\n\n";
+  // starts on a finer grid through both 3:2 orbits' pericentre rates
+  const double step = o.quick ? 0.05 : 0.025;
+  int regular = 0, total = 0;
+  std::string regular_turns;
+  for (const double theta0 : {0.0, half_pi})
+    for (double w = 1.2; w <= 2.1 + 1e-9; w += step) {
+      ++total;
+      const double l = runs::lyapunov_per_orbit(body, e, models::spin_orbit_start<double>(I, theta0, w, 0.0), bu.orbits, bu.steps_per_orbit);
+      if (l >= chaos_threshold) continue;
+      ++regular;
+      regular_turns += (regular_turns.empty() ? "" : ", ") + significant_text(runs::spin_winding(body, e, theta0, w, bu.orbits, bu.steps_per_orbit), 4);
+    }
+  md << "Starts on a finer grid through both 3:2 orbits (θ₀ = 0 and π/2, θ'₀ = 1.2 to 2.1 n in steps of " << step << ", " << bu.orbits
+     << " orbits each): " << regular << " of " << total << " are regular"
+     << (regular ? ", with mean rates " + regular_turns + " n (none is a 3:2 libration)" : "") << ".\n\n";
+}
+
 void hyperion_section(report_section& s, std::ostringstream& md, const report_options& o, const budget& bu) {
   const auto body = runs::spin_body_named("Hyperion");
   if (o.progress) o.progress("Spin-orbit: Hyperion's surface of section");
@@ -113,10 +184,9 @@ void hyperion_section(report_section& s, std::ostringstream& md, const report_op
      << (chaotic_rates[1].empty() ? std::string("none") : chaotic_rates[1]) << ". The chaotic orbits' pericentre rates fill "
      << fixed_text(zone_lo, 2) << " to " << fixed_text(zone_hi, 2)
      << " n: one zone from almost no rotation to nearly two and a half turns per orbit around the synchronous island, as Wisdom, "
-        "Peale & Mignard (1984) found (and Wisdom 1987 summarises: a quote). In the chart, the synchronous (1:1) island and the 2:1 "
-        "island at θ = ±π/2 survive; no 3:2 island appears among these starts (the issue expected one; in this model the 3:2 "
-        "state lies inside the chaotic zone).\n\n";
+        "Peale & Mignard (1984) found (and Wisdom 1987, AJ 94, 1350, describes: a quote).\n\n";
   add_chart(s, md, o, "spin_orbit_hyperion_section", c, "Hyperion's planar surface of section, coloured by the Lyapunov exponent.");
+  islands(md, o, body, bu);
 
   // the synchronous periodic orbit and its tilt instability
   if (o.progress) o.progress("Spin-orbit: Hyperion's synchronous state in 3-D");
@@ -270,6 +340,38 @@ void cost_section(report_section& s, std::ostringstream& md, const report_option
   }
 }
 
+// The long runs (bench/spin_drift_bench measures 10⁴ orbits, and 10⁶ with --full): the Moon and Mercury to
+// 10³ orbits (10⁴ with --full) against RKF78 in long double at 1e-18.
+void drift_section(std::ostringstream& md, const report_options& o) {
+  const long last = o.full ? 10000 : 1000;
+  std::vector<long> checkpoints;
+  for (long n = 100; n <= last; n *= 10) checkpoints.push_back(n);
+  md << "### Long runs: the attitude error\n\n"
+     << "The rotation angle of Q_refᵀQ after " << checkpoints.front() << " … " << last << " orbits, in double, against Odeint's RKF78 in "
+        "long double at tolerance 1e-18 (bench/spin_drift_bench runs 10⁴ orbits and checks that reference against SIER4 in long double at "
+        "a four times finer step: they agree to 1.5e-11 at 10⁴ orbits). RKF78 in double runs at the tolerance whose CPU time over "
+        "100 orbits is nearest SIER4's (equal CPU).\n\n";
+  for (const auto& c : runs::spin_drift_cases()) {
+    if (c.body == "Hyperion") continue;  // 4.2 n needs 400 steps an orbit: the bench's
+    if (o.progress) o.progress("Spin-orbit: long runs, " + c.label);
+    const std::string tol = runs::rkf78_tolerance_at_equal_cpu(c, 100);
+    const auto ref = runs::spin_track_of(c, "odeint-rkf78:1e-18", true, 1, checkpoints);
+    md << "| " << c.label << ", h = 1/" << c.steps_per_orbit << " orbit |";
+    for (long n : checkpoints) md << " " << n << " orbits |";
+    md << " CPU s |\n|:--|";
+    for (std::size_t i = 0; i <= checkpoints.size(); ++i) md << "--:|";
+    md << "\n";
+    const std::string best = "SIER4/R:CBA:4";
+    for (const std::string& m : std::vector<std::string>{"SIER4", best, "SIER4/RS4-S5-McLachlan:ABC", "odeint-rkf78:" + tol}) {
+      const auto t = runs::spin_track_of(c, m, false, c.steps_per_orbit, checkpoints);
+      md << "| " << m << " |";
+      for (std::size_t i = 0; i < t.orbits.size(); ++i) md << " " << scientific_or_dash(static_cast<double>(runs::attitude_angle(ref.Q[i], t.Q[i])), 2) << " |";
+      md << " " << significant_text(t.cpu_s.back(), 3) << " |\n";
+    }
+    md << "\n";
+  }
+}
+
 }  // namespace
 
 report_section spin_orbit_section(const report_options& options) {
@@ -284,6 +386,7 @@ report_section spin_orbit_section(const report_options& options) {
   hyperion_section(s, md, options, bu);
   resonance_section(s, md, options, bu);
   cost_section(s, md, options);
+  drift_section(md, options);
   s.markdown = md.str();
   return s;
 }

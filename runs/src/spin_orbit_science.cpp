@@ -36,12 +36,12 @@ models::body_state<double> shadow_of(const models::body_state<double>& s) {
   return b;
 }
 
-double half_orbit_angle(const spin_body& body, double e, double p, double rate, long steps_per_orbit) {
+double half_orbit_angle(const spin_body& body, double e, double p, double theta0, double rate, long steps_per_orbit) {
   const auto I = spin_moments_in<double>(body);
-  const auto start = models::spin_orbit_start<double>(I, 0.0, rate, 0.0);
+  const auto start = models::spin_orbit_start<double>(I, theta0, rate, 0.0);
   const auto out = step_spin_orbit<double>(spin_method_named("SIER4", body), I, e, start, two_pi / static_cast<double>(steps_per_orbit),
                                            steps_per_orbit / 2);
-  return std::remainder(models::spin_angle(out.state) - p * pi, pi);  // θ ≡ pπ (mod π) at apocentre
+  return std::remainder(models::spin_angle(out.state) - theta0 - p * pi, pi);  // θ ≡ θ₀ + pπ (mod π) at apocentre
 }
 
 // The amplitude of γ's first harmonic over one orbit (samples at M_i = 2π(i + 1)/N): the discrete Fourier
@@ -111,13 +111,13 @@ double lyapunov_per_orbit(const spin_body& body, double e, const models::body_st
   return o.growth / orbits;
 }
 
-double resonant_rate(const spin_body& body, double e, double p, double lo, double hi, long steps_per_orbit) {
+double resonant_rate(const spin_body& body, double e, double p, double lo, double hi, long steps_per_orbit, double theta0) {
   // the sign change of the half-orbit angle nearest the middle of [lo, hi] (a wrap by π is no root)
   const int n = 24;
   double best = -1, best_lo = 0, best_hi = 0;
-  double x0 = lo, g0 = half_orbit_angle(body, e, p, lo, steps_per_orbit);
+  double x0 = lo, g0 = half_orbit_angle(body, e, p, theta0, lo, steps_per_orbit);
   for (int i = 1; i <= n; ++i) {
-    const double x1 = lo + (hi - lo) * i / n, g1 = half_orbit_angle(body, e, p, x1, steps_per_orbit);
+    const double x1 = lo + (hi - lo) * i / n, g1 = half_orbit_angle(body, e, p, theta0, x1, steps_per_orbit);
     if ((g0 <= 0) != (g1 <= 0) && std::abs(g0 - g1) < pi / 2) {
       const double dist = std::abs((x0 + x1) / 2 - (lo + hi) / 2);
       if (best < 0 || dist < best) best = dist, best_lo = x0, best_hi = x1;
@@ -125,15 +125,52 @@ double resonant_rate(const spin_body& body, double e, double p, double lo, doubl
     x0 = x1, g0 = g1;
   }
   if (best < 0) throw std::runtime_error("no symmetric periodic orbit found between the given rates");
-  double glo = half_orbit_angle(body, e, p, best_lo, steps_per_orbit);
+  double glo = half_orbit_angle(body, e, p, theta0, best_lo, steps_per_orbit);
   for (int i = 0; i < 60 && best_hi - best_lo > 1e-14; ++i) {
-    const double mid = (best_lo + best_hi) / 2, gm = half_orbit_angle(body, e, p, mid, steps_per_orbit);
+    const double mid = (best_lo + best_hi) / 2, gm = half_orbit_angle(body, e, p, theta0, mid, steps_per_orbit);
     if ((gm <= 0) == (glo <= 0))
       best_lo = mid, glo = gm;
     else
       best_hi = mid;
   }
   return (best_lo + best_hi) / 2;
+}
+
+double planar_map_trace(const spin_body& body, double e, double theta0, double rate, long steps_per_orbit) {
+  // central differences of the one-orbit map in (θ, θ'); the map is smooth, so δ = 1e-6 leaves an
+  // error of order δ² in each entry, far below the distance of a trace from ±2 that matters here
+  const auto I = spin_moments_in<double>(body);
+  const double d = 1e-6;
+  auto image = [&](double th, double w) {
+    const auto s = spin_orbit_map(body, e, models::spin_orbit_start<double>(I, th, w, 0.0), steps_per_orbit);
+    return std::pair<double, double>{models::spin_angle(s), s.G[2] / I[2]};
+  };
+  const auto tp = image(theta0 + d, rate), tm = image(theta0 - d, rate), wp = image(theta0, rate + d), wm = image(theta0, rate - d);
+  const double dtheta_dtheta = std::remainder(tp.first - tm.first, pi) / (2 * d);
+  const double drate_drate = (wp.second - wm.second) / (2 * d);
+  return dtheta_dtheta + drate_drate;
+}
+
+double spin_winding(const spin_body& body, double e, double theta0, double rate, int orbits, long steps_per_orbit) {
+  const auto I = spin_moments_in<double>(body);
+  double previous = theta0, turned = 0;
+  step_spin_orbit<double>(spin_method_named("SIER4", body), I, e, models::spin_orbit_start<double>(I, theta0, rate, 0.0),
+                          two_pi / static_cast<double>(steps_per_orbit), steps_per_orbit * orbits,
+                          [&](long, const double&, const models::body_state<double>& s) {
+                            const double a = models::spin_angle(s);
+                            turned += std::remainder(a - previous, two_pi);  // a step turns far less than π
+                            previous = a;
+                          });
+  return turned / (two_pi * orbits);
+}
+
+double cayley_coefficient(double p, double e) {
+  // the coefficients of (a/r)³ e^{−2if} = Σ H(p, e) e^{−2ipM} to the order in e that Wisdom, Peale &
+  // Mignard (1984) quote (Cayley's tables)
+  if (p == 1) return 1 - 5 * e * e / 2;
+  if (p == 1.5) return 7 * e / 2 - 123 * e * e * e / 16;
+  if (p == 2) return 17 * e * e / 2;
+  throw std::invalid_argument("cayley_coefficient: p must be 1, 3/2 or 2");
 }
 
 std::vector<double> obliquity_history(const spin_body& body, double e, const models::body_state<double>& start, int orbits,

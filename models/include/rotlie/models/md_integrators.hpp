@@ -99,6 +99,7 @@ auto with_md_integrator(const md_integrator& spec, const std::vector<body_kind<T
     using rotor = decltype(rotor_of(kinds.front()));
     using system = torqued_rigid_bodies<T, Potential, rotor>;
     static_assert(rigid_body_system<system>);
+    static_assert(clocked_system<system>, "the engine must write the clock of a body under torques (step_clock.hpp)");
     std::vector<body_type<T, rotor>> types;
     types.reserve(kinds.size());
     for (const auto& k : kinds) types.push_back({k.mass, k.moments, rotor_of(k)});

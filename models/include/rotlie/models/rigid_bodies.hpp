@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rotlie/models/rigid_body.hpp"
+#include "rotlie/models/step_clock.hpp"
 
 namespace rotlie::models {
 
@@ -22,6 +23,7 @@ template <class T>
 struct rigid_bodies_state {
   std::vector<rigid_body_state<T>> bodies;
   T t{};  ///< time, advanced by the free flights
+  step_clock<T> clock;  ///< the step count behind t in the engine's steps (t is written from it, never summed)
   // forces at the current configuration (valid while forces_current)
   std::vector<vec3<T>> force, torque;  ///< lab force (kcal/mol/Å), lab torque about the centre (kcal/mol)
   T potential{};                       ///< V at the current configuration and time (kcal/mol)

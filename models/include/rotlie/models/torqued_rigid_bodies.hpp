@@ -8,6 +8,8 @@
 // The potential is a torque_potential, each body type's rotor a free_rotor (scene_contracts.hpp).
 // A kick evaluates V at the state's time, which the free flights advance: for Strang-TV the two
 // half kicks see t_n and t_n + h, as the splitting of H(x, t) + e in the extended phase space asks.
+// In a step of the engine the time after each free flight is written from the step count (a
+// clocked_system, step_clock.hpp), so that it does not drift; free_flight() called alone adds t.
 //
 // Several body types: each body's `type` indexes a body_type (mass, moments, its own rotor); the
 // scenes of van Zon & Schofield have one. Units are data (unit_system): ftm2v in the kicks, mvv2e
@@ -86,6 +88,9 @@ class torqued_rigid_bodies {
   }
 
   std::optional<stage> step_end(const schemes::scheme_table&) const { return std::nullopt; }
+
+  /// The clock's advance of a stage in units of h: a free flight's coefficient, 0 for a kick.
+  T time_coefficient(const stage& st) const { return st.kick ? T(0) : st.c; }
 
   /// Force evaluations per step (first-same-as-last), the unit of h/f in vZS section V.
   int cost(const schemes::scheme_table& table) const { return schemes::force_evaluations(table); }

@@ -43,6 +43,7 @@ struct spin_method {
   bool adaptive = false;                       ///< an Odeint method
   models::odeint_method ode = models::odeint_method::dopri5;
   double tolerance = 1e-10;                    ///< absolute and relative (Odeint)
+  double first_step = 0;                       ///< Odeint's first trial step (time units); 0: the run's step h
   models::md_integrator splitting;             ///< the TV table and rotor (splittings)
   std::optional<schemes::scheme_table> rotor;  ///< the rotor table solved or read for the body
 };

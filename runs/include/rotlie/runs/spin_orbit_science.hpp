@@ -30,10 +30,25 @@ spin_section planar_section(const spin_body& body, double e, const std::vector<s
 /// every orbit, Benettin et al.): the mean of log(growth) over `orbits` orbits.
 double lyapunov_per_orbit(const spin_body& body, double e, const models::body_state<double>& start, int orbits, long steps_per_orbit);
 
-/// The symmetric periodic orbit of the p:1 resonance in the plane: θ = 0 at pericentre and θ = pπ (mod π) at
-/// apocentre; returns its spin rate at pericentre (bisection on the half-orbit map, the root nearest the
-/// middle of [lo, hi]). p = 1: the synchronous state; p = 3/2: Mercury's.
-double resonant_rate(const spin_body& body, double e, double p, double lo, double hi, long steps_per_orbit);
+/// The symmetric periodic orbit of the p:1 resonance in the plane: θ = θ₀ at pericentre (0 or π/2, the lines
+/// of the time-reversal symmetry) and θ = θ₀ + pπ (mod π) at apocentre; returns its spin rate at pericentre
+/// (bisection on the half-orbit map, the root nearest the middle of [lo, hi]). p = 1: the synchronous
+/// state; p = 3/2: Mercury's.
+double resonant_rate(const spin_body& body, double e, double p, double lo, double hi, long steps_per_orbit, double theta0 = 0);
+
+/// The trace of the planar pericentre map's Jacobian in (θ, θ') at (θ₀, θ'₀) (central differences). At a
+/// fixed point, |trace| < 2 is an elliptic point (the centre of an island: the resonance survives) and
+/// |trace| > 2 a hyperbolic one (no island). For a small asphericity the p:1 state's trace is
+/// 2 cos(2π ω₀ √H(p, e)), ω₀² = 3(B − A)/C: its libration frequency in the averaged pendulum.
+double planar_map_trace(const spin_body& body, double e, double theta0, double rate, long steps_per_orbit);
+
+/// The planar spin's mean rate over `orbits` orbits from pericentre, in units of n (the angle turned,
+/// unwrapped, over 2π per orbit): p for an orbit of the p:1 resonance.
+double spin_winding(const spin_body& body, double e, double theta0, double rate, int orbits, long steps_per_orbit);
+
+/// H(p, e) for p = 1, 3/2, 2 (Wisdom, Peale & Mignard 1984, after Cayley): the strength of the p:1
+/// resonance; its island's half-width in θ'/n is ω₀ √|H(p, e)| (the resonance-overlap estimate).
+double cayley_coefficient(double p, double e);
 
 /// The obliquity (the C axis' angle from z, radians) at each pericentre passage from the given start.
 std::vector<double> obliquity_history(const spin_body& body, double e, const models::body_state<double>& start, int orbits,

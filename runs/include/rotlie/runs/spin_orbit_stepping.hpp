@@ -37,7 +37,7 @@ struct no_spin_observer {
 }  // namespace detail
 
 /// `steps` steps of length h (time units: the orbital period is 2π) from `start` at t = 0, calling
-/// obs(k, t, state) after step k. An Odeint method takes h as its first trial step and chooses its
+/// obs(k, t, state) after step k. An Odeint method takes h (or m.first_step) as its first trial step and chooses its
 /// own steps; with an observer it lands on every k h, without one it runs straight to steps·h.
 template <class T, class Observer>
 spin_outcome<T> step_spin_orbit(const spin_method& m, const models::vec3<T>& I, const T& e, const models::body_state<T>& start, const T& h,
@@ -51,7 +51,7 @@ spin_outcome<T> step_spin_orbit(const spin_method& m, const models::vec3<T>& I, 
     if constexpr (!std::is_floating_point_v<T>) {
       throw bad_input("--integrator " + m.name + " runs in double or long double, not in float128");
     } else {
-    models::spin_odeint_stepper<T> stepper(tide, m.ode, T(m.tolerance), h);
+    models::spin_odeint_stepper<T> stepper(tide, m.ode, T(m.tolerance), m.first_step > 0 ? T(m.first_step) : h);
     out.state = start;
     const double cpu0 = models::thread_cpu_seconds();
     if constexpr (observed) {
@@ -72,10 +72,7 @@ spin_outcome<T> step_spin_orbit(const spin_method& m, const models::vec3<T>& I, 
     auto x = models::spin_orbit_state(start);
     const double cpu0 = models::thread_cpu_seconds();
     for (long k = 1; k <= steps; ++k) {
-      method.step(x, h);
-      // the clock set to k h: the free flights' sums of c h drift by round-off (up to an ulp of t per
-      // stage), and a body locked in resonance follows the orbit's phase, so its attitude would too
-      x.t = T(k) * h;
+      method.step(x, h);  // the engine writes the clock: x.t is k h to round-off (step_clock.hpp)
       obs(k, x.t, x.bodies[0].rot);
     }
     out.cpu_s = models::thread_cpu_seconds() - cpu0;

@@ -5,11 +5,12 @@
 // (Dormand–Prince 5(4) or Runge–Kutta–Fehlberg 7(8)), error-controlled with one tolerance taken as
 // both the absolute and the relative one. Q drifts off the rotations at the size of the tolerance;
 // nothing projects it back (the user's plain solution).
-// GCC 12 sees Odeint's coefficient arrays as maybe uninitialized when a stepper is copied (they are set
+// GCC 12 sees Odeint's coefficient arrays as (maybe) uninitialized when a stepper is copied (they are set
 // in its constructor): a false positive inside Boost, silenced here only.
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
 #endif
 #include <boost/numeric/odeint.hpp>
 
