@@ -59,6 +59,13 @@ BOOST_AUTO_TEST_CASE(liquid_water_runs_saves_reloads_and_refuses_another_system)
   BOOST_TEST(k["dE_over_dV_percent"][0].get<double>() == j["dE_over_dV_percent"][0].get<double>());
   BOOST_TEST(k["potential_kcal_per_mol"].get<double>() == j["potential_kcal_per_mol"].get<double>());
 
+  // a step far beyond SIER4's stable range: a molecule spins up until the exact rotor refuses it (|ω| h > 2^60 rad);
+  // said as a diverged run (exit 1), as a non-finite momentum is (this once ended the report's full section)
+  const auto blown = run("md --scene liquid-water --integrator SIER4 --h 200 --T 2 --runs 1 --molecules 365 --state " +
+                         (scratch() / "w.state").string());
+  BOOST_TEST(blown.status == 1, blown.err);
+  BOOST_TEST(blown.err == "rotlie: error: the run diverged (a molecule turns beyond the exact rotor's range) at h = 200 fs\n");
+
   // SIER2 with the dedicated rotor N2 BAC (2) solved for TIP3P, from the saved state (no second equilibration)
   const auto dedicated = run(liquid("--json", "SIER2/N2:BAC:2"));
   BOOST_TEST_REQUIRE(dedicated.status == 0, dedicated.err);

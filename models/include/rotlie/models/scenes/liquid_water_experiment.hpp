@@ -165,6 +165,9 @@ inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& 
           method.step(s, o.h_fs);
         } catch (const std::invalid_argument&) {  // a rotor refusing a non-finite momentum: the run blew up
           throw std::runtime_error("the run diverged (a momentum is not finite) at h = " + schemes::message_number(o.h_fs) + " fs");
+        } catch (const std::domain_error&) {  // the exact rotor beyond |ω| h = 2^60 rad: a molecule spun up without bound
+          throw std::runtime_error("the run diverged (a molecule turns beyond the exact rotor's range) at h = " +
+                                   schemes::message_number(o.h_fs) + " fs");
         }
         const double V = sys.potential_energy(s), K = sys.kinetic_energy(s), E = V + K;
         if (!std::isfinite(E)) throw std::runtime_error("the run diverged (energy not finite) at h = " + schemes::message_number(o.h_fs) + " fs");
