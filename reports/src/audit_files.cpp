@@ -103,12 +103,12 @@ const csv_table* report_files::csv(const std::string& file) {
 const audit_map* report_files::map(const std::string& family) {
   auto it = maps_.find(family);
   if (it == maps_.end()) {
-    // the map the maps section drew: --maps DIR, else the shipped one (data/maps-K200), else the one it wrote
+    // the map the maps section drew: --maps DIR, else the one it computed into the folder, else the shipped
+    // one (data/maps-K200; drawing it removes an older computed map from the folder)
     const fs::path given = in_.maps_folder.empty() ? fs::path() : runs::map_file_path(in_.maps_folder, family);
-    const auto shipped = runs::shipped_map(family);
-    const fs::path file = !given.empty() && fs::exists(given) ? given
-                          : shipped                          ? *shipped
-                                                             : runs::map_file_path(in_.folder, family);
+    fs::path file = !given.empty() && fs::exists(given) ? given : runs::map_file_path(in_.folder, family);
+    if (!fs::exists(file))
+      if (const auto shipped = runs::shipped_map(family)) file = *shipped;
     it = maps_.emplace(family, read_map_file(file)).first;
   }
   return it->second ? &*it->second : nullptr;
