@@ -12,25 +12,37 @@ BOOST_AUTO_TEST_SUITE(loader_test)
 
 using namespace rotlie_lammps_test;
 
+namespace {
+
+// 216 lattice TIP3P written into d's folder; the input lines after the data file: DSF pairs, 50 SIER4
+// steps of 1 fs, and the final positions and velocities dumped to the last digit.
+std::string sier4_water_run(const scratch& d) {
+  const double L = cubic_box_side<double>(216, tip3p<double>().mass, 0.9973);
+  const auto s = lattice_water<double>(tip3p<double>(), 216, L, 297, 21);
+  const auto w = dsf_water(L);
+  write_lammps_water_data(d.dir / "water.data", w, s.bodies);
+  return lammps_water_pair_lines(w) + "fix r all rigid/sier4/small molecule\ntimestep 1.0\nrun 50\n" +
+         "write_dump all custom final.dump id x y z vx vy vz modify format float %.17g sort id\n";
+}
+
+std::string final_dump(const scratch& d) {
+  std::ifstream in(d.dir / "final.dump");
+  std::ostringstream t;
+  t << in.rdbuf();
+  return t.str();
+}
+
+}  // namespace
+
 BOOST_AUTO_TEST_CASE(stock_lmp_with_the_python_loader_runs_the_styles) {
   if (std::system("command -v lmp > /dev/null 2>&1") != 0) {
     BOOST_TEST_MESSAGE("skipped: no stock lmp");
     return;
   }
-  const double L = cubic_box_side<double>(216, tip3p<double>().mass, 0.9973);
-  const auto s = lattice_water<double>(tip3p<double>(), 216, L, 297, 21);
-  const auto w = dsf_water(L);
   scratch d("loader");
-  write_lammps_water_data(d.dir / "water.data", w, s.bodies);
-  const std::string dump = "write_dump all custom final.dump id x y z vx vy vz modify format float %.17g sort id\n";
-  const std::string body = lammps_water_pair_lines(w) + "fix r all rigid/sier4/small molecule\ntimestep 1.0\nrun 50\n" + dump;
+  const std::string body = sier4_water_run(d);
   const std::string load = std::string("python rotlie_load input 1 SELF format p file ") + ROTLIE_LAMMPS_LOADER + "\npython rotlie_load invoke\n";
-  auto text = [&] {
-    std::ifstream in(d.dir / "final.dump");
-    std::ostringstream t;
-    t << in.rdbuf();
-    return t.str();
-  };
+  auto text = [&] { return final_dump(d); };
   for (const int ranks : {1, 2}) {
     if (ranks > 1 && !have_mpirun()) continue;
     BOOST_REQUIRE_MESSAGE(d.run("in.launcher", water_head + body, ranks) == 0, d.output);
@@ -49,19 +61,9 @@ BOOST_AUTO_TEST_CASE(the_lammps_python_module_with_the_loader_runs_the_styles) {
     BOOST_TEST_MESSAGE("skipped: " << python << " has no lammps module (Debian: python3-lammps)");
     return;
   }
-  const double L = cubic_box_side<double>(216, tip3p<double>().mass, 0.9973);
-  const auto s = lattice_water<double>(tip3p<double>(), 216, L, 297, 21);
-  const auto w = dsf_water(L);
   scratch d("python_module");
-  write_lammps_water_data(d.dir / "water.data", w, s.bodies);
-  const std::string input = water_head + lammps_water_pair_lines(w) + "fix r all rigid/sier4/small molecule\ntimestep 1.0\nrun 50\n" +
-                            "write_dump all custom final.dump id x y z vx vy vz modify format float %.17g sort id\n";
-  auto text = [&] {
-    std::ifstream in(d.dir / "final.dump");
-    std::ostringstream t;
-    t << in.rdbuf();
-    return t.str();
-  };
+  const std::string input = water_head + sier4_water_run(d);
+  auto text = [&] { return final_dump(d); };
   BOOST_REQUIRE_MESSAGE(d.run("in.launcher", input) == 0, d.output);
   const std::string launcher = text();
   std::filesystem::remove(d.dir / "final.dump");

@@ -120,8 +120,6 @@ bch::remainder_result remainder_run(const remainder_inputs& in) {
   check_size(request);
   try {
     return bch::compute_remainder(request);
-  } catch (const bad_input&) {
-    throw;
   } catch (const std::invalid_argument& e) {
     throw bad_input(e.what());
   }

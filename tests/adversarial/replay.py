@@ -54,6 +54,32 @@ class Replay:
         return subprocess.Popen([self.binary, *args], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                                 cwd=cwd, errors="replace")
 
+    def kill_until_done(self, args, longest, attempts, shortest=0.05):
+        """Starts args and kills it (SIGKILL) after a random moment, again and again until a run ends by
+        itself or the attempts are used up. Returns the unexpected exit statuses (neither 0 nor killed)."""
+        unexpected = []
+        for _ in range(attempts):
+            p = self.start(args)
+            time.sleep(self.rng.uniform(shortest, longest))
+            if p.poll() is None:
+                p.send_signal(signal.SIGKILL)
+            p.communicate()
+            if p.returncode == 0:
+                break
+            if p.returncode != -signal.SIGKILL:
+                unexpected.append(p.returncode)
+        return unexpected
+
+    def resumed_problem(self, r, got, want, folder, keep, differs):
+        """Why a resumed run r (its result `got`) is not an uninterrupted run's (`want`), or None; and
+        whether that is silent (exit 0 with another result or files left behind in folder)."""
+        if r["rc"] != 0:
+            return self.error_problem(r, 0), False
+        if got != want:
+            return differs, True
+        left = self.leftovers(folder, keep)
+        return (f"files left behind: {left}", True) if left else (None, False)
+
     # -- judging ---------------------------------------------------------------------------------
     def record(self, cls, what, problem=None, silent=False):
         counts = self.by_class.setdefault(cls, [0, 0, 0])
@@ -214,26 +240,13 @@ def kills(R, quick):
     want = (reference / "map-N.jsonl").read_text()
     for trial in range(3 if quick else 6):
         d = R.folder(f"map-killed-{trial}")
-        for attempt in range(12):
-            p = R.start(["map", "--family", "N", "--grid", "9", "--out", str(d), "--resume"])
-            time.sleep(R.rng.uniform(0.05, 1.5))
-            if p.poll() is None:
-                p.send_signal(signal.SIGKILL)
-            p.communicate()
-            if p.returncode == 0:
-                break
-            if p.returncode not in (-signal.SIGKILL,):
-                R.record(cls, f"map killed run {trial}.{attempt}", f"exit {p.returncode}")
-        r = R.run(["map", "--family", "N", "--grid", "9", "--out", str(d), "--resume"])
+        args = ["map", "--family", "N", "--grid", "9", "--out", str(d), "--resume"]
+        for status in R.kill_until_done(args, 1.5, 12):
+            R.record(cls, f"map killed run {trial}", f"exit {status}")
+        r = R.run(args)
         got = (d / "map-N.jsonl").read_text() if (d / "map-N.jsonl").exists() else ""
-        problem = R.error_problem(r, 0) if r["rc"] != 0 else None
-        if not problem and got != want:
-            problem, silent = "the resumed map differs from an uninterrupted run", True
-        else:
-            silent = False
-        left = R.leftovers(d, {"map-N.jsonl"})
-        if not problem and left:
-            problem, silent = f"files left behind: {left}", True
+        problem, silent = R.resumed_problem(r, got, want, d, {"map-N.jsonl"},
+                                            "the resumed map differs from an uninterrupted run")
         R.record(cls, f"map --grid 9 killed at random moments (trial {trial})", problem, silent)
 
     # sixth: a small scan killed and resumed gives the tables of an uninterrupted scan
@@ -244,23 +257,11 @@ def kills(R, quick):
     want = {p.name: p.read_text() for p in reference.iterdir() if p.suffix == ".table"}
     for trial in range(2 if quick else 4):
         d = R.folder(f"sixth-killed-{trial}")
-        for attempt in range(6):
-            p = R.start([*base, "--out", str(d)])
-            time.sleep(R.rng.uniform(0.2, 3.0))
-            if p.poll() is None:
-                p.send_signal(signal.SIGKILL)
-            p.communicate()
-            if p.returncode == 0:
-                break
+        R.kill_until_done([*base, "--out", str(d)], 3.0, 6, shortest=0.2)
         r = R.run([*base, "--out", str(d)], timeout=300)
         got = {p.name: p.read_text() for p in d.iterdir() if p.suffix == ".table"}
-        problem = R.error_problem(r, 0) if r["rc"] != 0 else None
-        silent = False
-        if not problem and got != want:
-            problem, silent = "the resumed scan's tables differ from an uninterrupted scan's", True
-        left = [n for n in R.leftovers(d, set(want) | {"scan-state.txt"})]
-        if not problem and left:
-            problem, silent = f"files left behind: {left}", True
+        problem, silent = R.resumed_problem(r, got, want, d, set(want) | {"scan-state.txt"},
+                                            "the resumed scan's tables differ from an uninterrupted scan's")
         R.record(cls, f"sixth killed at random moments (trial {trial})", problem, silent)
 
     # md --state: a killed equilibration leaves no state file, or a complete one that a second run accepts
