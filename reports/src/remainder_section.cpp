@@ -62,8 +62,9 @@ std::string latex_third_order(const paper_form& p, const std::string& equation, 
   return out.str();
 }
 
-// A polynomial factorised by GiNaC, each factor printed in our order, factors sorted by their text
-// (GiNaC's factor order is not reproducible either).
+// A polynomial factorised by GiNaC, each factor printed in our order with a positive first term and
+// the signs gathered into the constant, factors sorted by their text: GiNaC returns f or −f for a
+// factor, and orders factors, differently from one process to the next.
 std::string latex_factored(const GiNaC::ex& e, const std::vector<GiNaC::symbol>& symbols, const std::string& joiner) {
   const GiNaC::ex f = GiNaC::factor(e.expand());
   std::vector<std::string> factors;
@@ -76,7 +77,12 @@ std::string latex_factored(const GiNaC::ex& e, const std::vector<GiNaC::symbol>&
     GiNaC::ex base = x;
     int power = 1;
     if (GiNaC::is_a<GiNaC::power>(x)) base = x.op(0), power = GiNaC::ex_to<GiNaC::numeric>(x.op(1)).to_int();
-    std::string t = "\\left(" + format_expression(base, symbols, expression_style::latex) + "\\right)";
+    std::string text = format_expression(base, symbols, expression_style::latex);
+    if (text.rfind('-', 0) == 0) {
+      text = format_expression(-base, symbols, expression_style::latex);
+      if (power % 2 != 0) constant = -constant;
+    }
+    std::string t = "\\left(" + text + "\\right)";
     if (power != 1) t += "^{" + std::to_string(power) + "}";
     factors.push_back(t);
   };

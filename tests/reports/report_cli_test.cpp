@@ -398,4 +398,18 @@ BOOST_AUTO_TEST_CASE(files_reach_the_disk_before_the_rename_and_the_folder_after
   BOOST_TEST(renames == entries(out).size());  // csv, gp, png, index.md: each written once
 }
 
+// The regenerated formulas are the same text in every process: GiNaC's factor() returns f or −f for a
+// factor differently from one process to the next (before the fix, four runs gave three texts).
+BOOST_AUTO_TEST_CASE(remainders_tex_is_the_same_text_in_every_run) {
+  std::set<std::string> texts;
+  for (int i = 0; i < 3; ++i) {
+    const fs::path out = test_root() / ("remainders-" + std::to_string(i));
+    const auto r = run(launch({"report", "--sections", "remainders", "--out", out.string()}));
+    BOOST_TEST(r.status == 0, r.err);
+    texts.insert(slurp(out / "remainders.tex"));
+  }
+  BOOST_TEST(texts.size() == 1u);
+  BOOST_TEST(texts.begin()->find("\\mathrm{Res}_{b_{1}}(P'_1, P'_2)") != std::string::npos);
+}
+
 BOOST_AUTO_TEST_SUITE_END()  // report_cli_test
