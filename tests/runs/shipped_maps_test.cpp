@@ -16,9 +16,10 @@ using namespace rotlie;
 BOOST_AUTO_TEST_SUITE(shipped_maps_test)
 
 BOOST_AUTO_TEST_CASE(the_shipped_maps_are_whole_and_agree_with_the_exact_solver) {
-  // bodies re-solved per family: the screened P path at 200 random bodies (the check of its grid),
-  // N's continuation and R's exact solver at fewer (their paths were checked at every body of coarse grids)
-  const std::map<std::string, std::size_t> checks = {{"N", 100}, {"R", 20}, {"P", 200}};
+  // bodies re-solved per family, within the slow suite's budget (a P body takes the exact solver about
+  // 7 CPU s): the 200-body check of the screened P path at K = 200 is bench/map_check's, recorded in
+  // data/README.md; N's continuation and R's exact solver were checked at every body of coarse grids
+  const std::map<std::string, std::size_t> checks = {{"N", 100}, {"R", 20}, {"P", 20}};
   int shipped = 0;
   for (const auto& [family, count] : checks) {
     const auto file = runs::shipped_map(family);
