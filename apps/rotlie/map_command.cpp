@@ -181,15 +181,9 @@ int run_rank0(const map_options& o, process_group& group) {
     progress.show(s.str());
   };
   const auto drain = [&](bool wait, int& workers_left) {
-    while (auto m = group.receive(wait)) {
-      if (m->index < 0) {
-        --workers_left;
-        if (workers_left == 0) return;
-      } else {
-        writer.add(static_cast<std::size_t>(m->index), std::move(m->payload));
-      }
-      if (wait) return;
-    }
+    auto d = group.receive(wait);
+    for (auto& m : d.lines) writer.add(m.index, std::move(m.payload));
+    workers_left -= d.done;
   };
   int workers_left = group.size() - 1;
   const std::size_t K = static_cast<std::size_t>(p.K);
@@ -222,8 +216,7 @@ int run_worker(const map_options& o, process_group& group) {
   const std::size_t n = static_cast<std::size_t>(K);
   for (std::size_t row = 0; row * n < bodies.size(); ++row)
     if (owner_of_row(row, group.size()) == group.rank())
-      for (auto& [k, line] : runs::map_row_lines(bodies, row * n, n, done, family, method))
-        group.send_result(static_cast<int>(k), line);
+      group.send_results(runs::map_row_lines(bodies, row * n, n, done, family, method));
   group.send_done();
   return 0;
 }

@@ -4,8 +4,9 @@
 // process alone. Only map_distribution_mpi.cpp knows MPI; map_distribution_serial.cpp stands in
 // for it in a build without MPI.
 #include <memory>
-#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace rotlie::app {
 
@@ -23,17 +24,24 @@ class process_group {
   /// Rank 0's text, delivered to every rank (collective).
   std::string broadcast(const std::string& from_rank0);
 
-  /// A worker's result for body `index`, to rank 0.
-  void send_result(int index, const std::string& payload);
-  /// A worker's last message: it has no more bodies.
+  /// A worker's lines (body index, line) of one row, to rank 0, in one message. It does not wait for rank 0
+  /// (which receives only between its own rows): a blocking send of a large message left the worker
+  /// waiting, and spinning, while rank 0 computed, so that one line crossed per row of rank 0's.
+  void send_results(const std::vector<std::pair<std::size_t, std::string>>& lines);
+  /// A worker's last message, once every earlier one was delivered: it has no more bodies.
   void send_done();
 
   struct message {
-    int index = -1;  ///< -1: the sender is done
+    std::size_t index = 0;
     std::string payload;
   };
-  /// Rank 0: the next worker message, waiting for one when `wait`, else nullopt when none is there.
-  std::optional<message> receive(bool wait);
+  /// Rank 0: the lines that have arrived, and how many workers said they were done; when `wait`, it
+  /// waits until there is at least one of either.
+  struct delivery {
+    std::vector<message> lines;
+    int done = 0;
+  };
+  delivery receive(bool wait);
 
   /// Ends every process of the job at once (after a failure on one of them).
   [[noreturn]] void abort(int status);

@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstdint>
 #include <cstring>
+#include <limits>
+#include <list>
 #include <stdexcept>
 #include <vector>
 
@@ -26,11 +29,45 @@ void check(int code, const char* what) {
   if (code != MPI_SUCCESS) throw std::runtime_error(std::string("MPI failed in ") + what);
 }
 
+// A row's lines in one message: for each line its body index and length (8 bytes each), then its bytes.
+std::vector<char> pack(const std::vector<std::pair<std::size_t, std::string>>& lines) {
+  std::vector<char> bytes;
+  for (const auto& [index, line] : lines) {
+    const std::uint64_t head[2] = {index, line.size()};
+    const char* h = reinterpret_cast<const char*>(head);
+    bytes.insert(bytes.end(), h, h + sizeof head);
+    bytes.insert(bytes.end(), line.begin(), line.end());
+  }
+  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw std::runtime_error("a row's results exceed one MPI message");
+  return bytes;
+}
+
+void unpack(const std::vector<char>& bytes, std::vector<process_group::message>& out) {
+  std::size_t at = 0;
+  while (at < bytes.size()) {
+    std::uint64_t head[2];
+    if (bytes.size() - at < sizeof head) throw std::runtime_error("a malformed result message");
+    std::memcpy(head, bytes.data() + at, sizeof head);
+    at += sizeof head;
+    if (bytes.size() - at < head[1]) throw std::runtime_error("a malformed result message");
+    out.push_back({static_cast<std::size_t>(head[0]), std::string(bytes.data() + at, head[1])});
+    at += head[1];
+  }
+}
+
+struct in_flight {
+  std::vector<char> bytes;
+  MPI_Request request = MPI_REQUEST_NULL;
+};
+
 }  // namespace
 
 struct process_group::state {
   bool joined = false;
   int rank = 0, size = 1;
+  std::list<in_flight> sends;     // a worker's rows not yet taken by rank 0
+  std::list<in_flight> receives;  // rank 0's receives started, not yet complete
 };
 
 process_group::process_group() : state_(std::make_unique<state>()) {
@@ -66,40 +103,72 @@ std::string process_group::broadcast(const std::string& from_rank0) {
   return out;
 }
 
-void process_group::send_result(int index, const std::string& payload) {
-  // The body index first, then the line: one message, so that results never interleave.
-  std::string bytes(sizeof(int), '\0');
-  std::memcpy(bytes.data(), &index, sizeof(int));
-  bytes += payload;
-  check(MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_CHAR, 0, result_tag, MPI_COMM_WORLD), "MPI_Send");
+
+void process_group::send_results(const std::vector<std::pair<std::size_t, std::string>>& lines) {
+  auto& sends = state_->sends;
+  sends.push_back({pack(lines), MPI_REQUEST_NULL});
+  check(MPI_Isend(sends.back().bytes.data(), static_cast<int>(sends.back().bytes.size()), MPI_CHAR, 0, result_tag,
+                  MPI_COMM_WORLD, &sends.back().request),
+        "MPI_Isend");
+  for (auto it = sends.begin(); it != sends.end();) {  // drop the rows rank 0 has taken
+    int complete = 0;
+    check(MPI_Test(&it->request, &complete, MPI_STATUS_IGNORE), "MPI_Test");
+    it = complete ? sends.erase(it) : std::next(it);
+  }
 }
 
 void process_group::send_done() {
   if (state_->size == 1) return;
+  for (auto& s : state_->sends) check(MPI_Wait(&s.request, MPI_STATUS_IGNORE), "MPI_Wait");
+  state_->sends.clear();
   check(MPI_Send(nullptr, 0, MPI_CHAR, 0, done_tag, MPI_COMM_WORLD), "MPI_Send");
 }
 
-std::optional<process_group::message> process_group::receive(bool wait) {
-  if (state_->size == 1) return std::nullopt;
-  MPI_Status status;
-  if (wait) {
-    check(MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &status), "MPI_Probe");
-  } else {
-    int flag = 0;
-    check(MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status), "MPI_Iprobe");
-    if (flag == 0) return std::nullopt;
+process_group::delivery process_group::receive(bool wait) {
+  delivery d;
+  if (state_->size == 1) return d;
+  auto& receives = state_->receives;
+  const auto finish = [&](std::list<in_flight>::iterator it) {
+    unpack(it->bytes, d.lines);
+    return receives.erase(it);
+  };
+  for (;;) {
+    // start a receive for every message that has arrived (matched in the order each worker sent them)
+    for (;;) {
+      int flag = 0;
+      MPI_Message m;
+      MPI_Status status;
+      check(MPI_Improbe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &m, &status), "MPI_Improbe");
+      if (flag == 0) break;
+      if (status.MPI_TAG == done_tag) {
+        check(MPI_Mrecv(nullptr, 0, MPI_CHAR, &m, MPI_STATUS_IGNORE), "MPI_Mrecv");
+        // the worker's rows were all taken before it said so: their receives complete without it
+        for (auto it = receives.begin(); it != receives.end();) {
+          check(MPI_Wait(&it->request, MPI_STATUS_IGNORE), "MPI_Wait");
+          it = finish(it);
+        }
+        ++d.done;
+        continue;
+      }
+      int count = 0;
+      MPI_Get_count(&status, MPI_CHAR, &count);
+      receives.push_back({std::vector<char>(static_cast<std::size_t>(count)), MPI_REQUEST_NULL});
+      check(MPI_Imrecv(receives.back().bytes.data(), count, MPI_CHAR, &m, &receives.back().request), "MPI_Imrecv");
+    }
+    for (auto it = receives.begin(); it != receives.end();) {
+      int complete = 0;
+      check(MPI_Test(&it->request, &complete, MPI_STATUS_IGNORE), "MPI_Test");
+      it = complete ? finish(it) : std::next(it);
+    }
+    if (!wait || !d.lines.empty() || d.done > 0) return d;
+    if (receives.empty()) {
+      MPI_Status status;
+      check(MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &status), "MPI_Probe");
+    } else {
+      check(MPI_Wait(&receives.front().request, MPI_STATUS_IGNORE), "MPI_Wait");
+      finish(receives.begin());
+    }
   }
-  int count = 0;
-  MPI_Get_count(&status, MPI_CHAR, &count);
-  std::vector<char> bytes(static_cast<std::size_t>(count));
-  check(MPI_Recv(bytes.data(), count, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
-        "MPI_Recv");
-  message m;
-  if (status.MPI_TAG == done_tag) return m;
-  if (count < static_cast<int>(sizeof(int))) throw std::runtime_error("a malformed result message");
-  std::memcpy(&m.index, bytes.data(), sizeof(int));
-  m.payload.assign(bytes.data() + sizeof(int), bytes.size() - sizeof(int));
-  return m;
 }
 
 void process_group::abort(int status) {
