@@ -5,7 +5,7 @@
 // times finer is a second one, and their distance is printed as the floor the errors are read to.
 //   spin_drift_bench           10⁴ orbits for the Moon and Mercury, 10³ for Hyperion (about 5 CPU minutes)
 //   spin_drift_bench --full    10⁶ orbits for the Moon and Mercury, 10⁵ for Hyperion, the reference at 1e-16
-//                              and the second one to 10⁵ orbits (about 2 CPU hours; with both references
+//                              and the second one to 10⁵ orbits (about 3 CPU hours; with both references
 //                              of the default run to the end, about 8)
 //   --body NAME                one body's case only;  --orbits N  the last checkpoint instead (10², 10³, … up to N)
 //   --reference-tolerance T    RKF78's tolerance for the reference (default 1e-18; at 1e-16 it costs half and
