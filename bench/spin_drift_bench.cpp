@@ -8,8 +8,8 @@
 //                              and the second one to 10⁵ orbits (about 3 CPU hours; with both references
 //                              of the default run to the end, about 8)
 //   --body NAME                one body's case only;  --orbits N  the last checkpoint instead (10², 10³, … up to N)
-//   --reference-tolerance T    RKF78's tolerance for the reference (default 1e-18; at 1e-16 it costs half and
-//                              moves the Moon's reference by less than 1e-14 rad over 10³ orbits)
+//   --reference-tolerance T    RKF78's tolerance for the reference (default 1e-18; at 1e-16 it costs half, and
+//                              the second reference's distance to it over 10³ Moon orbits is that to 1e-18's within 1 %)
 //   --second-until N           the second reference to N orbits only (its cost is the exact rotor in long double)
 // CSV rows on stdout (case, method, orbits, angle, cpu_s), then one table per case.
 #include <cstdio>

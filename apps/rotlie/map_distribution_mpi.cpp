@@ -61,6 +61,17 @@ struct in_flight {
   MPI_Request request = MPI_REQUEST_NULL;
 };
 
+// Removes the transfers that have completed, after handing each to `done`.
+template <class Done>
+void drop_completed(std::list<in_flight>& transfers, Done done) {
+  for (auto it = transfers.begin(); it != transfers.end();) {
+    int complete = 0;
+    check(MPI_Test(&it->request, &complete, MPI_STATUS_IGNORE), "MPI_Test");
+    if (complete) done(*it);
+    it = complete ? transfers.erase(it) : std::next(it);
+  }
+}
+
 }  // namespace
 
 struct process_group::state {
@@ -103,18 +114,13 @@ std::string process_group::broadcast(const std::string& from_rank0) {
   return out;
 }
 
-
 void process_group::send_results(const std::vector<std::pair<std::size_t, std::string>>& lines) {
   auto& sends = state_->sends;
   sends.push_back({pack(lines), MPI_REQUEST_NULL});
   check(MPI_Isend(sends.back().bytes.data(), static_cast<int>(sends.back().bytes.size()), MPI_CHAR, 0, result_tag,
                   MPI_COMM_WORLD, &sends.back().request),
         "MPI_Isend");
-  for (auto it = sends.begin(); it != sends.end();) {  // drop the rows rank 0 has taken
-    int complete = 0;
-    check(MPI_Test(&it->request, &complete, MPI_STATUS_IGNORE), "MPI_Test");
-    it = complete ? sends.erase(it) : std::next(it);
-  }
+  drop_completed(sends, [](const in_flight&) {});  // the rows rank 0 has taken
 }
 
 void process_group::send_done() {
@@ -128,10 +134,7 @@ process_group::delivery process_group::receive(bool wait) {
   delivery d;
   if (state_->size == 1) return d;
   auto& receives = state_->receives;
-  const auto finish = [&](std::list<in_flight>::iterator it) {
-    unpack(it->bytes, d.lines);
-    return receives.erase(it);
-  };
+  const auto deliver = [&](const in_flight& r) { unpack(r.bytes, d.lines); };
   for (;;) {
     // start a receive for every message that has arrived (matched in the order each worker sent them)
     for (;;) {
@@ -143,10 +146,11 @@ process_group::delivery process_group::receive(bool wait) {
       if (status.MPI_TAG == done_tag) {
         check(MPI_Mrecv(nullptr, 0, MPI_CHAR, &m, MPI_STATUS_IGNORE), "MPI_Mrecv");
         // the worker's rows were all taken before it said so: their receives complete without it
-        for (auto it = receives.begin(); it != receives.end();) {
-          check(MPI_Wait(&it->request, MPI_STATUS_IGNORE), "MPI_Wait");
-          it = finish(it);
+        for (auto& r : receives) {
+          check(MPI_Wait(&r.request, MPI_STATUS_IGNORE), "MPI_Wait");
+          deliver(r);
         }
+        receives.clear();
         ++d.done;
         continue;
       }
@@ -155,18 +159,15 @@ process_group::delivery process_group::receive(bool wait) {
       receives.push_back({std::vector<char>(static_cast<std::size_t>(count)), MPI_REQUEST_NULL});
       check(MPI_Imrecv(receives.back().bytes.data(), count, MPI_CHAR, &m, &receives.back().request), "MPI_Imrecv");
     }
-    for (auto it = receives.begin(); it != receives.end();) {
-      int complete = 0;
-      check(MPI_Test(&it->request, &complete, MPI_STATUS_IGNORE), "MPI_Test");
-      it = complete ? finish(it) : std::next(it);
-    }
+    drop_completed(receives, deliver);
     if (!wait || !d.lines.empty() || d.done > 0) return d;
     if (receives.empty()) {
       MPI_Status status;
       check(MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &status), "MPI_Probe");
     } else {
       check(MPI_Wait(&receives.front().request, MPI_STATUS_IGNORE), "MPI_Wait");
-      finish(receives.begin());
+      deliver(receives.front());
+      receives.pop_front();
     }
   }
 }

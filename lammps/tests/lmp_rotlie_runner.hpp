@@ -22,6 +22,14 @@ namespace rotlie_lammps_test {
 namespace fs = std::filesystem;
 using namespace rotlie::models;
 
+/// A file's whole text (empty when it is missing).
+inline std::string file_text(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 inline bool have_mpirun() { return std::string(ROTLIE_MPIEXEC).size() > 0 && fs::exists(ROTLIE_MPIEXEC); }
 
 struct scratch {
@@ -47,10 +55,7 @@ struct scratch {
     const std::string cmd = "cd '" + dir.string() + "' && OMP_NUM_THREADS=1 " + launcher + program + " -in " + name + " -log none " +
                             extra + " > " + name + ".out 2>&1";
     const int status = std::system(cmd.c_str());
-    std::ifstream in(dir / (name + ".out"));
-    std::ostringstream text;
-    text << in.rdbuf();
-    output = text.str();
+    output = file_text(dir / (name + ".out"));
     return status;
   }
   std::string output;
@@ -103,6 +108,8 @@ inline double largest_distance(const std::map<long, vec3<double>>& a, const std:
   return worst;
 }
 
+/// The final positions and velocities of every atom, to the last digit (restart and loader comparisons).
+inline const std::string final_state_dump = "write_dump all custom final.dump id x y z vx vy vz modify format float %.17g sort id\n";
 inline const std::string final_dump = "write_dump all custom final.dump id xu yu zu modify format float %.17g sort id\n";
 
 /// `steps` steps of 1 fs of `fix_line` (e.g. "fix r all rigid/sier2/small molecule") in lmp_rotlie on

@@ -21,15 +21,7 @@ std::string sier4_water_run(const scratch& d) {
   const auto s = lattice_water<double>(tip3p<double>(), 216, L, 297, 21);
   const auto w = dsf_water(L);
   write_lammps_water_data(d.dir / "water.data", w, s.bodies);
-  return lammps_water_pair_lines(w) + "fix r all rigid/sier4/small molecule\ntimestep 1.0\nrun 50\n" +
-         "write_dump all custom final.dump id x y z vx vy vz modify format float %.17g sort id\n";
-}
-
-std::string final_dump(const scratch& d) {
-  std::ifstream in(d.dir / "final.dump");
-  std::ostringstream t;
-  t << in.rdbuf();
-  return t.str();
+  return lammps_water_pair_lines(w) + "fix r all rigid/sier4/small molecule\ntimestep 1.0\nrun 50\n" + final_state_dump;
 }
 
 }  // namespace
@@ -42,7 +34,7 @@ BOOST_AUTO_TEST_CASE(stock_lmp_with_the_python_loader_runs_the_styles) {
   scratch d("loader");
   const std::string body = sier4_water_run(d);
   const std::string load = std::string("python rotlie_load input 1 SELF format p file ") + ROTLIE_LAMMPS_LOADER + "\npython rotlie_load invoke\n";
-  auto text = [&] { return final_dump(d); };
+  auto text = [&] { return file_text(d.dir / "final.dump"); };
   for (const int ranks : {1, 2}) {
     if (ranks > 1 && !have_mpirun()) continue;
     BOOST_REQUIRE_MESSAGE(d.run("in.launcher", water_head + body, ranks) == 0, d.output);
@@ -63,7 +55,7 @@ BOOST_AUTO_TEST_CASE(the_lammps_python_module_with_the_loader_runs_the_styles) {
   }
   scratch d("python_module");
   const std::string input = water_head + sier4_water_run(d);
-  auto text = [&] { return final_dump(d); };
+  auto text = [&] { return file_text(d.dir / "final.dump"); };
   BOOST_REQUIRE_MESSAGE(d.run("in.launcher", input) == 0, d.output);
   const std::string launcher = text();
   std::filesystem::remove(d.dir / "final.dump");

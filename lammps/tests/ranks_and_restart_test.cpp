@@ -44,13 +44,8 @@ BOOST_AUTO_TEST_CASE(restart_continues_bit_identically) {
   const auto start = liquid_start(216);
   scratch d("restart");
   write_lammps_water_data(d.dir / "water.data", start.w, start.s.bodies);
-  const std::string dump = "write_dump all custom final.dump id x y z vx vy vz modify format float %.17g sort id\n";
-  auto text = [&](const char* file) {
-    std::ifstream in(d.dir / file);
-    std::ostringstream t;
-    t << in.rdbuf();
-    return t.str();
-  };
+  const std::string& dump = final_state_dump;
+  auto text = [&](const char* file) { return file_text(d.dir / file); };
   // the lines liquid_water's pair lines add beyond what a restart file stores (neighbour settings)
   const std::string neighbour = "neighbor 2.0 bin\nneigh_modify exclude molecule/intra all every 1 delay 0 check yes\n";
   for (const int ranks : {1, 2}) {
