@@ -234,7 +234,7 @@ subcommand add_map(CLI::App& app, map_options& map) {
   map_cmd->add_flag("--resume", map.resume, "Continue the map file in --out where a killed run stopped");
   map_cmd->add_flag("--json", map.json, "The body lines on stdout");
   auto* map_exact = map_cmd->add_flag("--exact", map.exact, "Every body by the exact solver (the default for R; for N and P slower, the check of the default)");
-  map_cmd->add_flag("--fast", map.fast, "N and P: continuation along each row (default). N: both ends and every doubtful chain by the exact solver; P: both ends and each body's best by the exact solver")
+  map_cmd->add_flag("--fast", map.fast, "N and P: continuation along each row (default). N: both ends and every doubtful chain by the exact solver; P: both ends and each body's best by the exact solver, then each body against its neighbours' bests (the neighbour check)")
       ->excludes(map_exact);
   map_cmd->footer("Under mpirun (mpirun -n 4 rotlie map ...) the bodies are shared among the processes; the file is the same.");
   return {map_cmd, [&map] { return run_map(map); }};  // checks its folder itself (on rank 0 only under MPI)

@@ -8,7 +8,10 @@
 // By default (--fast) a row is computed as a whole, by continuation (N: solver/continued_map.hpp;
 // P: the screened path, solver/screened_map.hpp), so a resume recomputes a row it finds incomplete
 // and writes only its missing lines: the result of a body never depends on where a run stopped or
-// on the number of processes.
+// on the number of processes. Once every row of a screened map is done, the neighbour check
+// (runs/map_neighbour_check.hpp) runs over the whole map, its exact solves shared among the ranks in
+// the same way, and the file is rewritten whole with the check's counts in its header.
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -27,6 +30,7 @@
 #include "rotlie/runs/family_names.hpp"
 #include "rotlie/runs/exclusive_use.hpp"
 #include "rotlie/runs/map_file.hpp"
+#include "rotlie/runs/map_neighbour_check.hpp"
 #include "rotlie/runs/map_rows.hpp"
 #include "rotlie/runs/output_file.hpp"
 #include "rotlie/solver/body_grid.hpp"
@@ -51,7 +55,8 @@ int checked_grid(const std::string& text) {
 // Rank 0's writer: lines arrive in any order and leave in the grid's order.
 class ordered_writer {
  public:
-  ordered_writer(std::vector<std::size_t> todo, runs::map_file_writer* file, bool echo) : todo_(std::move(todo)), file_(file), echo_(echo) {}
+  ordered_writer(std::vector<std::size_t> todo, runs::map_file_writer* file, bool echo, std::vector<std::string>* keep)
+      : todo_(std::move(todo)), file_(file), echo_(echo), keep_(keep) {}
   void add(std::size_t index, std::string line) {
     pending_.emplace(index, std::move(line));
     while (next_ < todo_.size()) {
@@ -59,6 +64,7 @@ class ordered_writer {
       if (found == pending_.end()) break;
       if (file_) file_->append(found->second);
       if (echo_) std::cout << found->second << "\n" << std::flush;
+      if (keep_) (*keep_)[found->first] = found->second;
       pending_.erase(found);
       ++next_;
     }
@@ -70,6 +76,7 @@ class ordered_writer {
   std::vector<std::size_t> todo_;
   runs::map_file_writer* file_;
   bool echo_;
+  std::vector<std::string>* keep_;
   std::map<std::size_t, std::string> pending_;
   std::size_t next_ = 0;
 };
@@ -81,6 +88,60 @@ std::string duration_text(double seconds) {
   else if (seconds < 7200) s << seconds / 60 << " min";
   else s << seconds / 3600 << " h";
   return s.str();
+}
+
+// The neighbour check's tasks shared among the ranks: task n is done by rank n mod size. Rank 0
+// hands out each batch (a broadcast); the workers answer as they answer with rows.
+class shared_runner {
+ public:
+  shared_runner(process_group& group, const std::vector<solver::grid_body>& bodies, const std::string& family)
+      : group_(group), bodies_(bodies), family_(family) {}
+  std::vector<std::string> operator()(const std::vector<runs::neighbour_task>& tasks) {
+    if (group_.size() > 1) group_.broadcast(runs::tasks_text(tasks));
+    std::vector<std::string> out(tasks.size());
+    std::vector<char> have(tasks.size(), 0);
+    int workers_left = group_.size() - 1;
+    const auto take = [&](bool wait) {
+      auto d = group_.receive(wait);
+      for (auto& m : d.lines) {
+        out.at(m.index) = std::move(m.payload);
+        have[m.index] = 1;
+      }
+      workers_left -= d.done;
+    };
+    for (std::size_t n = 0; n < tasks.size(); n += static_cast<std::size_t>(group_.size())) {
+      out[n] = runs::run_neighbour_task(tasks[n], bodies_, family_);
+      have[n] = 1;
+      if (group_.size() > 1) take(false);
+    }
+    while (workers_left > 0) take(true);
+    if (std::find(have.begin(), have.end(), 0) != have.end())
+      throw std::runtime_error("a process of the MPI job did not deliver all its neighbour-check results");
+    return out;
+  }
+  /// Tells the workers there is no more work.
+  void finish() {
+    if (group_.size() > 1) group_.broadcast("");
+  }
+
+ private:
+  process_group& group_;
+  const std::vector<solver::grid_body>& bodies_;
+  std::string family_;
+};
+
+// A worker's part of the neighbour check: batches until rank 0 sends an empty one.
+void serve_neighbour_check(process_group& group, const std::vector<solver::grid_body>& bodies, const std::string& family) {
+  for (;;) {
+    const std::string text = group.broadcast("");
+    if (text.empty()) return;
+    const auto tasks = runs::tasks_from_text(text);
+    std::vector<std::pair<std::size_t, std::string>> results;
+    for (std::size_t n = static_cast<std::size_t>(group.rank()); n < tasks.size(); n += static_cast<std::size_t>(group.size()))
+      results.emplace_back(n, runs::run_neighbour_task(tasks[n], bodies, family));
+    if (!results.empty()) group.send_results(results);
+    group.send_done();
+  }
 }
 
 struct prepared_map {
@@ -140,6 +201,8 @@ std::string summary(const prepared_map& p, double seconds, std::size_t computed,
     s << p.family << " better than " << solver::map_reference_scheme << " at equal cost (ratio > 1) at " << better << " of "
       << with_ratio << " bodies (" << 100.0 * static_cast<double>(better) / static_cast<double>(with_ratio) << " %)\n";
   s << "bodies with a singular system: " << singular << "; bodies whose solve failed: " << failed << "\n";
+  const auto header = text.lines.empty() ? nlohmann::json() : nlohmann::json::parse(text.lines.front(), nullptr, false);
+  if (const auto checked = runs::recorded_neighbour_check(header)) s << runs::neighbour_check_text(*checked) << "\n";
   return s.str();
 }
 
@@ -159,15 +222,18 @@ int run_rank0(const map_options& o, process_group& group) {
   }
   group.broadcast("0" + std::string(p.existing.done.begin(), p.existing.done.end()));
 
+  // A screened map's lines are final only after the neighbour check: --json prints them then.
+  const bool screened = p.method == bch::map_method::screened;
   std::optional<runs::map_file_writer> file;
   if (!p.path.empty())
     file.emplace(p.path, p.existing, runs::map_header(p.family, p.K, p.bodies.size(), runs::map_method_name(p.method)).dump());
-  if (o.json)
+  if (o.json && !screened)
     for (const auto& line : p.existing.lines) std::cout << line << "\n";
   std::vector<std::size_t> todo;
   for (std::size_t k = 0; k < p.bodies.size(); ++k)
     if (p.existing.done[k] == 0) todo.push_back(k);
-  ordered_writer writer(todo, file ? &*file : nullptr, o.json);
+  std::vector<std::string> kept(screened && p.path.empty() ? p.bodies.size() : 0);
+  ordered_writer writer(todo, file ? &*file : nullptr, o.json && !screened, kept.empty() ? nullptr : &kept);
 
   progress_line progress;
   const auto start = std::chrono::steady_clock::now();
@@ -199,6 +265,27 @@ int run_rank0(const map_options& o, process_group& group) {
   }
   if (!writer.complete()) throw std::runtime_error("a process of the MPI job did not deliver all its bodies");
   if (file) file->finish();
+  shared_runner shared(group, p.bodies, p.family);
+  if (screened) {
+    int pass = 0;
+    const runs::neighbour_runner run = [&](const std::vector<runs::neighbour_task>& tasks) {
+      progress.show("map " + p.family + " --grid " + std::to_string(p.K) + ": neighbour check, pass " + std::to_string(++pass) +
+                    ", " + std::to_string(tasks.size()) + " exact solves on " + std::to_string(group.size()) + " process(es)");
+      return shared(tasks);
+    };
+    if (file) {
+      file.reset();  // closed: the check rewrites the file whole
+      runs::check_map_file(p.path, p.K, p.bodies, run);
+      if (o.json) {
+        const auto text = runs::read_map_file(p.path);
+        for (std::size_t n = 1; n < text.lines.size(); ++n) std::cout << text.lines[n] << "\n";  // after the header
+      }
+    } else {
+      runs::check_neighbours(p.bodies, kept, run);
+      for (const auto& line : kept) std::cout << line << "\n";
+    }
+  }
+  shared.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!o.json) std::cout << summary(p, seconds, todo.size(), group.size());
   return 0;
@@ -218,6 +305,7 @@ int run_worker(const map_options& o, process_group& group) {
     if (owner_of_row(row, group.size()) == group.rank())
       group.send_results(runs::map_row_lines(bodies, row * n, n, done, family, method));
   group.send_done();
+  serve_neighbour_check(group, bodies, family);
   return 0;
 }
 

@@ -34,7 +34,9 @@ def map_line(family: str, s, t, grid: int, exact: bool = False) -> dict:
     """One body line of ``rotlie map --family FAMILY --grid GRID`` (LV section 5): the body at triangle
     coordinates ``s``, ``t`` (multiples of 1/grid, e.g. ``Fraction(3, 20)``), by the path the map takes
     for the family (its row computed as the map does, so the line is the map file's), or by the exact
-    solver for that body alone when ``exact`` (``rotlie map --exact``)."""
+    solver for that body alone when ``exact`` (``rotlie map --exact``). For P at grid 200 and finer
+    (the screened path) it is the line of the row before the map's neighbour check, which replaces a
+    line by the exact solver's where a neighbour's best beats it: ``exact=True`` gives the exact line."""
     grid = operator.index(grid)
     if grid < 2:
         raise ValueError(f"--grid must be at least 2, got {grid}")

@@ -45,8 +45,9 @@ std::string bch_series(const std::string& name, long degree) {
 }
 
 // The map line of the body at grid indices (i, j) of the grid K: by the path `rotlie map` takes for
-// the family (its row computed as the map computes it, so that the line is the map file's), or by the
-// exact solver for that body alone.
+// the family (its row computed as the map computes it, so that the line is the map file's; for the
+// screened path, the row's line before the map's neighbour check), or by the exact solver for that
+// body alone.
 std::string map_line(const std::string& family, long i, long j, long K, bool exact) {
   auto out = std::make_shared<std::string>();
   run_symbolic([=] {

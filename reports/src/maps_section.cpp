@@ -17,6 +17,7 @@
 #include "rotlie/runs/family_names.hpp"
 #include "rotlie/runs/map_check.hpp"
 #include "rotlie/runs/map_file.hpp"
+#include "rotlie/runs/map_neighbour_check.hpp"
 #include "rotlie/runs/map_rows.hpp"
 #include "rotlie/runs/shipped_data.hpp"
 #include "rotlie/solver/body_grid.hpp"
@@ -86,19 +87,28 @@ family_map compute_map(const report_options& options, const std::string& family,
   const auto start = std::chrono::steady_clock::now();
   const auto grid = solver::asymmetric_grid(K);
   const std::vector<char> none_done(grid.size(), 0);
-  std::ostringstream jsonl;
-  jsonl << runs::map_header(family, K, grid.size(), m.method).dump() << "\n";
+  std::vector<std::string> lines(grid.size());
   for (std::size_t first = 0; first < grid.size(); first += static_cast<std::size_t>(K)) {
     if (options.progress)
       options.progress("Maps: family " + family + " at --grid " + std::to_string(K) + ", row " +
                        std::to_string(first / K + 1) + " of " + std::to_string(K - 1));
-    for (const auto& [k, line] : runs::map_row_lines(grid, first, static_cast<std::size_t>(K), none_done, family, method)) {
-      jsonl << line << "\n";
-      auto j = nlohmann::json::parse(line);
-      if (j.contains("failed")) continue;  // drawn as a map file is: without the bodies whose solve failed
-      m.lines.push_back(std::move(j));
-      m.bodies.push_back(from_line(m.lines.back(), K));
-    }
+    for (auto& [k, line] : runs::map_row_lines(grid, first, static_cast<std::size_t>(K), none_done, family, method))
+      lines[k] = std::move(line);
+  }
+  auto header = runs::map_header(family, K, grid.size(), m.method);
+  if (method == bch::map_method::screened) {  // as rotlie map does once every row is done
+    if (options.progress) options.progress("Maps: family " + family + " at --grid " + std::to_string(K) + ", neighbour check");
+    const auto c = runs::check_neighbours(grid, lines, runs::local_neighbour_runner(grid, family));
+    header["neighbour_check"] = runs::neighbour_check_record(c);
+  }
+  std::ostringstream jsonl;
+  jsonl << header.dump() << "\n";
+  for (const auto& line : lines) {
+    jsonl << line << "\n";
+    auto j = nlohmann::json::parse(line);
+    if (j.contains("failed")) continue;  // drawn as a map file is: without the bodies whose solve failed
+    m.lines.push_back(std::move(j));
+    m.bodies.push_back(from_line(m.lines.back(), K));
   }
   m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_file_atomically(runs::map_file_path(options.out_dir, family), jsonl.str());
@@ -113,6 +123,8 @@ family_map read_map(const std::filesystem::path& file, const std::string& family
   m.K = contents->K;
   m.method = contents->method;
   m.source = "read from " + file.filename().string() + " (--grid " + std::to_string(m.K) + ", " + m.method + ")";
+  if (m.method == "screened" && !runs::recorded_neighbour_check(contents->header))
+    m.source += "; its rows were not neighbour-checked (a file of an earlier rotlie: `rotlie map --resume` on it runs the check)";
   m.from_file = true;
   for (const auto& j : contents->bodies) {
     m.bodies.push_back(from_line(j, m.K));

@@ -8,17 +8,14 @@
 #include "rotlie/solver/screened_map.hpp"
 
 namespace rotlie::runs {
-namespace {
 
-std::string body_line(const solver::grid_body& g, const std::string& family) {
+std::string exact_map_line(const solver::grid_body& g, const std::string& family) {
   try {
     return map_line(g, solver::compute_map_point(g.body, family, solver::map_digits)).dump();
   } catch (const std::exception& e) {
     return map_failure_line(g, family, one_line(e.what())).dump();
   }
 }
-
-}  // namespace
 
 std::vector<std::pair<std::size_t, std::string>> map_row_lines(const std::vector<solver::grid_body>& bodies,
                                                                std::size_t first, std::size_t count,
@@ -45,7 +42,7 @@ std::vector<std::pair<std::size_t, std::string>> map_row_lines(const std::vector
   for (std::size_t k = first; k < first + count; ++k)
     if (done[k] == 0) {
       lie::stop_point();
-      out.emplace_back(k, body_line(bodies[k], family));
+      out.emplace_back(k, exact_map_line(bodies[k], family));
     }
   return out;
 }

@@ -10,6 +10,9 @@
 
 namespace rotlie::runs {
 
+/// The exact solver's line of one body (a failure line when the solve fails).
+std::string exact_map_line(const solver::grid_body& g, const std::string& family);
+
 /// The lines (JSON text, runs/map_file.hpp) of the bodies [first, first + count) of `bodies` that
 /// are still to do (done[k] == 0), each with its index in `bodies`. The fast and screened paths
 /// carry solutions along the whole row whatever is done, so that every line is the same in any

@@ -18,7 +18,10 @@
 // complete state carries over whole with the same count of real eliminant roots (a birth or death
 // changes the count by two; a death alone also stops the carry), at about half a solve. With
 // `per_permutation`, the best of each permutation is completed the same way. What stays unproved
-// is the screening itself; the maps check it against the exact solver at random bodies (map_check).
+// is the screening itself: a minimum missed by every chain and checkpoint of a row leaves a best
+// that is not. `rotlie map` therefore runs the neighbour check over the whole map once every row is
+// done (runs/map_neighbour_check.hpp: each body against its neighbours' best systems, solved there
+// exactly), and the maps check the result against the exact solver at random bodies (map_check).
 #include <string>
 #include <vector>
 
