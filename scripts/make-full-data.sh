@@ -9,7 +9,8 @@
 # xz -9e into data/maps-K200/map-F.jsonl.xz. Beside it, map-F.source records the command, the commit
 # of the source tree, the date, the map's own summary, the sizes and the sha256 of the map and of the
 # compressed file; data/maps-K200/SHA256SUMS is rewritten for `sha256sum -c`.
-# Cost on one core of the development machine: N 10 min, R about 11 h, P about 4 h (screened path).
+# Cost on one core of the development machine: N 10 min, R about 11 h, P about 4 h (screened rows)
+# and 29 min (the neighbour check).
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)

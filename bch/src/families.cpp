@@ -33,8 +33,9 @@ const std::vector<family>& families() {
         {"P14", "ABCBCACBCBA", splitting::abc},
         {"P15", "ABCBCBCBCBA", splitting::abc}},
        map_method::screened,
-       200},  // screened: at K = 5 and 8 it named a best that is not; at K = 200, 0 of 200 random bodies of the
-              // rows s <= 33/200 wrong, but 1 of 200 drawn from the whole map (data/README.md): not yet shown right
+       200},  // screened: at K = 5 and 8 it named a best that is not, so coarser grids take the exact solver; at
+              // K = 200 its rows alone were wrong at 1 of 200 bodies drawn from the whole map, the rows and
+              // then the neighbour check (runs/map_neighbour_check) at 0 of 400 (data/README.md)
       {"Q", "13-stage ABC palindromes", family_kind::two_free_parameters, splitting::abc, 13, {}},
       {"QRS", "11-stage RS palindromes", family_kind::two_free_parameters, splitting::rs, 11, {}},
   };

@@ -341,7 +341,8 @@ std::string fast_path_check(const report_options& options, const std::vector<fam
   md << "\nBodies drawn at random (seed 14) from each fast map; " << full_checks
      << " per map with --full or a map file. The screened path (P) makes each body's best complete (the exact solver, or a "
         "complete state carried over with an unchanged count of real eliminant roots), so its best, label and remainder "
-        "are exact wherever the screening found the right system; the check tests that screening. Its per-permutation bests other than the best are labelled only where their system "
+        "are exact wherever the screening found the right system; the neighbour check then holds each body against its "
+        "neighbours' best systems, solved exactly there, and the check here tests the result. Its per-permutation bests other than the best are labelled only where their system "
         "was confirmed too, and the count of real solutions is left out.\n\n";
   for (const auto& d : differences) md << "- " << d << "\n";
   if (!differences.empty()) md << "\n";
@@ -405,8 +406,8 @@ report_section maps_section(const report_options& options) {
         "the default report computes coarse grids (N by continuation "
         "confirmed by the exact solver; P by the exact solver at every body, since the screened path, checked at --grid 200, "
         "can miss the best between the far-apart bodies of a coarse grid); `rotlie report --full` computes --grid 200 here "
-        "(P by the screened path: every system solved exactly at both ends of each row, the best of each body made complete; about "
-        "2 CPU hours for P, 2 minutes for N), and "
+        "(P by the screened path: every system solved exactly at both ends of each row, the best of each body made complete, "
+        "then the neighbour check; about 4.5 CPU hours for P, 10 minutes for N), and "
         "`--maps DIR` draws the files `map-N.jsonl`, `map-P.jsonl` of `rotlie map --out DIR` instead. Each body is "
         "placed at (I1, I2) of its image in the triangle; the map files are in this folder.\n\n";
   const std::array<std::array<std::string, 2>, 2> figures = {{{"7", "8"}, {"9", "10"}}};
