@@ -97,6 +97,7 @@ class shared_runner {
   shared_runner(process_group& group, const std::vector<solver::grid_body>& bodies, const std::string& family)
       : group_(group), bodies_(bodies), family_(family) {}
   std::vector<std::string> operator()(const std::vector<runs::neighbour_task>& tasks) {
+    if (tasks.empty()) return {};  // an empty batch would read as the end of the work
     if (group_.size() > 1) group_.broadcast(runs::tasks_text(tasks));
     std::vector<std::string> out(tasks.size());
     std::vector<char> have(tasks.size(), 0);

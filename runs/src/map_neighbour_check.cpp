@@ -38,7 +38,9 @@ line_best best_of(const std::string& line) {
   }
   if (j.contains("best") && j["best"].is_string()) {
     const std::string label = j["best"].get<std::string>();  // SCHEME:PERM:LABEL
-    b.system = label.substr(0, label.rfind(':'));
+    const auto last = label.rfind(':');
+    // SCHEME:PERM, or nothing for a label of another shape (not a system to hand to the solver)
+    if (last != std::string::npos && last > 0 && label.find(':') < last) b.system = label.substr(0, last);
   }
   if (j.contains("remainder") && j["remainder"].is_number()) b.remainder = j["remainder"].get<double>();
   return b;
@@ -46,6 +48,9 @@ line_best best_of(const std::string& line) {
 
 // A smaller ‖H_R5‖ than the line's, beyond the digits both were computed to.
 bool beats(double probe, double line) { return probe < line * (1 - 1e-9); }
+
+// A probe whose exact solve threw.
+constexpr const char* failed_probe = "failed";
 
 }  // namespace
 
@@ -77,9 +82,13 @@ std::string run_neighbour_task(const neighbour_task& task, const std::vector<sol
   lie::stop_point();
   const auto& g = bodies.at(task.body);
   if (task.scheme.empty()) return exact_map_line(g, family);
-  const auto r = solver::solve_dedicated(g.body, {task.scheme}, {task.permutation}, solver::map_digits);
   double smallest = std::numeric_limits<double>::infinity();
-  for (const auto& s : r.solutions) smallest = std::min(smallest, s.analytic_remainder);
+  try {
+    const auto r = solver::solve_dedicated(g.body, {task.scheme}, {task.permutation}, solver::map_digits);
+    for (const auto& s : r.solutions) smallest = std::min(smallest, s.analytic_remainder);
+  } catch (const std::exception&) {
+    return failed_probe;  // the system cannot be solved at this body: it shows nothing there
+  }
   if (!std::isfinite(smallest)) return "inf";
   char text[32];
   std::snprintf(text, sizeof text, "%.17g", smallest);
@@ -132,8 +141,13 @@ neighbour_check_counts check_neighbours(const std::vector<solver::grid_body>& bo
     counts.probes += probes.size();
     const auto results = run(probes);
     std::set<std::size_t> beaten;
-    for (std::size_t p = 0; p < probes.size(); ++p)
+    for (std::size_t p = 0; p < probes.size(); ++p) {
+      if (results.at(p) == failed_probe) {
+        ++counts.failed_probes;
+        continue;
+      }
       if (beats(std::stod(results.at(p)), best[probes[p].body].remainder)) beaten.insert(probes[p].body);
+    }
     around.clear();
     if (beaten.empty()) break;
     std::vector<neighbour_task> replace;
@@ -141,8 +155,13 @@ neighbour_check_counts check_neighbours(const std::vector<solver::grid_body>& bo
     const auto exact = run(replace);
     for (std::size_t r = 0; r < replace.size(); ++r) {
       const std::size_t k = replace[r].body;
+      const auto exact_best = best_of(exact.at(r));
+      if (exact_best.failed) {  // the whole body's exact solve failed where one system's did not: keep the line
+        ++counts.failed_replacements;
+        continue;
+      }
       lines[k] = exact.at(r);
-      best[k] = best_of(lines[k]);
+      best[k] = exact_best;
       ++counts.replaced;
       around.insert(k);
       for (const std::size_t n : neighbours(k)) around.insert(n);
@@ -157,7 +176,7 @@ std::optional<neighbour_check_counts> check_map_file(const std::filesystem::path
   if (text.lines.empty()) throw std::runtime_error(printable_path(path) + " is empty");
   auto header = nlohmann::ordered_json::parse(text.lines.front(), nullptr, false);
   if (header.is_discarded() || !header.is_object()) throw std::runtime_error(printable_path(path) + " has no map header");
-  if (header.contains("neighbour_check")) return std::nullopt;
+  if (recorded_neighbour_check(header)) return std::nullopt;
   std::map<std::pair<int, int>, std::size_t> at;
   for (std::size_t k = 0; k < bodies.size(); ++k) at[{bodies[k].i, bodies[k].j}] = k;
   std::vector<std::string> lines(bodies.size());
@@ -178,7 +197,8 @@ std::optional<neighbour_check_counts> check_map_file(const std::filesystem::path
 }
 
 nlohmann::ordered_json neighbour_check_record(const neighbour_check_counts& c) {
-  return {{"probes", c.probes}, {"replaced", c.replaced}, {"passes", c.passes}};
+  return {{"probes", c.probes}, {"replaced", c.replaced}, {"passes", c.passes}, {"failed_probes", c.failed_probes},
+          {"failed_replacements", c.failed_replacements}};
 }
 
 std::optional<neighbour_check_counts> recorded_neighbour_check(const nlohmann::json& header) {
@@ -189,13 +209,19 @@ std::optional<neighbour_check_counts> recorded_neighbour_check(const nlohmann::j
   c.probes = count("probes");
   c.replaced = count("replaced");
   c.passes = static_cast<int>(count("passes"));
+  c.failed_probes = count("failed_probes");
+  c.failed_replacements = count("failed_replacements");
   return c;
 }
 
 std::string neighbour_check_text(const neighbour_check_counts& c) {
   return "neighbour check: " + std::to_string(c.probes) + " systems solved exactly at their neighbours' bodies, " +
          std::to_string(c.replaced) + (c.replaced == 1 ? " line" : " lines") + " replaced by the exact solver's (" +
-         std::to_string(c.passes) + (c.passes == 1 ? " pass)" : " passes)");
+         std::to_string(c.passes) + (c.passes == 1 ? " pass)" : " passes)") +
+         (c.failed_probes + c.failed_replacements > 0
+              ? "; " + std::to_string(c.failed_probes) + " systems and " + std::to_string(c.failed_replacements) +
+                    " bodies the exact solver could not solve, their lines kept"
+              : std::string());
 }
 
 }  // namespace rotlie::runs

@@ -7,6 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <chrono>
+
 BOOST_AUTO_TEST_SUITE(map_neighbour_cli_test)
 
 using namespace rotlie::test_cli;
@@ -62,8 +65,14 @@ BOOST_AUTO_TEST_CASE(a_kill_during_the_check_leaves_the_map_as_it_was) {
     std::ofstream out(*file, std::ios::binary);
     out << text;
   }
-  // About 2 s to read and resume the file, then the check (some 15 minutes on 2 cores): killed inside it
-  const auto r = run_command(std::string("timeout -s KILL 8 ") + ROTLIE_BINARY + " map --family P --grid 200 --out " +
+  // Reading and resuming the file takes what a run on the checked map takes (about 2 s here), then the
+  // check some 15 minutes on 2 cores: killed well after the first, well inside the second
+  const auto checked = shipped_map_in("timing");
+  const auto start = std::chrono::steady_clock::now();
+  BOOST_REQUIRE(run("map --family P --grid 200 --out " + checked->parent_path().string() + " --resume").status == 0);
+  const double reading = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const int after = std::max(8, static_cast<int>(4 * reading) + 2);
+  const auto r = run_command("timeout -s KILL " + std::to_string(after) + " " + ROTLIE_BINARY + " map --family P --grid 200 --out " +
                              file->parent_path().string() + " --resume");
   BOOST_TEST(r.status == 137, "not killed: it ended by itself with status " << r.status << ": " << r.err);
   BOOST_TEST(slurp(*file) == text);

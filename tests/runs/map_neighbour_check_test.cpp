@@ -5,10 +5,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
+#include "rotlie/runs/map_file.hpp"
 #include "rotlie/runs/map_neighbour_check.hpp"
 #include "rotlie/runs/map_rows.hpp"
 #include "rotlie/solver/body_grid.hpp"
@@ -16,6 +22,16 @@
 using namespace rotlie;
 
 namespace {
+
+// The exact N map at --grid 10 (N's exact solver is cheap), computed once for every case.
+const std::vector<std::string>& exact_n_map() {
+  static const std::vector<std::string> lines = [] {
+    std::vector<std::string> out;
+    for (const auto& g : solver::asymmetric_grid(10)) out.push_back(runs::exact_map_line(g, "N"));
+    return out;
+  }();
+  return lines;
+}
 
 std::string system_of(const nlohmann::json& line) {
   const std::string label = line.at("best").get<std::string>();
@@ -39,10 +55,8 @@ BOOST_AUTO_TEST_CASE(tasks_survive_their_text) {
 }
 
 BOOST_AUTO_TEST_CASE(an_exact_map_is_left_alone_and_a_worse_best_is_replaced) {
-  // N's exact solver is cheap: the whole exact map at --grid 10
   const auto bodies = solver::asymmetric_grid(10);
-  std::vector<std::string> exact;
-  for (const auto& g : bodies) exact.push_back(runs::exact_map_line(g, "N"));
+  const auto& exact = exact_n_map();
   auto lines = exact;
   const auto run = runs::local_neighbour_runner(bodies, "N");
   const auto untouched = runs::check_neighbours(bodies, lines, run);
@@ -77,6 +91,77 @@ BOOST_AUTO_TEST_CASE(an_exact_map_is_left_alone_and_a_worse_best_is_replaced) {
   const auto repaired = runs::check_neighbours(bodies, lines, run);
   BOOST_TEST(repaired.replaced == 1u);
   BOOST_TEST(lines == exact);  // the exact solver's line again, byte for byte
+}
+
+BOOST_AUTO_TEST_CASE(a_system_the_solver_refuses_shows_nothing_and_the_lines_stay) {
+  const auto bodies = solver::asymmetric_grid(10);
+  auto lines = exact_n_map();
+  auto odd = nlohmann::json::parse(lines[3]);
+  odd["best"] = "N99:ABC:1";  // no such scheme: its neighbours' probes of it throw
+  lines[3] = odd.dump();
+  const auto expected = lines;
+  const auto c = runs::check_neighbours(bodies, lines, runs::local_neighbour_runner(bodies, "N"));
+  BOOST_TEST(c.failed_probes > 0u);
+  BOOST_TEST(c.replaced == 0u);
+  BOOST_TEST(lines == expected);
+  odd["best"] = "N2";  // not SCHEME:PERM:LABEL: not a system to probe
+  lines[3] = odd.dump();
+  BOOST_TEST(runs::check_neighbours(bodies, lines, runs::local_neighbour_runner(bodies, "N")).failed_probes == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(a_map_file_is_checked_once_and_rewritten_whole) {
+  const auto bodies = solver::asymmetric_grid(10);
+  const auto& exact = exact_n_map();
+  // a worse best at the body after the first whose right-hand neighbour shares its best
+  std::size_t target = bodies.size();
+  nlohmann::json worse;
+  for (std::size_t k = 0; k + 1 < bodies.size() && target == bodies.size(); ++k) {
+    const auto line = nlohmann::json::parse(exact[k]), next = nlohmann::json::parse(exact[k + 1]);
+    if (bodies[k + 1].i != bodies[k].i || !line["best"].is_string() || !next["best"].is_string() || system_of(line) != system_of(next))
+      continue;
+    for (const auto& p : line["permutations"])
+      if (p["best"].is_string() && p["remainder"].get<double>() > 2 * line["remainder"].get<double>()) {
+        worse = line;
+        worse["best"] = p["best"];
+        worse["remainder"] = p["remainder"];
+        target = k;
+        break;
+      }
+  }
+  BOOST_TEST_REQUIRE(target < bodies.size());
+  const auto dir = std::filesystem::temp_directory_path() / ("rotlie-neighbour-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto file = dir / "map-N.jsonl";
+  const auto write = [&](const nlohmann::ordered_json& header) {
+    std::ofstream out(file);
+    out << header.dump() << "\n";
+    for (std::size_t k = 0; k < exact.size(); ++k) out << (k == target ? worse.dump() : exact[k]) << "\n";
+  };
+  const auto read = [&] {
+    std::ifstream in(file);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  auto header = runs::map_header("N", 10, bodies.size(), "exact");
+  header["neighbour_check"] = nullptr;  // not a record of a check: checked
+  write(header);
+  const auto run = runs::local_neighbour_runner(bodies, "N");
+  const auto c = runs::check_map_file(file, 10, bodies, run);
+  BOOST_TEST_REQUIRE(c.has_value());
+  BOOST_TEST(c->replaced == 1u);
+  const std::string after = read();
+  const auto first = nlohmann::json::parse(after.substr(0, after.find('\n')));
+  const auto recorded = runs::recorded_neighbour_check(first);
+  BOOST_TEST_REQUIRE(recorded.has_value());
+  BOOST_TEST(recorded->replaced == 1u);
+  BOOST_TEST(recorded->probes == c->probes);
+  std::string body_lines;
+  for (const auto& l : exact) body_lines += l + "\n";
+  BOOST_TEST(after.substr(after.find('\n') + 1) == body_lines);  // every body line the exact solver's, in grid order
+  BOOST_TEST(!runs::check_map_file(file, 10, bodies, run).has_value());  // recorded: not checked again
+  BOOST_TEST(read() == after);
+  std::filesystem::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_SUITE_END()  // map_neighbour_check_test

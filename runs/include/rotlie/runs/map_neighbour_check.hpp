@@ -32,13 +32,15 @@ std::string tasks_text(const std::vector<neighbour_task>& tasks);
 std::vector<neighbour_task> tasks_from_text(const std::string& text);
 
 /// Does one task: the smallest ‖H_R5‖ of the system at the body, as "%.17g" text ("inf" without a
-/// real solution), or the body's exact map line.
+/// real solution, "failed" when the solver throws), or the body's exact map line.
 std::string run_neighbour_task(const neighbour_task& task, const std::vector<solver::grid_body>& bodies, const std::string& family);
 
 struct neighbour_check_counts {
   std::size_t probes = 0;    ///< (body, system) exact solves
   std::size_t replaced = 0;  ///< lines replaced by the exact solver's
   int passes = 0;
+  std::size_t failed_probes = 0;        ///< probes whose exact solve threw: they show nothing, the line stays
+  std::size_t failed_replacements = 0;  ///< beaten bodies whose whole exact solve failed: the line stays
 };
 
 /// Runs the check over the body lines of a complete map (lines[k]: body k of `bodies`, the
@@ -49,7 +51,8 @@ neighbour_check_counts check_neighbours(const std::vector<solver::grid_body>& bo
                                         const neighbour_runner& run);
 
 /// The check of a complete map file, which it rewrites whole (atomically) with the counts in its
-/// header's "neighbour_check". nullopt, and the file untouched, when the header has them already.
+/// header's "neighbour_check". nullopt, and the file untouched, when the header records them already
+/// (recorded_neighbour_check).
 /// Throws std::runtime_error when a body line is missing or the file cannot be read or written.
 std::optional<neighbour_check_counts> check_map_file(const std::filesystem::path& path, int K,
                                                      const std::vector<solver::grid_body>& bodies, const neighbour_runner& run);
