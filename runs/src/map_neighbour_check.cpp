@@ -46,6 +46,13 @@ line_best best_of(const std::string& line) {
   return b;
 }
 
+// Each body's index in `bodies` by its grid indices (i, j).
+std::map<std::pair<int, int>, std::size_t> index_by_place(const std::vector<solver::grid_body>& bodies) {
+  std::map<std::pair<int, int>, std::size_t> at;
+  for (std::size_t k = 0; k < bodies.size(); ++k) at[{bodies[k].i, bodies[k].j}] = k;
+  return at;
+}
+
 // A smaller ‖H_R5‖ than the line's, beyond the digits both were computed to.
 bool beats(double probe, double line) { return probe < line * (1 - 1e-9); }
 
@@ -106,8 +113,7 @@ neighbour_runner local_neighbour_runner(const std::vector<solver::grid_body>& bo
 neighbour_check_counts check_neighbours(const std::vector<solver::grid_body>& bodies, std::vector<std::string>& lines,
                                         const neighbour_runner& run) {
   if (lines.size() != bodies.size()) throw std::invalid_argument("check_neighbours needs one line per body");
-  std::map<std::pair<int, int>, std::size_t> at;  // (i, j) → body
-  for (std::size_t k = 0; k < bodies.size(); ++k) at[{bodies[k].i, bodies[k].j}] = k;
+  const auto at = index_by_place(bodies);
   std::vector<line_best> best(lines.size());
   for (std::size_t k = 0; k < lines.size(); ++k) best[k] = best_of(lines[k]);
   const auto neighbours = [&](std::size_t k) {
@@ -177,8 +183,7 @@ std::optional<neighbour_check_counts> check_map_file(const std::filesystem::path
   auto header = nlohmann::ordered_json::parse(text.lines.front(), nullptr, false);
   if (header.is_discarded() || !header.is_object()) throw std::runtime_error(printable_path(path) + " has no map header");
   if (recorded_neighbour_check(header)) return std::nullopt;
-  std::map<std::pair<int, int>, std::size_t> at;
-  for (std::size_t k = 0; k < bodies.size(); ++k) at[{bodies[k].i, bodies[k].j}] = k;
+  const auto at = index_by_place(bodies);
   std::vector<std::string> lines(bodies.size());
   for (std::size_t n = 1; n < text.lines.size(); ++n) {
     const auto ij = map_line_indices(nlohmann::json::parse(text.lines[n], nullptr, false), K);

@@ -38,6 +38,25 @@ std::string system_of(const nlohmann::json& line) {
   return label.substr(0, label.rfind(':'));
 }
 
+// The first body whose right-hand neighbour in its row shares its best system, with a line that
+// names instead another permutation's best, more than twice worse; nullopt when there is none.
+std::optional<std::pair<std::size_t, std::string>> worse_best_beside_the_right_one(const std::vector<solver::grid_body>& bodies,
+                                                                                    const std::vector<std::string>& exact) {
+  for (std::size_t k = 0; k + 1 < bodies.size(); ++k) {
+    const auto line = nlohmann::json::parse(exact[k]), next = nlohmann::json::parse(exact[k + 1]);
+    if (bodies[k + 1].i != bodies[k].i || !line["best"].is_string() || !next["best"].is_string() || system_of(line) != system_of(next))
+      continue;
+    for (const auto& p : line["permutations"])
+      if (p["best"].is_string() && p["remainder"].get<double>() > 2 * line["remainder"].get<double>()) {
+        auto worse = line;
+        worse["best"] = p["best"];
+        worse["remainder"] = p["remainder"];
+        return std::pair(k, worse.dump());
+      }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(map_neighbour_check_test)
@@ -65,29 +84,10 @@ BOOST_AUTO_TEST_CASE(an_exact_map_is_left_alone_and_a_worse_best_is_replaced) {
   BOOST_TEST(lines == exact);
 
   // A body inside a region of one best: its line is made to name another permutation's best, worse
-  std::map<std::pair<int, int>, std::size_t> at;
-  for (std::size_t k = 0; k < bodies.size(); ++k) at[{bodies[k].i, bodies[k].j}] = k;
-  std::optional<std::size_t> target;
-  nlohmann::json worse;
-  for (std::size_t k = 0; k < bodies.size() && !target; ++k) {
-    const auto line = nlohmann::json::parse(exact[k]);
-    if (!line["best"].is_string()) continue;
-    const auto right = at.find({bodies[k].i, bodies[k].j + 1});
-    if (right == at.end() || !nlohmann::json::parse(exact[right->second])["best"].is_string() ||
-        system_of(nlohmann::json::parse(exact[right->second])) != system_of(line))
-      continue;
-    for (const auto& p : line["permutations"])
-      if (p["best"].is_string() && p["remainder"].get<double>() > 2 * line["remainder"].get<double>()) {
-        worse = line;
-        worse["best"] = p["best"];
-        worse["remainder"] = p["remainder"];
-        target = k;
-        break;
-      }
-  }
-  BOOST_TEST_REQUIRE(target.has_value());
+  const auto worse = worse_best_beside_the_right_one(bodies, exact);
+  BOOST_TEST_REQUIRE(worse.has_value());
   lines = exact;
-  lines[*target] = worse.dump();
+  lines[worse->first] = worse->second;
   const auto repaired = runs::check_neighbours(bodies, lines, run);
   BOOST_TEST(repaired.replaced == 1u);
   BOOST_TEST(lines == exact);  // the exact solver's line again, byte for byte
@@ -112,31 +112,12 @@ BOOST_AUTO_TEST_CASE(a_system_the_solver_refuses_shows_nothing_and_the_lines_sta
 BOOST_AUTO_TEST_CASE(a_map_file_is_checked_once_and_rewritten_whole) {
   const auto bodies = solver::asymmetric_grid(10);
   const auto& exact = exact_n_map();
-  // a worse best at the body after the first whose right-hand neighbour shares its best
-  std::size_t target = bodies.size();
-  nlohmann::json worse;
-  for (std::size_t k = 0; k + 1 < bodies.size() && target == bodies.size(); ++k) {
-    const auto line = nlohmann::json::parse(exact[k]), next = nlohmann::json::parse(exact[k + 1]);
-    if (bodies[k + 1].i != bodies[k].i || !line["best"].is_string() || !next["best"].is_string() || system_of(line) != system_of(next))
-      continue;
-    for (const auto& p : line["permutations"])
-      if (p["best"].is_string() && p["remainder"].get<double>() > 2 * line["remainder"].get<double>()) {
-        worse = line;
-        worse["best"] = p["best"];
-        worse["remainder"] = p["remainder"];
-        target = k;
-        break;
-      }
-  }
-  BOOST_TEST_REQUIRE(target < bodies.size());
+  const auto worse = worse_best_beside_the_right_one(bodies, exact);
+  BOOST_TEST_REQUIRE(worse.has_value());
   const auto dir = std::filesystem::temp_directory_path() / ("rotlie-neighbour-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const auto file = dir / "map-N.jsonl";
-  const auto write = [&](const nlohmann::ordered_json& header) {
-    std::ofstream out(file);
-    out << header.dump() << "\n";
-    for (std::size_t k = 0; k < exact.size(); ++k) out << (k == target ? worse.dump() : exact[k]) << "\n";
-  };
+
   const auto read = [&] {
     std::ifstream in(file);
     std::stringstream s;
@@ -145,7 +126,11 @@ BOOST_AUTO_TEST_CASE(a_map_file_is_checked_once_and_rewritten_whole) {
   };
   auto header = runs::map_header("N", 10, bodies.size(), "exact");
   header["neighbour_check"] = nullptr;  // not a record of a check: checked
-  write(header);
+  {
+    std::ofstream out(file);
+    out << header.dump() << "\n";
+    for (std::size_t k = 0; k < exact.size(); ++k) out << (k == worse->first ? worse->second : exact[k]) << "\n";
+  }
   const auto run = runs::local_neighbour_runner(bodies, "N");
   const auto c = runs::check_map_file(file, 10, bodies, run);
   BOOST_TEST_REQUIRE(c.has_value());
