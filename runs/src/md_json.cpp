@@ -82,7 +82,13 @@ md_verdict verdict_of(const models::dipole_field_result& r) {
 
 md_verdict verdict_of(const models::liquid_water_run_result& r) {
   md_verdict v;
-  v.unstable = r.ratio_mean >= unstable_percent;
+  v.round_off_floor = r.round_off_runs > 0;
+  if (v.round_off_floor)
+    v.warnings.push_back(std::to_string(r.round_off_runs) + " of " + std::to_string(r.runs) + " runs have dE = " + text(r.smallest_dE) +
+                         " kcal/mol, within what double's round-off reaches on energies of their size (" + text(r.round_off_dE) +
+                         "): dE/dV measures round-off, not the integrator (is the state far too hot? its temperature is " +
+                         text(r.temperature) + " K)");
+  v.unstable = !v.round_off_floor && r.ratio_mean >= unstable_percent;
   if (v.unstable)
     v.warnings.push_back("dE/dV = " + text(r.ratio_mean) + " % >= 100 %: the energy error is as large as the potential's own "
                          "fluctuation; the step is beyond the integrator's stable range");

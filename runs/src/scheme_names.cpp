@@ -38,7 +38,9 @@ void check_body_of(const schemes::scheme_table& t, const std::string& file, cons
   std::string why;
   try {
     if (schemes::same_body(t, {exact[0], exact[1], exact[2]}) != schemes::body_match::different) return;
-    why = file + " was solved for the body (" + t.inertia + "), not for --inertia " + body_text(body) +
+    // integrate and order take the body from --inertia; md and spin from their scene (no such option)
+    const std::string whose = policy == foreign_table::refuse ? "this run's body " : "--inertia ";
+    why = file + " was solved for the body (" + t.inertia + "), not for " + whose + body_text(body) +
           ": its order holds only for the body it was solved for (bodies are compared up to a common factor)";
   } catch (const std::invalid_argument& e) {
     why = file + ": its inertia line '" + t.inertia + "' is not three positive exact numbers";

@@ -324,6 +324,11 @@ const std::vector<bad_input> cases = {
   {{"map", "--family", "N", "--grid", "4", "--out", "/dev/null/x"}, usage, "'/dev/null' is a file"},
   // the screened P path is checked at --grid 200 only: coarser grids take the exact solver
   {{"map", "--family", "P", "--grid", "5", "--fast", "--json"}, usage, "--fast: the P map's fast path is checked against the exact solver at --grid 200 and finer only"},
+  // the screened path below --grid 200 (the report's default grid 8 among them) is refused at every grid
+  {{"map", "--family", "P", "--grid", "3", "--fast"}, usage, "--fast: the P map's fast path is checked against the exact solver at --grid 200 and finer only"},
+  {{"map", "--family", "P", "--grid", "8", "--fast"}, usage, "--fast: the P map's fast path is checked against the exact solver at --grid 200 and finer only"},
+  {{"map", "--family", "P", "--grid", "10", "--fast"}, usage, "--fast: the P map's fast path is checked against the exact solver at --grid 200 and finer only"},
+  {{"map", "--family", "P", "--grid", "199", "--fast"}, usage, "--fast: the P map's fast path is checked against the exact solver at --grid 200 and finer only"},
   {{"best"}, usage, "--inertia is required"},
   {{"best", "--inertia", "1,2,4"}, usage, "triangle inequality"},
   {{"best", "--inertia", "-1,1,1"}, usage, "not positive"},
@@ -356,6 +361,8 @@ const std::vector<bad_input> cases = {
   {{"exact", "--inertia", "water", "--T", "1", "--G0", "1e400,1,1"}, usage, "outside the range"},
   {{"exact", "--inertia", "water", "--T", "1", "--G0", "1e-160,0,0"}, usage, "|G0| = 1e-160 is outside the range"},
   {{"exact", "--inertia", "water", "--T", "1", "--G0", "nan,1,1"}, usage, "g1 = 'nan' is not a finite number"},
+  // a limit far below 1e-6 in six significant digits (std::to_string once printed it as 0.000000)
+  {{"exact", "--inertia", "water", "--T", "1", "--G0", "1e140,1e140,1e140"}, usage, "limit of 2.31578e-123 for this body"},
   {{"exact", "--inertia", "1e-100,1e-100,1e-100", "--T", "1e50", "--G0", "1,0,1"}, usage, "turns by"},
   {{"exact", "--inertia", "0.345,0.653,1", "--T", "1"}, usage, "eq. (77)"},
   {{"exact", "--inertia", "water", "--T", "1e150"}, usage, "turns by"},

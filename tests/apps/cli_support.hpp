@@ -4,6 +4,7 @@
 // passes for an error exit). ROTLIE_BINARY is the built binary's path, defined per test (CLI);
 // include after boost/test/unit_test.hpp (the folder is removed by a global fixture).
 #include <errno.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -50,6 +51,41 @@ inline run_result run_command(const std::string& command) {
 
 /// rotlie with the given arguments (shell words).
 inline run_result run(const std::string& args) { return run_command(std::string(ROTLIE_BINARY) + " " + args); }
+
+/// rotlie started in the background (its outputs discarded), killed by SIGKILL and reaped when the
+/// object goes: for a run that must be going on while another command is tried.
+class background_run {
+ public:
+  explicit background_run(const std::string& args) {
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      const std::string command = "exec " + std::string(ROTLIE_BINARY) + " " + args + " >/dev/null 2>&1 </dev/null";
+      ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+  }
+  ~background_run() { stop(); }
+  background_run(const background_run&) = delete;
+  background_run& operator=(const background_run&) = delete;
+  /// Whether the run is still going (it has not exited by itself).
+  bool running() {
+    if (pid_ <= 0) return false;
+    int status = 0;
+    if (::waitpid(pid_, &status, WNOHANG) == 0) return true;
+    pid_ = -1;
+    return false;
+  }
+  void stop() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGKILL);
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    pid_ = -1;
+  }
+
+ private:
+  pid_t pid_ = -1;
+};
 
 /// Removes the scratch folder when the test process ends.
 struct scratch_cleanup {

@@ -81,6 +81,9 @@ BOOST_AUTO_TEST_CASE(a_rotor_table_solved_for_another_body_is_refused_without_an
   BOOST_TEST(r.status == 2, r.err);
   BOOST_TEST(r.err.find("was solved for the body") != std::string::npos, r.err);
   BOOST_TEST(r.err.find("--force") == std::string::npos, r.err);
+  // nor name an option md does not have: the body is the scene's (this once said "not for --inertia")
+  BOOST_TEST(r.err.find("--inertia") == std::string::npos, r.err);
+  BOOST_TEST(r.err.find("not for this run's body (") != std::string::npos, r.err);
   BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   BOOST_TEST(r.out.empty());
 }
@@ -142,6 +145,11 @@ BOOST_AUTO_TEST_CASE(the_error_of_one_run_is_unknown_not_zero) {
   BOOST_TEST(text.out.find("± 0 ") == std::string::npos, text.out);
   const auto w = md_json("--scene free-water --integrator MRDL --h 8 --runs 1 --T 1");
   BOOST_TEST(w.at("tau_error_ps").is_null());
+  // and in the text: tau's error is unknown, never "± nan" (free-water once printed tau = 13.84 ± nan)
+  const auto free_text = run("md --scene free-water --integrator MRDL --h 8 --runs 1 --T 1");
+  BOOST_TEST(free_text.out.find("tau = ") != std::string::npos, free_text.out);
+  BOOST_TEST(free_text.out.find("± unknown (one run)") != std::string::npos, free_text.out);
+  BOOST_TEST(free_text.out.find("nan") == std::string::npos, free_text.out);
 }
 
 BOOST_AUTO_TEST_SUITE_END()  // md_cli_test

@@ -13,8 +13,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
+#include <vector>
 
 BOOST_AUTO_TEST_SUITE(md_liquid_cli_test)
 
@@ -32,11 +35,43 @@ std::string liquid(const std::string& extra, const std::string& integrator = "MR
 
 }  // namespace
 
+// `script` gives rotlie a terminal for stderr, where the progress lines go; its record is returned.
+bool have_script() { return std::system("script -qec true /dev/null >/dev/null 2>&1 </dev/null") == 0; }
+
+std::string replaced_line(const std::string& text, const std::string& prefix, const std::string& line) {
+  const auto at = text.find("\n" + prefix);
+  BOOST_REQUIRE(at != std::string::npos);
+  return text.substr(0, at + 1) + line + text.substr(text.find('\n', at + 1));
+}
+
 BOOST_AUTO_TEST_CASE(liquid_water_runs_saves_reloads_and_refuses_another_system) {
-  // first run: equilibrates, writes the state, answers in JSON with the contract's fields
-  const auto first = run(liquid("--threads 2 --json"));
-  BOOST_TEST_REQUIRE(first.status == 0, first.err);
-  const auto j = nlohmann::json::parse(first.out);
+  // a leftover of the temporary name every run once shared (a folder, so that writing to it fails): not this run's
+  fs::create_directories(scratch() / "w.state.partial");
+  // first run: equilibrates (its progress lines on a terminal when `script` can give it one), writes the
+  // state, answers in JSON with the contract's fields
+  const fs::path first_out = scratch() / "first.json", first_terminal = scratch() / "first.terminal";
+  const bool terminal = have_script();
+  const std::string first_command = std::string(ROTLIE_BINARY) + " " + liquid("--threads 2 --json") + " >" + first_out.string();
+  const int first_raw = terminal ? std::system(("script -qefc '" + first_command + "' " + first_terminal.string() + " >/dev/null 2>&1 </dev/null").c_str())
+                           : std::system((first_command + " 2>" + first_terminal.string() + " </dev/null").c_str());
+  BOOST_TEST_REQUIRE((WIFEXITED(first_raw) && WEXITSTATUS(first_raw) == 0), slurp(first_terminal));
+  BOOST_TEST(fs::is_directory(scratch() / "w.state.partial"));
+  if (terminal) {
+    // "equilibration 0.5 ps: T = 301.2 K, ...": six significant digits, never std::to_string's 0.500000
+    const std::string shown = slurp(first_terminal);
+    const std::regex progress("equilibration ([^ ]+) ps: T = ([^ ]+) K, V/N = ([^ ]+) kcal/mol");
+    int lines = 0;
+    for (auto it = std::sregex_iterator(shown.begin(), shown.end(), progress); it != std::sregex_iterator(); ++it, ++lines)
+      for (int k = 1; k <= 3; ++k) {
+        const std::string number = (*it)[k];
+        BOOST_TEST(!std::regex_search(number, std::regex("\\.[0-9]*0$")), "a padded number: " << number);
+        BOOST_TEST(std::isfinite(std::stod(number)), number);
+      }
+    BOOST_TEST(lines > 0, "no progress line on the terminal: " << shown.substr(0, 300));
+  } else {
+    BOOST_TEST_MESSAGE("no terminal from `script` here: the progress lines are not checked");
+  }
+  const auto j = nlohmann::json::parse(slurp(first_out));
   for (const char* key : {"scene", "integrator", "h_fs", "f", "runs", "dE_over_dV_percent", "potential_kcal_per_mol", "ms_per_step"})
     BOOST_TEST(j.contains(key), key);
   BOOST_TEST(j["scene"] == "liquid-water");
@@ -98,6 +133,87 @@ BOOST_AUTO_TEST_CASE(liquid_water_runs_saves_reloads_and_refuses_another_system)
   BOOST_TEST(other.err.rfind("rotlie: error: ", 0) == 0u, other.err);
   BOOST_TEST(std::count(other.err.begin(), other.err.end(), '\n') == 1);
   BOOST_TEST(slurp(scratch() / "w.state") == before);
+
+  // damaged states: refused in one line (status 2), nothing on stdout, the file left as it was
+  const fs::path state = scratch() / "w.state";
+  const std::string rows_end = before.substr(0, before.size() - 1), last_row = rows_end.substr(rows_end.rfind('\n') + 1);
+  const std::string cut = before.substr(0, before.size() - 1 - last_row.size());
+  std::istringstream columns(last_row);
+  std::vector<std::string> cells{std::istream_iterator<std::string>(columns), {}};
+  const std::string row_of_19 = cut + last_row + " 0\n";
+  // one momentum of 10^100 (once "0 ± 0 %, temperature 3e201 K"): the linear one px, the angular one Gz
+  const auto with_cell = [&](std::size_t column, const std::string& value) {
+    auto changed = cells;
+    changed.at(column) = value;
+    std::string text = cut;
+    for (std::size_t c = 0; c < changed.size(); ++c) text += (c ? " " : "") + changed[c];
+    return text + "\n";
+  };
+  const auto on_state = [&](const std::string& path) {
+    return run("md --scene liquid-water --integrator MRDL --h 2 --T 0.02 --runs 1 --molecules 365 --state " + path);
+  };
+  for (const auto& [what, text] : std::vector<std::pair<std::string, std::string>>{
+           {"molecules 365junk", replaced_line(before, "molecules ", "molecules 365junk")},
+           {"time_fs nan", replaced_line(before, "time_fs ", "time_fs nan")},
+           {"a row of 19 columns", row_of_19},
+       }) {
+    std::ofstream(state, std::ios::binary) << text;
+    const auto r = on_state(state.string());
+    BOOST_TEST_CONTEXT(what << ": status " << r.status << ", " << r.err) {
+      BOOST_TEST(r.status == 2);
+      BOOST_TEST(r.out.empty());
+      BOOST_TEST(r.err.rfind("rotlie: error: ", 0) == 0u);
+      BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+      BOOST_TEST(slurp(state) == text);
+    }
+  }
+  // a state without bound (/dev/zero) is refused, not read until memory runs out
+  const auto zero = on_state("/dev/zero");
+  BOOST_TEST(zero.status == 2, zero.err);
+  BOOST_TEST(std::count(zero.err.begin(), zero.err.end(), '\n') == 1, zero.err);
+  // a momentum of 10^100 is never a plain result. Angular (Gz): the rotational energy's squares overflow, a
+  // failed run (exit 1). Linear (px): E is 10^200 kcal/mol and its fluctuation lost in round-off, so
+  // ΔE/ΔV = 0 measures round-off: flagged in the JSON and said in one warning
+  std::ofstream(state, std::ios::binary) << with_cell(17, "1e100");
+  const auto spun = on_state(state.string());
+  BOOST_TEST(spun.status == 1, spun.err);
+  BOOST_TEST(spun.err.find("is not a number") != std::string::npos, spun.err);
+  BOOST_TEST(std::count(spun.err.begin(), spun.err.end(), '\n') == 1, spun.err);
+  std::ofstream(state, std::ios::binary) << with_cell(3, "1e100");
+  const auto hot = run("md --scene liquid-water --integrator MRDL --h 2 --T 0.02 --runs 1 --molecules 365 --json --state " + state.string());
+  BOOST_TEST_REQUIRE(hot.status == 0, hot.err);
+  BOOST_TEST(nlohmann::json::parse(hot.out).at("round_off_floor").get<bool>());
+  BOOST_TEST(hot.err.find("rotlie: warning: 1 of 1 runs have dE = ") == 0u, hot.err);
+  BOOST_TEST(hot.err.find("dE/dV measures round-off") != std::string::npos, hot.err);
+  BOOST_TEST(std::count(hot.err.begin(), hot.err.end(), '\n') == 1, hot.err);
+  // a working run is not flagged
+  std::ofstream(state, std::ios::binary) << before;
+  BOOST_TEST(!j.at("round_off_floor").get<bool>());
+  BOOST_TEST(!j.at("unstable").get<bool>());
+  std::ofstream(state, std::ios::binary) << before;
+}
+
+// What can be checked before an equilibration is checked before it: a state that cannot be written, a step
+// that cannot make a run. 4,000 molecules would equilibrate for many minutes: `timeout` ends a late refusal.
+BOOST_AUTO_TEST_CASE(what_can_be_checked_is_refused_before_the_equilibration) {
+  const std::string start = "timeout 60 " + std::string(ROTLIE_BINARY) + " md --scene liquid-water --integrator MRDL --molecules 4000 ";
+  const fs::path fresh = scratch() / "fresh";
+  fs::create_directories(fresh);
+  for (const auto& [args, mention] : std::vector<std::pair<std::string, std::string>>{
+           {"--h 2 --T 0.02 --runs 1 --state /proc/rotlie-no-such-folder/s.state", "/proc/rotlie-no-such-folder"},
+           {"--h 2 --T 0.02 --runs 1 --state " + scratch().string() + "/no-such-folder/s.state", "no-such-folder"},
+           {"--h 1e-12 --T 1 --runs 1 --state " + (fresh / "a.state").string(), "--h"},
+           {"--h 2 --T 0.01 --runs 1 --state " + (fresh / "b.state").string(), "--T"},
+       }) {
+    const auto r = run_command(start + args);
+    BOOST_TEST_CONTEXT(args << ": status " << r.status << ", " << r.err) {
+      BOOST_TEST(r.status == 2);  // 124: timeout ended an equilibration the refusal came after
+      BOOST_TEST(r.err.rfind("rotlie: error: ", 0) == 0u);
+      BOOST_TEST(r.err.find(mention) != std::string::npos);
+      BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    }
+  }
+  BOOST_TEST(fs::is_empty(fresh));
 }
 
 BOOST_AUTO_TEST_SUITE_END()  // md_liquid_cli_test

@@ -8,10 +8,12 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 BOOST_AUTO_TEST_SUITE(saved_state_cli_test)
@@ -49,6 +51,33 @@ void refused(const run_result& r, const std::string& mention, int status = 2) {
   BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
 }
 
+// Whether some process holds the flock of `folder`, read from /proc/locks (taking the lock to find out
+// would make the run being watched find its folder busy).
+bool folder_is_locked(const fs::path& folder) {
+  struct stat st {};
+  if (::stat(folder.c_str(), &st) != 0) return false;
+  std::ifstream locks("/proc/locks");
+  const std::string inode = ":" + std::to_string(st.st_ino);
+  for (std::string line; std::getline(locks, line);) {
+    std::istringstream words(line);
+    std::string n, kind, advisory, mode, pid, where;
+    words >> n >> kind >> advisory >> mode >> pid >> where;
+    if (kind == "FLOCK" && where.size() > inode.size() && where.compare(where.size() - inode.size(), inode.size(), inode) == 0)
+      return true;
+  }
+  return false;
+}
+
+// Waits (at most a minute) until the background run holds the folder.
+bool locked_by(background_run& other, const fs::path& folder) {
+  for (int i = 0; i < 600; ++i) {
+    if (folder_is_locked(folder)) return true;
+    if (!other.running()) return false;
+    ::usleep(100000);
+  }
+  return false;
+}
+
 const std::string sixth_word = "sixth --words ABABABACABCBACABABABA:BCA --starts 200 --best 1 --json ";  // 4 roots for water
 
 }  // namespace
@@ -68,6 +97,62 @@ BOOST_AUTO_TEST_CASE(a_folder_in_use_by_another_run_is_refused_and_left_as_it_is
   BOOST_TEST(contents(dir / "map-N.jsonl") == "kept\n");
   BOOST_TEST(!fs::exists(dir / "scan-state.txt"));
   BOOST_TEST(!fs::exists(dir / "s.state"));
+}
+
+// The same with two real runs at once (the campaign's two `map --resume` runs once left 661 lines for 380
+// bodies): while one run works in the folder, the second is refused in one line and writes nothing there.
+BOOST_AUTO_TEST_CASE(a_second_real_run_into_a_working_folder_is_refused) {
+  const fs::path maps = scratch() / "working-map", scans = scratch() / "working-sixth", md = scratch() / "working-md";
+  for (const auto& d : {maps, scans, md}) fs::create_directories(d);
+  {
+    background_run first("map --family N --grid 80 --out " + maps.string());  // about a minute of work
+    BOOST_REQUIRE(locked_by(first, maps));
+    refused(run("map --family N --grid 80 --resume --out " + maps.string()), "another rotlie run is using the folder", 1);
+    first.stop();
+    // what the first run wrote is one line per body: the second added nothing
+    std::set<std::string> places;
+    std::size_t lines = 0;
+    std::istringstream text(contents(maps / "map-N.jsonl"));
+    for (std::string line; std::getline(text, line); ++lines)
+      if (line.rfind("{\"s\"", 0) == 0) places.insert(line.substr(0, line.find(",\"I\"")));
+    BOOST_TEST(places.size() + 1 == lines);
+  }
+  {
+    background_run first("sixth --inertia water --all --out " + scans.string());  // a scan of every word: long
+    BOOST_REQUIRE(locked_by(first, scans));
+    refused(run(sixth_word + "--inertia water --out " + scans.string()), "another rotlie run is using the folder", 1);
+  }
+  {
+    // an equilibration of 4,000 molecules: many minutes before its state is written
+    background_run first("md --scene liquid-water --integrator MRDL --h 2 --T 0.02 --runs 1 --molecules 4000 --state " +
+                         (md / "s.state").string());
+    BOOST_REQUIRE(locked_by(first, md));
+    refused(run("md --scene liquid-water --integrator MRDL --h 2 --T 0.02 --runs 1 --molecules 4000 --state " +
+                (md / "s.state").string()),
+            "another rotlie run is using the folder", 1);
+    first.stop();
+    BOOST_TEST(!fs::exists(md / "s.state"));
+  }
+}
+
+// Each process writes its own temporary: a leftover of the name every run once shared (a folder here,
+// so that writing to it fails) does not stop a scan, and is left alone.
+BOOST_AUTO_TEST_CASE(a_leftover_temporary_of_another_run_is_not_this_runs) {
+  const fs::path dir = scratch() / "sixth-leftover";
+  fs::create_directories(dir / "scan-state.txt.part");
+  const auto r = run(sixth_word + "--inertia water --out " + dir.string());
+  BOOST_TEST(r.status == 0, r.err);
+  BOOST_TEST(fs::exists(dir / "scan-state.txt"));
+  BOOST_TEST(fs::is_directory(dir / "scan-state.txt.part"));
+}
+
+// A path in a message is quoted once (map file errors once printed ''path'').
+BOOST_AUTO_TEST_CASE(a_map_file_that_cannot_be_opened_is_named_once_in_quotes) {
+  const fs::path dir = scratch() / "map-is-a-folder";
+  fs::create_directories(dir / "map-N.jsonl");
+  const auto r = run("map --family N --grid 4 --resume --out " + dir.string());
+  refused(r, "cannot open '" + (dir / "map-N.jsonl").string() + "': ", 1);
+  BOOST_TEST(r.err.find("''") == std::string::npos, r.err);
 }
 
 BOOST_AUTO_TEST_CASE(a_sixth_scan_state_of_another_body_is_refused_unchanged) {
