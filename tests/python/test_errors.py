@@ -64,6 +64,9 @@ def test_bad_arrays_and_values():
         rotlie.integrate("Strang-TV", WATER, [1, 1, 1], h=0.1, steps=1)  # a torqued-body table
     with pytest.raises(ValueError, match="2\\^60"):
         rotlie.exact_flow(WATER, [1, 1, 1], t=1e30)
+    # the limit in six significant digits: std::to_string once printed this one as "|t| ≤ 0.000000"
+    with pytest.raises(ValueError, match="\\|t\\| ≤ [1-9](\\.[0-9]+)?e-12[0-9] here"):
+        rotlie.exact_flow(WATER, [1e140, 1e140, 1e140], t=1.0)
     with pytest.raises(ValueError):
         rotlie.exact_flow(WATER, [1, 1, 1], t=np.inf)
     with pytest.raises(TypeError):
