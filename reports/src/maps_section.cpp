@@ -21,6 +21,7 @@
 #include "rotlie/runs/map_rows.hpp"
 #include "rotlie/runs/shipped_data.hpp"
 #include "rotlie/solver/body_grid.hpp"
+#include "rotlie/solver/body_map.hpp"
 
 namespace rotlie::reports {
 namespace {
@@ -374,12 +375,14 @@ report_section maps_section(const report_options& options) {
   md << "## Comparison over all rigid bodies (LV section 5, Figs. 6–10)\n\n";
   md << bodies_chart(options, sec.files);
   std::vector<family_map> maps;
-  for (const std::string family : {"N", "P"}) {
+  for (const std::string family : {"N", "P", "R"}) {
     const auto file = options.maps_dir.empty() ? std::filesystem::path() : runs::map_file_path(options.maps_dir, family);
     if (!file.empty() && std::filesystem::exists(file)) {
       maps.push_back(read_map(file, family));
       continue;
     }
+    // R has no figure in the paper: drawn when its map is given or shipped, never computed here
+    if (family == "R" && !runs::shipped_map(family)) continue;
     if (const auto shipped = runs::shipped_map(family)) {  // the paper's grid, computed once (data/README.md)
       // a map an earlier run computed into this folder is not what is drawn now: the audit must not read it
       std::error_code ec;
@@ -408,19 +411,30 @@ report_section maps_section(const report_options& options) {
         "can miss the best between the far-apart bodies of a coarse grid); `rotlie report --full` computes --grid 200 here "
         "(P by the screened path: every system solved exactly at both ends of each row, the best of each body made complete, "
         "then the neighbour check; about 4.5 CPU hours for P, 10 minutes for N), and "
-        "`--maps DIR` draws the files `map-N.jsonl`, `map-P.jsonl` of `rotlie map --out DIR` instead. Each body is "
-        "placed at (I1, I2) of its image in the triangle; the map files are in this folder.\n\n";
-  const std::array<std::array<std::string, 2>, 2> figures = {{{"7", "8"}, {"9", "10"}}};
-  for (std::size_t k = 0; k < maps.size(); ++k) {
-    const auto& m = maps[k];
+        "`--maps DIR` draws the files `map-N.jsonl`, `map-P.jsonl` of `rotlie map --out DIR` instead. The family R, "
+        "which has no figure in the paper, is drawn in the same way when its map is shipped or in `--maps DIR` "
+        "(`map-R.jsonl`). Each body is placed at (I1, I2) of its image in the triangle; the map files are in this "
+        "folder.\n\n";
+  // the paper's figure numbers (N: Figs. 7-8, P: Figs. 9-10); R's charts are named by the family alone
+  const std::map<std::string, std::array<std::string, 2>> figures = {{"N", {"7", "8"}}, {"P", {"9", "10"}}};
+  for (const auto& m : maps) {
     const std::string f = m.family;
+    const auto numbered = figures.find(f);
+    // chart file name and caption head of the best (0) and ratio (1) figures, a/b for best and permutation
+    const auto name = [&](int which, const std::string& part, const std::string& kind) {
+      return numbered == figures.end() ? "maps_" + f + "_" + kind : "maps_fig" + numbered->second[which] + part + "_" + kind + "_" + f;
+    };
+    const auto caption = [&](int which, const std::string& part) {
+      return numbered == figures.end() ? "Family " + f + " (no figure in the paper)" + (part.empty() ? "" : ", " + part)
+                                       : "Fig. " + numbered->second[which] + part;
+    };
     md << "### Family " << f << "\n\n";
-    md << categories_chart(options, m, false, "maps_fig" + figures[k][0] + "a_best_" + f,
-                           "Fig. " + figures[k][0] + "a: the best " + f + " integrator by analytic remainder ‖H_R5‖.", sec.files);
-    md << categories_chart(options, m, true, "maps_fig" + figures[k][0] + "b_permutation_" + f,
-                           "Fig. " + figures[k][0] + "b: the permutation of that best integrator.", sec.files);
-    md << ratio_chart(options, m, "maps_fig" + figures[k][1] + "_ratio_" + f,
-                      "Fig. " + figures[k][1] + ": log10 of R_M / R_" + f + " × (12/" + (f == "N" ? "9" : "11") +
+    md << categories_chart(options, m, false, name(0, "a", "best"),
+                           caption(0, "a") + ": the best " + f + " integrator by analytic remainder ‖H_R5‖.", sec.files);
+    md << categories_chart(options, m, true, name(0, "b", "permutation"),
+                           caption(0, "b") + ": the permutation of that best integrator.", sec.files);
+    md << ratio_chart(options, m, name(1, "", "ratio"),
+                      caption(1, "") + ": log10 of R_M / R_" + f + " × (12/" + std::to_string(solver::family_cost(f)) +
                           ")^4, RS4 S5 McLachlan at its best permutation against the best " + f +
                           "; above 0 (right of the black contour ratio = 1) " + f + " wins at equal cost.",
                       sec.files);
