@@ -381,8 +381,6 @@ report_section maps_section(const report_options& options) {
       maps.push_back(read_map(file, family));
       continue;
     }
-    // R has no figure in the paper: drawn when its map is given or shipped, never computed here
-    if (family == "R" && !runs::shipped_map(family)) continue;
     if (const auto shipped = runs::shipped_map(family)) {  // the paper's grid, computed once (data/README.md)
       // a map an earlier run computed into this folder is not what is drawn now: the audit must not read it
       std::error_code ec;
@@ -393,6 +391,7 @@ report_section maps_section(const report_options& options) {
                            std::to_string(maps.back().K) + ", " + maps.back().method + ")";
       continue;
     }
+    if (family == "R") continue;  // no figure in the paper: drawn when its map is given or shipped, never computed here
     const int K = options.full ? full_grid
                   : options.quick ? (family == "N" ? quick_grid_N : quick_grid_P)
                                   : (family == "N" ? default_grid_N : default_grid_P);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace rotlie::runs {
@@ -21,6 +22,11 @@ nlohmann::json run_json(const md_run_header& h, int f, long steps) {
 constexpr double unstable_percent = 100;       // energy error ≥ the potential's own fluctuation
 constexpr double round_off_units = 1000;       // a fluctuation below 1000 ε is round-off's
 constexpr double round_off_per_step = 10;      // what a step's roundings (tens of stages) can add up to, in ε
+
+// What `steps` steps' roundings can reach on quantities of size `unit`: 1000 units, or 10 a step.
+double round_off_reach(double unit, long steps) {
+  return std::max(round_off_units, round_off_per_step * static_cast<double>(std::max(1L, steps))) * unit;
+}
 
 void add_flags(nlohmann::json& j, const md_verdict& v) {
   j["unstable"] = v.unstable;
@@ -45,8 +51,7 @@ md_verdict verdict_of(const models::free_water_result& r) {
   for (double d : r.delta) largest = std::max(largest, d);
   // Round-off accumulates step by step: a δ that many steps' roundings could make (10 ε each; SIER4 at
   // h = 1e-50 fs grows δ to 6e-10 in 10⁶ steps, about 3 ε per step) measures round-off too.
-  const double accumulated = round_off_per_step * r.round_off * static_cast<double>(std::max(1L, r.steps));
-  v.round_off_floor = largest < std::max(round_off_units * r.round_off, accumulated);
+  v.round_off_floor = largest < round_off_reach(r.round_off, r.steps);
   if (v.round_off_floor)
     v.warnings.push_back("delta stays below " + text(largest) + ", within what the scalar's round-off reaches in " +
                          std::to_string(r.steps) + " steps: tau measures round-off, not the integrator (an exact rotor has "
@@ -82,10 +87,18 @@ md_verdict verdict_of(const models::dipole_field_result& r) {
 
 md_verdict verdict_of(const models::liquid_water_run_result& r) {
   md_verdict v;
-  v.round_off_floor = r.round_off_runs > 0;
+  // a run's dE within what double's round-off reaches on its energies (a state far too hot) measures round-off
+  int lost = 0;
+  double smallest = 0, reach = 0;
+  const long steps_per_run = r.runs > 0 ? r.steps / r.runs : r.steps;
+  for (std::size_t k = 0; k < r.dE.size(); ++k) {
+    const double floor = round_off_reach(std::numeric_limits<double>::epsilon() * r.energy_size[k], steps_per_run);
+    if (r.dE[k] < floor && (lost++ == 0 || r.dE[k] < smallest)) smallest = r.dE[k], reach = floor;
+  }
+  v.round_off_floor = lost > 0;
   if (v.round_off_floor)
-    v.warnings.push_back(std::to_string(r.round_off_runs) + " of " + std::to_string(r.runs) + " runs have dE = " + text(r.smallest_dE) +
-                         " kcal/mol, within what double's round-off reaches on energies of their size (" + text(r.round_off_dE) +
+    v.warnings.push_back(std::to_string(lost) + " of " + std::to_string(r.runs) + " runs have dE = " + text(smallest) +
+                         " kcal/mol, within what double's round-off reaches on energies of their size (" + text(reach) +
                          "): dE/dV measures round-off, not the integrator (is the state far too hot? its temperature is " +
                          text(r.temperature) + " K)");
   v.unstable = !v.round_off_floor && r.ratio_mean >= unstable_percent;

@@ -361,7 +361,8 @@ const std::vector<bad_input> cases = {
   {{"exact", "--inertia", "water", "--T", "1", "--G0", "1e400,1,1"}, usage, "outside the range"},
   {{"exact", "--inertia", "water", "--T", "1", "--G0", "1e-160,0,0"}, usage, "|G0| = 1e-160 is outside the range"},
   {{"exact", "--inertia", "water", "--T", "1", "--G0", "nan,1,1"}, usage, "g1 = 'nan' is not a finite number"},
-  // a limit far below 1e-6 in six significant digits (std::to_string once printed it as 0.000000)
+  // a limit far below 1e-6 in six significant digits (the command's own check; the library's exact-flow
+  // message, once "|t| ≤ 0.000000", is checked from Python in test_errors.py)
   {{"exact", "--inertia", "water", "--T", "1", "--G0", "1e140,1e140,1e140"}, usage, "limit of 2.31578e-123 for this body"},
   {{"exact", "--inertia", "1e-100,1e-100,1e-100", "--T", "1e50", "--G0", "1,0,1"}, usage, "turns by"},
   {{"exact", "--inertia", "0.345,0.653,1", "--T", "1"}, usage, "eq. (77)"},

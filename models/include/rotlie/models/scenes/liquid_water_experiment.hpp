@@ -9,7 +9,6 @@
 #include <ctime>
 #include <filesystem>
 #include <functional>
-#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -58,10 +57,9 @@ struct liquid_water_run_result {
   long steps = 0;
   double momentum_drift = 0;                ///< max |P(t) − P(0)| over the runs, g/mol·Å/fs
   double energy_drift_per_ps = 0;           ///< (E_end − E_start)/T over all runs / N, kcal/mol/ps per molecule
-  /// Runs whose ΔE is within what double's round-off reaches on energies of their size (1000 ε, or 10 ε per
-  /// step, of the largest |K| + |V|): their ΔE/ΔV measures round-off, not the integrator (a state far too hot).
-  int round_off_runs = 0;
-  double smallest_dE = 0, round_off_dE = 0;  ///< the smallest ΔE of those runs and its round-off level, kcal/mol
+  /// Per run: ΔE (kcal/mol) and the largest |K| + |V| it was computed from, whose round-off bounds what ΔE
+  /// can resolve (judged by runs::verdict_of: a state far too hot leaves ΔE/ΔV measuring round-off).
+  std::vector<double> dE, energy_size;
 };
 
 /// Line-by-line progress, may be empty.
@@ -199,9 +197,8 @@ inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& 
                                  (dV == 0 ? std::string("the potential did not fluctuate") : "the energies' squares are beyond double's range") +
                                  "): the state is not one the scene can measure");
       r.ratio_percent.push_back(ratio);
-      const double epsilon = std::numeric_limits<double>::epsilon();
-      const double floor = std::max(1000.0, 10.0 * n) * epsilon * scale;  // as free water's δ (md_json.cpp)
-      if (dE < floor && (r.round_off_runs++ == 0 || dE < r.smallest_dE)) r.smallest_dE = dE, r.round_off_dE = floor;
+      r.dE.push_back(dE);
+      r.energy_size.push_back(scale);
       if (progress) progress("run " + std::to_string(run + 1) + "/" + std::to_string(o.runs) + ": ΔE/ΔV = " + schemes::message_number(ratio) + " %");
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
