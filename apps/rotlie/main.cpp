@@ -284,8 +284,9 @@ subcommand add_spin(CLI::App& app, spin_options& spin) {
                        "SIER2, SIER4 (exact rotor), MRDL, MRDL-reversed, SIER2/X, SIER4/X (rotor by scheme X: reference name, "
                        "SCHEME:PERM:LABEL solved for the body, or a table file), odeint-dopri5[:TOL], odeint-rkf78[:TOL] (default TOL 1e-10)")
       ->required();
-  spin_cmd->add_option("--h", spin.h, "The step as a fraction of the orbital period, e.g. 1/1000")->required();
-  spin_cmd->add_option("--T", spin.T, "Length of the run in orbits (whole steps)")->required();
+  spin_cmd->add_option("--h", spin.h, "The step as a fraction of the orbital period, e.g. 1/1000 (taken exactly; an adaptive "
+                                      "method's first trial step and the spacing of its checks)")->required();
+  spin_cmd->add_option("--T", spin.T, "Length of the run in orbits: a whole number of steps --h (else refused)")->required();
   spin_cmd->add_option("--theta0", spin.theta0, "Initial rotation of the axes A, B, C about z, radians (default 0)");
   spin_cmd->add_option("--omega0", spin.omega0, "Initial spin about the C axis, units of the mean motion n (default 1)");
   spin_cmd->add_option("--obliquity", spin.obliquity, "Initial tilt of the C axis about x, radians (default 0)");

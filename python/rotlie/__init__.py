@@ -14,13 +14,13 @@ one-line message; long calls release the GIL and Ctrl-C interrupts them; nothing
 from __future__ import annotations
 
 import json
-import operator
 import os
 from fractions import Fraction
 
 import numpy as np
 
 from . import _rotlie
+from ._arguments import index_argument, real_array
 from ._bodies import Body, body_text, number_text
 from ._rotlie import Scheme
 
@@ -73,13 +73,13 @@ def solve(body, family: str = "N", perm: str | None = None, scheme: str | None =
     ``remainder_norm`` (||H_R5||, natural units, the body scaled to I3 = 1).
     """
     return _rotlie.solve(body_text(body), str(family), "all" if perm is None else str(perm),
-                         "" if scheme is None else str(scheme), operator.index(digits),
-                         "" if starts is None else str(operator.index(starts)),
-                         "" if seed is None else str(operator.index(seed)))
+                         "" if scheme is None else str(scheme), index_argument(digits, "digits"),
+                         "" if starts is None else str(index_argument(starts, "starts")),
+                         "" if seed is None else str(index_argument(seed, "seed")))
 
 
 def _rows(G0, Q0):
-    G = np.asarray(G0, dtype=np.float64)
+    G = real_array(G0, "G0")
     single = G.ndim == 1
     if G.shape[-1:] != (3,) or G.ndim not in (1, 2):
         raise ValueError("G0 must have shape (3,) or (N, 3)")
@@ -87,7 +87,7 @@ def _rows(G0, Q0):
     if Q0 is None:
         Q = np.broadcast_to(np.eye(3), (G.shape[0], 3, 3))
     else:
-        Q = np.asarray(Q0, dtype=np.float64)
+        Q = real_array(Q0, "Q0")
         if Q.shape != ((3, 3) if single else (G.shape[0], 3, 3)):
             raise ValueError("Q0 must have shape (3, 3) or (N, 3, 3), one attitude per row of G0")
         Q = Q.reshape(-1, 3, 3)
@@ -110,7 +110,7 @@ def exact_flow(body, G0, Q0=None, t=None, scalar: str = "double", error_estimate
     if t is None:
         raise TypeError("exact_flow() needs the time t")
     G, Q, single = _rows(G0, Q0)
-    times = np.ascontiguousarray(np.broadcast_to(np.asarray(t, dtype=np.float64), (G.shape[0],)))
+    times = np.ascontiguousarray(np.broadcast_to(real_array(t, "t"), (G.shape[0],)))
     G1, Q1, err = _rotlie.exact_flow(body_text(body), G, Q, times, str(scalar))
     if single:
         G1, Q1, err = G1[0], Q1[0], float(err[0])
@@ -133,7 +133,7 @@ def integrate(scheme, body, G0, Q0=None, h=None, steps=None, scalar: str = "doub
     if not isinstance(scheme, Scheme):
         scheme = _rotlie.scheme(os.fspath(scheme), text, bool(force))
     G, Q, single = _rows(G0, Q0)
-    G1, Q1 = _rotlie.integrate(scheme, text, G, Q, number_text(h, "--h"), operator.index(steps), str(scalar), bool(force))
+    G1, Q1 = _rotlie.integrate(scheme, text, G, Q, number_text(h, "--h"), index_argument(steps, "steps"), str(scalar), bool(force))
     return _unrows(single, G1, Q1)
 
 
@@ -155,7 +155,7 @@ def order(scheme, body, G0=(1, 1, 1), T=1, min_level: int = 1, max_level: int = 
     if not isinstance(scheme, Scheme):
         scheme = _rotlie.scheme(os.fspath(scheme), text, bool(force))
     return json.loads(_rotlie.order(scheme, text, _vector_text(G0, "G0"), number_text(T, "--T"),
-                                    operator.index(min_level), operator.index(max_level), str(scalar), bool(force)))
+                                    index_argument(min_level, "min_level"), index_argument(max_level, "max_level"), str(scalar), bool(force)))
 
 
 from ._remainder import Remainder, remainder  # noqa: E402

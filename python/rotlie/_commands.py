@@ -2,9 +2,9 @@
 from __future__ import annotations
 
 import json
-import operator
 from fractions import Fraction
 
+from ._arguments import index_argument
 from . import _rotlie
 from ._bodies import body_text, number_text
 
@@ -19,7 +19,7 @@ def best(body, analytic_only: bool = False) -> dict:
 def bch(series: str, degree: int) -> list[tuple[str, Fraction]]:
     """A BCH-type series in the free Lie algebra (XY, XYX, SYM, XYZ) to ``degree``, as ``rotlie bch``:
     every Lyndon word of the basis with its exact coefficient."""
-    r = json.loads(_rotlie.bch(str(series), operator.index(degree)))
+    r = json.loads(_rotlie.bch(str(series), index_argument(degree, "degree")))
     return [(t["word"], Fraction(t["coefficient"])) for t in r["terms"]]
 
 
@@ -37,7 +37,7 @@ def map_line(family: str, s, t, grid: int, exact: bool = False) -> dict:
     solver for that body alone when ``exact`` (``rotlie map --exact``). For P at grid 200 and finer
     (the screened path) it is the line of the row before the map's neighbour check, which replaces a
     line by the exact solver's where a neighbour's best beats it: ``exact=True`` gives the exact line."""
-    grid = operator.index(grid)
+    grid = index_argument(grid, "grid")
     if grid < 2:
         raise ValueError(f"--grid must be at least 2, got {grid}")
     return json.loads(_rotlie.map_line(str(family), _grid_index(s, grid, "s"), _grid_index(t, grid, "t"), grid,

@@ -2,10 +2,10 @@
 from __future__ import annotations
 
 import json
-import operator
 import os
 from fractions import Fraction
 
+from ._arguments import index_argument
 from . import _rotlie
 from ._bodies import body_text, number_text
 
@@ -73,6 +73,6 @@ def remainder(scheme_or_word, order: int = 5, body=None, perm: str | None = None
     else:
         word = os.fspath(scheme_or_word)
     items = [(str(k), number_text(v, f"--coeffs {k}")) for k, v in coefficient_items.items()]
-    json_text, latex = _rotlie.remainder(word, operator.index(order), "" if body is None else body_text(body),
+    json_text, latex = _rotlie.remainder(word, index_argument(order, "order"), "" if body is None else body_text(body),
                                          "ABC" if perm is None else str(perm), "" if split is None else str(split), items)
     return Remainder(json_text, latex)

@@ -6,7 +6,10 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -55,7 +58,29 @@ T number_in(const std::string& text) {
   return models::parse_scalar<T>(text.substr(0, slash)) / models::parse_scalar<T>(text.substr(slash + 1));
 }
 
-/// The states of N bodies: G0 of shape (N, 3), Q0 of shape (N, 3, 3), both finite.
+/// How far an attitude may be from a rotation: float64 entries written out to about 10 digits.
+constexpr double max_rotation_defect = 1e-9;
+
+std::string short_text(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+
+/// max |QᵀQ − I| of a row-major 3×3 matrix, or +∞ when det Q < 0 (a reflection).
+double rotation_defect(const double* q) {
+  double worst = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      double d = i == j ? -1.0 : 0.0;
+      for (int k = 0; k < 3; ++k) d += q[3 * k + i] * q[3 * k + j];
+      worst = std::max(worst, std::abs(d));
+    }
+  const double det = q[0] * (q[4] * q[8] - q[5] * q[7]) - q[1] * (q[3] * q[8] - q[5] * q[6]) + q[2] * (q[3] * q[7] - q[4] * q[6]);
+  return det > 0 ? worst : std::numeric_limits<double>::infinity();
+}
+
+/// The states of N bodies: G0 of shape (N, 3), Q0 of shape (N, 3, 3) a rotation each, both finite.
 struct state_rows {
   const double* G = nullptr;
   const double* Q = nullptr;
@@ -74,11 +99,18 @@ state_rows checked_rows(const rows& G0, const rows& Q0) {
     const double* g = r.G + 3 * row;
     const double length = std::hypot(g[0], g[1], g[2]);
     if (length != 0 && !(length >= max_momentum_inverse && length <= max_momentum))
-      throw runs::bad_input("G0: |G0| = " + std::to_string(length) + " (row " + std::to_string(row) +
+      throw runs::bad_input("G0: |G0| = " + short_text(length) + " (row " + std::to_string(row) +
                             ") is outside the range 1e-150 … 1e150");
   }
   for (py::ssize_t i = 0; i < 9 * r.n; ++i)
     if (!std::isfinite(r.Q[i])) throw runs::bad_input("Q0 must be finite");
+  for (py::ssize_t row = 0; row < r.n; ++row) {
+    const double off = rotation_defect(r.Q + 9 * row);
+    if (!(off <= max_rotation_defect))
+      throw runs::bad_input("Q0 (row " + std::to_string(row) + ") is not a rotation: max |QᵀQ − I| = " + short_text(off) +
+                            (off <= max_rotation_defect ? "" : " > " + short_text(max_rotation_defect)) +
+                            " or det Q < 0 (orthonormalise it, e.g. by its polar decomposition)");
+  }
   return r;
 }
 

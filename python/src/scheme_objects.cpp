@@ -19,6 +19,7 @@
 #include "rotlie/runs/family_names.hpp"
 #include "rotlie/runs/output_file.hpp"
 #include "rotlie/runs/scheme_names.hpp"
+#include "rotlie/runs/text_file.hpp"
 #include "rotlie/runs/two_parameter_solve.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
@@ -45,12 +46,11 @@ std::string read_table_file(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::exists(path, ec)) throw runs::bad_input("no scheme-table file '" + path + "'");
-  if (!fs::is_regular_file(path, ec)) throw runs::bad_input("'" + path + "' is not a regular file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw runs::bad_input("cannot read '" + path + "': " + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  try {
+    return runs::read_bounded_file(path, runs::max_table_bytes);  // the CLI's reader and bound
+  } catch (const std::runtime_error& e) {
+    throw runs::bad_input(e.what());
+  }
 }
 
 scheme_object load_table(const std::string& path) {

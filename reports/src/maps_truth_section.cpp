@@ -14,6 +14,7 @@
 #include "rotlie/reports/triangle_contour.hpp"
 #include "rotlie/runs/maps_truth.hpp"
 #include "rotlie/runs/maps_truth_csv.hpp"
+#include "rotlie/runs/text_file.hpp"
 #include "rotlie/solver/body_grid.hpp"
 
 namespace rotlie::reports {
@@ -213,6 +214,8 @@ std::string flips_table(const std::vector<truth_row>& rows) {
 
 }  // namespace
 
+constexpr std::size_t largest_csv_bytes = std::size_t(1) << 28;  // the full study's CSV is a few MB
+
 report_section maps_truth_section(const report_options& options) {
   report_section sec;
   sec.title = "Do the maps tell the truth?";
@@ -223,10 +226,7 @@ report_section maps_truth_section(const report_options& options) {
   double cpu_seconds = 0;
   std::string provenance;
   if (!given.empty() && std::filesystem::exists(given)) {
-    std::ifstream in(given);
-    std::stringstream s;
-    s << in.rdbuf();
-    csv = s.str();
+    csv = runs::read_bounded_file(given, largest_csv_bytes);  // the one bounded reader: no FIFO waited on
     provenance = "read from the given measured-ratios.csv (`bench/maps_truth_study`)";
   } else {
     const auto bodies = truth_bodies(K);

@@ -1,9 +1,10 @@
 #include "rotlie/reports/report_csv_reader.hpp"
 
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "rotlie/reports/output_file.hpp"
+#include "rotlie/runs/text_file.hpp"
 
 namespace rotlie::reports {
 namespace {
@@ -50,11 +51,12 @@ std::optional<std::size_t> csv_table::column(const std::string& name) const {
   return std::nullopt;
 }
 
+constexpr std::size_t largest_csv_bytes = std::size_t(1) << 28;  // a report's CSVs are at most a few MB
+
 std::optional<csv_table> read_csv(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) return std::nullopt;
-  std::ifstream in(file);
-  if (!in) return std::nullopt;
+  std::istringstream in(runs::read_bounded_file(file, largest_csv_bytes));
   csv_table t;
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error(printable_path(file) + ": no header line");

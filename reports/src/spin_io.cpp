@@ -1,6 +1,13 @@
 #include "rotlie/reports/spin_io.hpp"
 
+#include <cmath>
+
 namespace rotlie::reports {
+namespace {
+
+nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+
+}  // namespace
 
 nlohmann::json spin_json(const runs::spin_result& r) {
   const auto& s = r.setup;
@@ -21,7 +28,15 @@ nlohmann::json spin_json(const runs::spin_result& r) {
           {"theta", r.theta},
           {"energy_start", r.energy_start},
           {"energy_end", r.energy_end},
-          {"cpu_s", r.cpu_s}};
+          {"cpu_s", r.cpu_s},
+          {"conserved",
+           {{"quantity", r.check.quantity},
+            {"start", r.check.start},
+            {"max_change", finite_or_null(r.check.max_change)},
+            {"potential_fluctuation", r.check.potential_fluctuation},
+            {"change_percent", finite_or_null(r.check.change_percent)}}},
+          {"unstable", r.check.unstable},
+          {"round_off_floor", r.check.round_off_floor}};
 }
 
 }  // namespace rotlie::reports

@@ -1,6 +1,7 @@
 #include "rotlie/runs/map_file.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cln/integer.h>
@@ -109,6 +110,8 @@ std::filesystem::path map_file_path(const std::filesystem::path& folder, const s
 
 namespace {
 
+constexpr std::size_t largest_map_bytes = std::size_t(1) << 31;  // a map at --grid 200 is 43 MB
+
 map_file_text lines_of(const std::string& text) {
   map_file_text out;
   for (std::size_t at = 0;;) {
@@ -125,11 +128,7 @@ map_file_text lines_of(const std::string& text) {
 }  // namespace
 
 map_file_text read_map_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read the map file " + printable_path(path));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return lines_of(buffer.str());
+  return lines_of(read_bounded_file(path, largest_map_bytes));  // a FIFO or device is refused, not waited on
 }
 
 std::optional<map_contents> read_map_contents(const std::filesystem::path& path) {
@@ -171,13 +170,17 @@ resumed_map resume_map_file(const std::filesystem::path& path, const std::string
   resumed_map out;
   out.done.assign(bodies.size(), 0);
   map_file_text text;
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))  // as the writer says it when the map is not resumed: a failed run
+    throw std::runtime_error("cannot open " + printable_path(path) + ": " + std::strerror(EISDIR));
   try {
     text = read_map_file(path);
-  } catch (const std::runtime_error&) {
-    throw bad_input("--resume: cannot read '" + path.string() + "'");
+  } catch (const std::runtime_error& e) {
+    throw bad_input(std::string("--resume: ") + e.what());
   }
   out.whole_length = text.whole_length;
   const std::string refusal = "--resume: " + printable_path(path) + " ";
+  bool claims_check = false;
   // A line is appended by one write of printable JSON: a kill can leave only a prefix of one. Other
   // bytes after the last whole line (binary data, another program's text) are not ours to drop.
   const auto& tail = text.torn_tail;
@@ -208,6 +211,14 @@ resumed_map resume_map_file(const std::filesystem::path& path, const std::string
         throw bad_input(refusal + "was computed with " + flag(made_by) + " (" + one_line(made_by) + "), not " + flag(method) + " (" +
                         method + "); it is left as it is");
       }
+      // the rest of the header must describe this map too: a resume keeps the header as it is
+      if (j.contains("bodies") && !(j["bodies"].is_number_unsigned() && j["bodies"].get<unsigned long long>() == bodies.size()))
+        throw bad_input(refusal + "says its map has " + one_line(j["bodies"].dump()) + " bodies, where family " + family + " at --grid " +
+                        std::to_string(K) + " has " + std::to_string(bodies.size()) + "; it is left as it is");
+      if (j.contains("reference") && !(j["reference"].is_string() && j["reference"].get<std::string>() == solver::map_reference_scheme))
+        throw bad_input(refusal + "names the reference scheme " + one_line(j["reference"].dump()) + ", not " +
+                        solver::map_reference_scheme + "; it is left as it is");
+      claims_check = j.contains("neighbour_check");
       out.has_header = true;
       continue;
     }
@@ -223,6 +234,9 @@ resumed_map resume_map_file(const std::filesystem::path& path, const std::string
     out.done[found->second] = 1;
     out.lines.push_back(text.lines[n]);
   }
+  if (claims_check && out.lines.size() < bodies.size())
+    throw bad_input(refusal + "records a neighbour check in its header, but " + std::to_string(bodies.size() - out.lines.size()) + " of " +
+                    std::to_string(bodies.size()) + " bodies are missing (the check runs on a whole map only); it is left as it is");
   return out;
 }
 
@@ -242,8 +256,16 @@ void write_all(int fd, const std::string& text, const std::filesystem::path& pat
 
 map_file_writer::map_file_writer(const std::filesystem::path& path, const resumed_map& existing, const std::string& header)
     : path_(path) {
-  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  // O_NONBLOCK: a FIFO under the map's name must be refused, not waited on (a link to a regular file is written through)
+  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | O_NONBLOCK, 0644);
   if (fd_ < 0) throw std::runtime_error("cannot open " + printable_path(path) + ": " + std::strerror(errno));
+  struct stat st {};
+  if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd_);
+    fd_ = -1;
+    throw std::runtime_error("cannot write " + printable_path(path) + ": it is not a regular file; rotlie writes regular files only");
+  }
+  ::fcntl(fd_, F_SETFL, O_WRONLY | O_APPEND);  // blocking writes again
   if (::ftruncate(fd_, static_cast<off_t>(existing.has_header ? existing.whole_length : 0)) != 0)
     throw std::runtime_error("cannot truncate " + printable_path(path) + ": " + std::strerror(errno));
   if (!existing.has_header) write_all(fd_, header + "\n", path_);

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <array>
@@ -112,6 +113,31 @@ void write_named(int dirfd, const std::string& temporary, std::string_view conte
   }
 }
 
+// What a non-regular file is, for the refusal.
+const char* kind_of(mode_t mode) {
+  if (S_ISDIR(mode)) return "a folder";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+[[noreturn]] void refuse_kind(const std::filesystem::path& path, mode_t mode) {
+  throw std::runtime_error("cannot write " + printable_path(path) + ": it is " + kind_of(mode) +
+                           "; rotlie writes regular files only (and never replaces anything else)");
+}
+
+// The name `name` in `dirfd` may be replaced: absent, or a regular file (not a link, FIFO, device).
+void check_replaceable(int dirfd, const std::string& name, const std::filesystem::path& path) {
+  struct stat st {};
+  if (::fstatat(dirfd, name.c_str(), &st, AT_SYMLINK_NOFOLLOW) != 0) {
+    if (errno == ENOENT) return;
+    fail(path, errno);
+  }
+  if (S_ISLNK(st.st_mode)) throw std::runtime_error("cannot write " + printable_path(path) + ": it became a symbolic link while rotlie wrote it");
+  if (!S_ISREG(st.st_mode)) refuse_kind(path, st.st_mode);
+}
+
 bool valid_utf8_at(const std::string& s, std::size_t i, std::size_t& length) {
   const auto c = static_cast<unsigned char>(s[i]);
   length = c >= 0xf0 && c <= 0xf4 ? 4 : c >= 0xe0 ? 3 : c >= 0xc2 && c <= 0xdf ? 2 : 0;
@@ -124,7 +150,29 @@ bool valid_utf8_at(const std::string& s, std::size_t i, std::size_t& length) {
 
 }  // namespace
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+std::filesystem::path writable_target(const std::filesystem::path& path) {
+  std::filesystem::path target = path;
+  for (int links = 0;; ++links) {
+    struct stat st {};
+    if (::lstat(target.c_str(), &st) != 0) {
+      if (errno != ENOENT) fail(path, errno);
+      if (links > 0)
+        throw std::runtime_error("cannot write " + printable_path(path) + ": it is a symbolic link to " + printable_path(target) +
+                                 ", which does not exist (rotlie writes through a link only to an existing regular file)");
+      return target;
+    }
+    if (S_ISREG(st.st_mode)) return target;
+    if (!S_ISLNK(st.st_mode)) refuse_kind(path, st.st_mode);
+    if (links == 40) fail(path, ELOOP);
+    std::error_code ec;
+    const auto next = std::filesystem::read_symlink(target, ec);
+    if (ec) fail(path, ec.value());
+    target = next.is_absolute() ? next : target.parent_path() / next;
+  }
+}
+
+void write_file_atomically(const std::filesystem::path& typed, std::string_view content) {
+  const auto path = writable_target(typed);
   const auto parent = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
   const std::string name = path.filename().string();
   if (name.empty() || name == "." || name == "..") fail(path, EISDIR);
@@ -133,7 +181,14 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
 
   const std::string temporary = next_temporary_name();
   pending_guard guard(dir.get(), temporary);
+  check_replaceable(dir.get(), name, path);
   if (!write_unnamed(dir.get(), temporary, content, path)) write_named(dir.get(), temporary, content, path);
+  try {
+    check_replaceable(dir.get(), name, path);  // again: it may have been replaced while the content was written
+  } catch (...) {
+    ::unlinkat(dir.get(), temporary.c_str(), 0);
+    throw;
+  }
   if (::renameat(dir.get(), temporary.c_str(), dir.get(), name.c_str()) != 0) {
     const int e = errno;
     ::unlinkat(dir.get(), temporary.c_str(), 0);

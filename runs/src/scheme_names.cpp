@@ -14,6 +14,7 @@
 #include "rotlie/schemes/same_body.hpp"
 #include "rotlie/solver/dedicated_schemes.hpp"
 #include "rotlie/solver/scheme_table.hpp"
+#include "rotlie/runs/text_file.hpp"
 #include "rotlie/runs/user_input.hpp"
 
 namespace rotlie::runs {
@@ -21,7 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::uintmax_t max_table_bytes = 1 << 20;  // the largest solver table is a few kB
 
 std::string body_text(const lie::moments_of_inertia& m) {
   return "(" + shown(m.I[0]) + ", " + shown(m.I[1]) + ", " + shown(m.I[2]) + ")";
@@ -61,12 +61,12 @@ std::string table_file_text(const std::string& name) {
   const auto size = fs::file_size(name, ec);
   if (!ec && size > max_table_bytes)
     throw bad_input("--scheme: '" + name + "' is " + std::to_string(size) + " bytes, too large for a scheme table");
-  std::ifstream in(name, std::ios::binary);
-  if (!in) throw bad_input("--scheme: cannot read '" + name + "': " + std::strerror(errno));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  std::string text = buffer.str();
-  if (in.bad()) throw bad_input("--scheme: cannot read '" + name + "'");
+  std::string text;
+  try {
+    text = read_bounded_file(name, max_table_bytes);  // the one bounded reader (it grew since the check: refused)
+  } catch (const std::runtime_error& e) {
+    throw bad_input(std::string("--scheme: ") + e.what());
+  }
   if (text.empty()) throw bad_input("--scheme: '" + name + "' is empty, not a scheme table");
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // a byte-order mark from some editors
   for (const char c : text) {

@@ -6,13 +6,14 @@
 #include <algorithm>
 #include <cmath>
 #include <ctime>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
 
 #include "rotlie/runs/exclusive_use.hpp"
+#include "rotlie/runs/output_file.hpp"
+#include "rotlie/runs/text_file.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/solver/sixth_order_search.hpp"
 
@@ -38,14 +39,10 @@ std::string problem_of(const sixth_search_request& q) {
 
 // The state written whole or not at all, through a temporary of this process's own.
 void save_state(const fs::path& file, const std::string& problem, const std::vector<solver::scanned_system>& done) {
-  const fs::path temporary = file.string() + ".part-" + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary);
-    out << "problem " << problem << "\n";
-    solver::write_scan_state(out, done);
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
-  }
-  fs::rename(temporary, file);
+  std::ostringstream out;
+  out << "problem " << problem << "\n";
+  solver::write_scan_state(out, done);
+  write_file_atomically(file, out.str());
 }
 
 constexpr std::uintmax_t largest_state_bytes = 256u << 20;  // far above any scan's state; /dev/zero is refused
@@ -72,7 +69,12 @@ std::vector<solver::scanned_system> resumed_state(const fs::path& state, const s
   const std::string where = "--out: " + one_line(state.string());
   if (!fs::is_regular_file(state)) throw bad_input(where + " is not a regular file");
   if (fs::file_size(state) > largest_state_bytes) throw bad_input(where + " is larger than any scan state (remove it to start again)");
-  std::ifstream in(state);
+  std::istringstream in;
+  try {
+    in.str(read_bounded_file(state, largest_state_bytes));
+  } catch (const std::runtime_error& e) {
+    throw bad_input(std::string("--out: ") + e.what());
+  }
   std::string first;
   std::getline(in, first);
   if (first.rfind("problem ", 0) != 0)
@@ -127,10 +129,8 @@ sixth_order_table polished_table(const solver::ranked_root& r, const sixth_searc
   t.name = "D6:" + r.word + ":" + r.permutation + ":" + std::to_string(label);
   if (!q.out.empty()) {
     t.file = (q.out / ("D6-" + r.word + "-" + r.permutation + "-" + std::to_string(label) + ".table")).string();
-    std::ofstream out(t.file);
-    out << solver::sixth_order_table_text(system, x, q.digits, q.body, t.name,
-                                          "rotlie sixth: H_R3 = H_R5 = 0 solved by Newton from random starts, polished");
-    if (!out) throw std::runtime_error("cannot write " + t.file);
+    write_file_atomically(t.file, solver::sixth_order_table_text(system, x, q.digits, q.body, t.name,
+                                                                 "rotlie sixth: H_R3 = H_R5 = 0 solved by Newton from random starts, polished"));
   }
   return t;
 }

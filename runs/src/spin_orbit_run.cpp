@@ -2,11 +2,16 @@
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/multiprecision/float128.hpp>
+#include <cln/integer.h>
+#include <cln/rational.h>
 #include <cln/real.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
+#include <iomanip>
+#include <sstream>
 
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/runs/body_names.hpp"
@@ -21,6 +26,133 @@ namespace {
 using quad = boost::multiprecision::float128;
 
 constexpr double max_steps = 2e9;  // T/h: about an hour of SIER2 in double
+constexpr double whole_steps_slack = 1e-9;  // T/h of decimals typed from a float (0.333333333333)
+// An embedded pair's error estimate is a difference of two results, each rounded to a few ε of the
+// state (of size 1 here): a tolerance below 5 ε cannot be met; 1e-18 in long double (9 ε) serves the
+// references of the report and the benches.
+constexpr double tolerance_floor_eps = 5;
+constexpr double unstable_percent = 100;    // the conserved quantity moves as much as the potential does
+constexpr double round_off_turn_eps = 1000;  // a step that turns the body by less is lost in round-off
+constexpr double round_off_per_step = 10;    // what a step's roundings can add to a sum, in ε
+
+std::string short_text(double x) {
+  std::ostringstream s;
+  s << std::setprecision(6) << x;
+  return s.str();
+}
+
+template <class T>
+double epsilon_of() {
+  return static_cast<double>(std::numeric_limits<T>::epsilon());
+}
+
+double epsilon_of_scalar(const std::string& scalar) {
+  if (scalar == "long-double") return epsilon_of<long double>();
+  if (scalar == "float128") return epsilon_of<boost::multiprecision::float128>();
+  return epsilon_of<double>();
+}
+
+// T/h as a whole number of steps, or a refusal naming the two nearest runs that are.
+long whole_steps(const std::string& h_text, const std::string& T_text, double h, double T) {
+  const auto exact_h = lie::parse_exact_number(h_text), exact_T = lie::parse_exact_number(T_text);
+  double steps = std::round(T / h);
+  bool whole = false;
+  if (exact_h && exact_T) {
+    const cln::cl_RA q = *exact_T / *exact_h;
+    whole = cln::denominator(q) == 1;
+  }
+  whole = whole || (steps >= 1 && std::abs(T / h - steps) <= whole_steps_slack * steps);
+  if (steps > max_steps || T / h > max_steps) throw bad_input("--T/--h is over the limit of 2e9 steps");
+  if (!whole || steps < 1) {
+    const double below = std::floor(T / h), above = std::ceil(T / h);
+    std::string choices = below >= 1 ? "--T " + short_text(below * h) + " or " : std::string();
+    choices += "--T " + short_text(above * h);
+    throw bad_input("--T " + one_line(T_text) + " is not a whole number of steps --h " + one_line(h_text) + " (T/h = " + short_text(T / h) +
+                    "): take " + choices + ", or a step that divides T");
+  }
+  return static_cast<long>(steps);
+}
+
+// The conserved quantity of spin_check, sampled after each step (see spin_orbit_run.hpp).
+template <class T>
+class conservation_watch {
+ public:
+  conservation_watch(const models::spin_orbit_tide<T>& tide, const models::body_state<T>& start, const T& h)
+      : tide_(tide), jacobi_(tide.orbit().eccentricity() == 0), h_(h) {
+    rate_ = jacobi_ ? T(0) : tide_.anisotropic_potential_rate(start.Q, T(0));
+    start_ = value(start, T(0));
+    low_ = high_ = static_cast<double>(tide_.anisotropic_potential(start.Q, T(0)));
+    size_ = magnitude(start, T(0));
+  }
+
+  void operator()(long, const T& t, const models::body_state<T>& s) {
+    if (!jacobi_) {  // p_t by the trapezoidal rule over the step
+      const T rate = tide_.anisotropic_potential_rate(s.Q, t);
+      p_t_ -= h_ / 2 * (rate_ + rate);
+      rate_ = rate;
+    }
+    const double change = static_cast<double>(abs_of(value(s, t) - start_));
+    if (!(change <= max_change_)) max_change_ = change;  // a NaN stays
+    const double v = static_cast<double>(tide_.anisotropic_potential(s.Q, t));
+    low_ = std::min(low_, v), high_ = std::max(high_, v);
+    size_ = std::max(size_, magnitude(s, t));
+  }
+
+  const char* quantity() const { return jacobi_ ? "jacobi" : "extended_hamiltonian"; }
+  double start() const { return static_cast<double>(start_); }
+  double max_change() const { return max_change_; }
+  double fluctuation() const { return high_ - low_; }
+  double size() const { return size_; }
+
+ private:
+  static T abs_of(const T& x) { return x < 0 ? T(-x) : x; }
+
+  T value(const models::body_state<T>& s, const T& t) const {
+    const T kinetic = models::kinetic_energy(tide_.moments(), s.G);
+    const T V = tide_.anisotropic_potential(s.Q, t);
+    if (jacobi_) return kinetic + V - (s.Q * s.G)[2];
+    return kinetic + V + p_t_;
+  }
+
+  // the terms' sizes: what round-off acts on
+  double magnitude(const models::body_state<T>& s, const T& t) const {
+    const T kinetic = models::kinetic_energy(tide_.moments(), s.G);
+    const T V = tide_.anisotropic_potential(s.Q, t);
+    T m = abs_of(kinetic) + abs_of(V) + (jacobi_ ? abs_of((s.Q * s.G)[2]) : abs_of(p_t_));
+    return static_cast<double>(m);
+  }
+
+  const models::spin_orbit_tide<T>& tide_;
+  bool jacobi_;
+  T h_, rate_{}, p_t_{}, start_{};
+  double max_change_ = 0, low_ = 0, high_ = 0, size_ = 0;
+};
+
+template <class T>
+spin_check judged(const conservation_watch<T>& w, const spin_setup& s, const models::vec3<T>& I, const models::body_state<T>& start) {
+  spin_check c;
+  c.quantity = w.quantity();
+  c.start = w.start();
+  c.max_change = w.max_change();
+  c.potential_fluctuation = w.fluctuation();
+  c.change_percent = c.potential_fluctuation > 0 ? 100 * c.max_change / c.potential_fluctuation : std::numeric_limits<double>::infinity();
+  const double eps = epsilon_of<T>();
+  const auto omega = models::angular_velocity(I, start.G);
+  const double turn = std::sqrt(static_cast<double>(omega[0] * omega[0] + omega[1] * omega[1] + omega[2] * omega[2])) *
+                      2 * boost::math::constants::pi<double>() * s.h;
+  c.round_off_floor = turn < round_off_turn_eps * eps && turn > 0;
+  if (c.round_off_floor)
+    c.warnings.push_back("one step turns the body by " + short_text(turn / eps) +
+                         " ε only: the step's change is lost in round-off (take a larger step or a wider --scalar)");
+  const double reach = std::max(1000.0, round_off_per_step * static_cast<double>(s.steps)) * eps * w.size();
+  c.unstable = !c.round_off_floor && !(c.max_change <= reach) && !(c.change_percent < unstable_percent);
+  if (c.unstable)
+    c.warnings.push_back(std::string("the ") + (c.quantity == "jacobi" ? "Jacobi integral" : "extended-phase-space Hamiltonian") +
+                         " changed by " + short_text(c.max_change) + ", " + short_text(c.change_percent) +
+                         " % of the potential's own fluctuation (" + short_text(c.potential_fluctuation) +
+                         "): the step is beyond the integrator's stable or accurate range; the result cannot be trusted");
+  return c;
+}
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -60,6 +192,9 @@ spin_method splitting_named(const std::string& name, const spin_body& body) {
       if (why.rfind("--scheme: ", 0) == 0) why = why.substr(10);
       throw bad_input("--integrator " + one_line(name) + ": " + why);
     }
+    if (m.rotor->splitting == schemes::split::tv)  // what md refuses too (free_rigid_body::check), before the run
+      throw bad_input("--integrator " + one_line(name) + ": " + one_line(m.splitting.rotor_table) +
+                      " splits free flight and kick (TV): the free rotation needs an ABC or RS table");
   }
   return m;
 }
@@ -70,15 +205,17 @@ spin_result run_in(const spin_setup& s) {
   const T e = T(s.e);
   const auto start = models::spin_orbit_start<T>(I, T(s.theta0), T(s.omega0), T(s.obliquity));
   const T h = boost::math::constants::two_pi<T>() * T(s.T) / T(s.steps);
-  const auto out = step_spin_orbit<T>(s.method, I, e, start, h, s.steps);
+  const models::spin_orbit_tide<T> tide(I, e);
+  conservation_watch<T> watch(tide, start, h);
+  const auto out = step_spin_orbit<T>(s.method, I, e, start, h, s.steps, watch);
   spin_result r;
   r.setup = s;
-  const models::spin_orbit_tide<T> tide(I, e);
   const auto omega = models::angular_velocity(I, out.state.G);
   for (std::size_t i = 0; i < 9; ++i) r.Q.a[i] = static_cast<double>(out.state.Q.a[i]);
   for (std::size_t i = 0; i < 3; ++i) r.omega_body[i] = static_cast<double>(omega[i]);
   for (double x : r.Q.a)
     if (!std::isfinite(x)) throw std::runtime_error("the integration diverged (non-finite attitude): the step is beyond the integrator's stability limit");
+  r.check = judged(watch, s, I, start);
   r.theta = static_cast<double>(models::spin_angle(out.state));
   r.energy_start = static_cast<double>(models::spin_orbit_energy(tide, start, T(0)));
   r.energy_end = static_cast<double>(models::spin_orbit_energy(tide, out.state, out.t));
@@ -133,8 +270,10 @@ spin_method spin_method_named(const std::string& name, const spin_body& body) {
     if (rest.empty()) return m;
     if (rest[0] != ':') break;
     m.tolerance = positive_number(rest.substr(1), "--integrator " + one_line(name) + ": the tolerance");
-    if (m.tolerance > 1e-2 || m.tolerance < 1e-30)
-      throw bad_input("--integrator " + one_line(name) + ": the tolerance must be within 1e-30 … 1e-2");
+    const double floor = tolerance_floor_eps * epsilon_of<long double>();  // the widest scalar Odeint runs in
+    if (m.tolerance > 1e-2 || m.tolerance < floor)
+      throw bad_input("--integrator " + one_line(name) + ": the tolerance must be within " + short_text(floor) +
+                      " … 1e-2 (5 ε of long double; in double the floor is " + short_text(tolerance_floor_eps * epsilon_of<double>()) + ")");
     return m;
   }
   return splitting_named(name, body);
@@ -150,16 +289,18 @@ spin_setup spin_setup_of(const spin_request& r) {
   s.scalar = r.scalar;
   s.h = positive_number(r.h, "--h");
   s.T = positive_number(r.T, "--T");
-  const double steps = std::round(s.T / s.h);
-  if (steps < 1) throw bad_input("--T must be at least one step --h (T = " + one_line(r.T) + " orbits, h = " + one_line(r.h) + ")");
-  if (steps > max_steps) throw bad_input("--T/--h is over the limit of 2e9 steps");
-  s.steps = static_cast<long>(steps);
+  s.steps = whole_steps(r.h, r.T, s.h, s.T);
+  s.h = s.T / static_cast<double>(s.steps);  // the step used: h itself, or h to within 1e-9
   s.theta0 = finite_number(r.theta0, "--theta0");
   s.omega0 = finite_number(r.omega0, "--omega0");
   s.obliquity = finite_number(r.obliquity, "--obliquity");
   s.method = spin_method_named(r.integrator, s.body);
   if (s.method.adaptive && s.scalar == "float128")
     throw bad_input("--integrator " + one_line(r.integrator) + " runs in double or long double, not in float128");
+  const double floor = tolerance_floor_eps * epsilon_of_scalar(s.scalar);
+  if (s.method.adaptive && s.method.tolerance < floor)
+    throw bad_input("--integrator " + one_line(r.integrator) + ": the tolerance is below what " + s.scalar + " can reach (5 ε = " +
+                    short_text(floor) + "); take a larger one" + (s.scalar == "double" ? " or --scalar long-double" : ""));
   return s;
 }
 

@@ -1,11 +1,16 @@
 #include "rotlie/runs/text_file.hpp"
 
+#include <fcntl.h>
 #include <lzma.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <array>
-#include <fstream>
-#include <sstream>
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
+
+#include "rotlie/runs/output_file.hpp"
 
 namespace rotlie::runs {
 namespace {
@@ -45,13 +50,38 @@ std::string xz_decompressed(const std::string& in, std::size_t limit, const std:
 
 }  // namespace
 
+std::string read_bounded_file(const std::filesystem::path& path, std::size_t limit) {
+  const std::string name = printable_path(path);
+  // O_NONBLOCK: opening a FIFO must not wait for a writer; the kind is checked before any read.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error("cannot read " + name + ": " + std::strerror(errno));
+  struct closer {
+    int fd;
+    ~closer() { ::close(fd); }
+  } guard{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) throw std::runtime_error("cannot read " + name + ": " + std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) throw std::runtime_error("cannot read " + name + ": it is a folder");
+  if (!S_ISREG(st.st_mode)) throw std::runtime_error("cannot read " + name + ": it is not a regular file (a FIFO, device or socket)");
+  if (static_cast<std::uintmax_t>(st.st_size) > limit)
+    throw std::runtime_error("cannot read " + name + ": it is " + std::to_string(st.st_size) + " bytes, more than the " +
+                             std::to_string(limit) + " this file can hold");
+  std::string bytes(static_cast<std::size_t>(st.st_size), '\0');
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw std::runtime_error("cannot read " + name + ": " + std::strerror(errno));
+    if (n == 0) break;  // it shrank while being read: what is there
+    done += static_cast<std::size_t>(n);
+  }
+  bytes.resize(done);
+  return bytes;
+}
+
 std::string read_text_file(const std::filesystem::path& path, std::size_t limit) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path.string());
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  std::string bytes = buffer.str();
-  return is_xz(bytes) ? xz_decompressed(bytes, limit, path.string()) : bytes;
+  const std::string bytes = read_bounded_file(path, limit);
+  return is_xz(bytes) ? xz_decompressed(bytes, limit, printable_path(path)) : bytes;
 }
 
 }  // namespace rotlie::runs

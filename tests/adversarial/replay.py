@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """Replays the adversarial campaign against the rotlie binary: extreme values, kills at random moments,
-two concurrent runs on one folder, and truncated, garbage or foreign state files.
+two concurrent runs on one folder, and truncated, garbage or foreign state files; then the surfaces built
+after it: `spin` (steps, untrusted runs, tolerances), every writer and reader against links, FIFOs and
+devices, the Python package (its calls and its files) and, where it was built, lmp_rotlie.
 
 Each command is judged against what a user must get:
   refused  exit 2 and exactly one line on stderr ("rotlie: error: ..."), and a saved state left unchanged;
@@ -11,7 +13,9 @@ unexpected status, and SILENT when it exits 0 where it had to refuse or fail, pr
 leaves a saved state changed or half written. The summary line gives the counts; the exit status is 1 when
 any command failed or was silent.
 
-Usage: replay.py --binary build/release/bin/rotlie [--seed N] [--quick] [--verbose]
+Usage: replay.py --binary build/release/bin/rotlie [--seed N] [--quick] [--verbose] [--classes LIST]
+The Python class imports the package built beside the binary (build/release/python) under /usr/bin/python3;
+the LAMMPS class runs build/release/bin/lmp_rotlie; each is skipped, and says so, when absent.
 """
 import argparse
 import hashlib
@@ -125,6 +129,18 @@ class Replay:
             self.record(cls, what, f"exit {r['rc']} where it had to be {outcome}: {r['err'].strip()[:200]!r}")
         return r
 
+    def expect_flagged(self, cls, args, flagged_in):
+        """A run that blew up or cannot be trusted: exit 1 in one line, or exit 0 with a flag in its JSON
+        (flagged_in(json) true) and a warning on stderr; never a number shown as a plain result."""
+        r = self.run(args, timeout=120)
+        what = " ".join(args)
+        if r["rc"] == 0:
+            flagged = flagged_in(json.loads(r["out"]))
+            self.record(cls, what, None if flagged and r["err"].strip().startswith("rotlie: warning: ")
+                        else "a blown-up run reported without a flag or warning", silent=not flagged)
+        else:
+            self.record(cls, what, self.error_problem(r, 1))
+
     # -- files -----------------------------------------------------------------------------------
     @staticmethod
     def digest(path):
@@ -218,17 +234,7 @@ def extreme_values(R, quick):
         ["md", "--scene", "free-water", "--integrator", "SIER4", "--h", "1e-50", "--T", "1e-47", "--runs", "2", "--json"],
     ]
     for args in blown:
-        r = R.run(args, timeout=120)
-        what = " ".join(args)
-        if r["rc"] == 1:
-            R.record(cls, what, R.error_problem(r, 1))
-        elif r["rc"] == 0:
-            j = json.loads(r["out"])
-            flagged = j.get("unstable") or j.get("undefined_runs") or j.get("round_off_floor") or j.get("warnings")
-            R.record(cls, what, None if flagged and r["err"].strip() else "a blown-up run reported without a flag or warning",
-                     silent=not flagged)
-        else:
-            R.record(cls, what, R.error_problem(r, 1))
+        R.expect_flagged(cls, args, lambda j: j.get("unstable") or j.get("undefined_runs") or j.get("round_off_floor") or j.get("warnings"))
 
 
 # ------------------------------------------------------------------------------------------------
@@ -424,19 +430,176 @@ def state_files(R, quick):
         R.expect(cls, args[:-1] + [path], "refused", what=f"md --state {what}")
 
 
+# ------------------------------------------------------------------------------------------------
+# 5. spin: the step asked for or a refusal, untrusted runs flagged, tolerances within the scalar's reach.
+def spin_surface(R, quick):
+    cls = "spin"
+    base = ["spin", "--body", "Hyperion", "--e", "0.1"]
+    refused = [
+        [*base, "--integrator", "SIER2", "--h", "0.4", "--T", "1"],          # 2.5 steps
+        [*base, "--integrator", "SIER2", "--h", "2", "--T", "1"],            # half a step
+        [*base, "--integrator", "SIER2", "--h", "1/3", "--T", "1/2"],
+        [*base, "--integrator", "odeint-rkf78:1e-30", "--h", "1/100", "--T", "1"],  # 66 days an orbit
+        [*base, "--integrator", "odeint-rkf78:1e-16", "--h", "1/100", "--T", "1"],  # below 10 eps of double
+        [*base, "--integrator", "odeint-dopri5:1e-19", "--h", "1/100", "--T", "1", "--scalar", "long-double"],
+        [*base, "--integrator", "SIER4/Strang-TV", "--h", "1/100", "--T", "1"],     # a TV table as the rotor
+        [*base, "--integrator", "SIER2", "--h", "1e-12", "--T", "1e4"],             # beyond 2e9 steps
+    ]
+    for args in refused:
+        R.expect(cls, args, "refused", timeout=60)
+    # the JSON's h is the step taken
+    r = R.run([*base, "--integrator", "SIER2", "--h", "1/3", "--T", "1", "--json"])
+    j = json.loads(r["out"]) if r["rc"] == 0 else {}
+    R.record(cls, "spin --h 1/3 --T 1 reports the step it took",
+             None if j.get("steps") == 3 and abs(j.get("h", 0) - 1 / 3) < 1e-16 else f"status {r['rc']}, {j.get('h')}, {j.get('steps')}",
+             silent=r["rc"] == 0)
+    # runs whose answer cannot be trusted: exit 0 with "unstable" and one warning, never silently
+    blown = [
+        ["spin", "--body", "Hyperion", "--e", "0", "--integrator", "SIER2", "--h", "1", "--T", "50", "--json"],
+        ["spin", "--body", "Moon", "--e", "0.99", "--integrator", "SIER4", "--h", "1/1000", "--T", "1", "--json"],
+        ["spin", "--body", "Moon", "--e", "0.9", "--integrator", "MRDL", "--h", "1/20", "--T", "20", "--json"],
+        ["spin", "--body", "Hyperion", "--e", "0.5", "--integrator", "SIER4", "--h", "1/2", "--T", "40", "--json"],
+    ]
+    for args in blown:
+        R.expect_flagged(cls, args, lambda j: j.get("unstable"))
+    # accurate runs stay unflagged and quiet
+    for args in (["spin", "--body", "Mercury", "--e", "0.2056", "--omega0", "1.5", "--integrator", "SIER4", "--h", "1/500", "--T", "4", "--json"],
+                 ["spin", "--body", "Moon", "--e", "0.0549", "--integrator", "odeint-rkf78:1e-13", "--h", "1/50", "--T", "2", "--json"]):
+        r = R.run(args, timeout=120)
+        ok = r["rc"] == 0 and not json.loads(r["out"]).get("unstable") and not r["err"].strip()
+        R.record(cls, " ".join(args) + " (accurate: not flagged)", None if ok else f"status {r['rc']}: {r['err'][:200]!r}")
+
+
+# ------------------------------------------------------------------------------------------------
+# 6. Files: every writer refuses a FIFO, a device or a folder (and keeps it), writes through a link to a
+# regular file; every reader of a user's file refuses a FIFO at once (no hang) and a file too large.
+def files_surface(R, quick):
+    cls = "files"
+    d = R.folder("files")
+    fifo = d / "fifo"
+    os.mkfifo(fifo)
+    (d / "target.txt").write_text("old\n")
+    (d / "link.scheme").symlink_to("target.txt")
+    (d / "dangling").symlink_to("missing")
+    # readers: a FIFO must not be waited on
+    R.expect(cls, ["integrate", "--scheme", str(fifo), "--inertia", "water", "--h", "0.1"], "refused", timeout=20)
+    mapdir = R.folder("files-map")
+    os.mkfifo(mapdir / "map-N.jsonl")
+    R.expect(cls, ["map", "--family", "N", "--grid", "4", "--out", str(mapdir), "--resume"], "refused|failed", timeout=20,
+             what="map --resume on a FIFO named map-N.jsonl")
+    R.expect(cls, ["map", "--family", "N", "--grid", "4", "--out", str(mapdir)], "refused|failed", timeout=20,
+             what="map into a folder whose map-N.jsonl is a FIFO")
+    R.record(cls, "the map's FIFO is kept", None if (mapdir / "map-N.jsonl").is_fifo() else "replaced", silent=True)
+    big = d / "big.scheme"
+    big.write_bytes(b"#" * (1 << 20) + b"\n")
+    R.expect(cls, ["integrate", "--scheme", str(big), "--inertia", "water", "--h", "0.1"], "refused", timeout=20)
+    # resume headers that contradict the map
+    ref = R.folder("files-map-ref")
+    R.run(["map", "--family", "N", "--grid", "5", "--out", str(ref)])
+    lines = (ref / "map-N.jsonl").read_text().splitlines(keepends=True)
+    header = json.loads(lines[0])
+    for what, h in {"a body count of 7": {**header, "bodies": 7}, "another reference scheme": {**header, "reference": "ABCBA2"},
+                    "a neighbour check over half a map": {**header, "neighbour_check": {"probes": 1, "replaced": 0, "passes": 1}}}.items():
+        m = R.folder("files-map-header")
+        (m / "map-N.jsonl").write_text(json.dumps(h) + "\n" + "".join(lines[1:4]))
+        before = R.digest(m / "map-N.jsonl")
+        R.expect(cls, ["map", "--family", "N", "--grid", "5", "--out", str(m), "--resume"], "refused", what=f"map --resume with {what}")
+        if R.digest(m / "map-N.jsonl") != before:
+            R.record(cls, f"map header with {what} left unchanged", "changed", silent=True)
+    # writers: solve --out tables, md --state
+    out = R.folder("files-solve")
+    os.mkfifo(out / "N2_BAC_2.scheme")
+    R.expect(cls, ["solve", "--family", "N", "--scheme", "N2", "--perm", "BAC", "--inertia", "water", "--out", str(out)], "failed|refused",
+             timeout=120, what="solve --out over a FIFO")
+    R.record(cls, "solve's FIFO is kept", None if (out / "N2_BAC_2.scheme").is_fifo() else "replaced", silent=True)
+    R.expect(cls, ["md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "2", "--T", "0.02", "--runs", "1",
+                   "--molecules", "365", "--state", str(d / "dangling")], "refused", timeout=60, what="md --state on a link to nothing")
+    R.record(cls, "md's dangling link is kept", None if (d / "dangling").is_symlink() and not (d / "missing").exists() else "replaced",
+             silent=True)
+
+
+# ------------------------------------------------------------------------------------------------
+# 7. Python: bad calls raise one-line ValueError/TypeError, files keep the writer's rules, nothing crashes.
+PYTHON_CASES = r"""
+import json, os, sys, tempfile
+import numpy as np
+import rotlie
+W = rotlie.Body.named("water")
+cases = {
+    "save over a FIFO": lambda d: (os.mkfifo(d + "/f"), rotlie.scheme("ABCBA2").save(d + "/f")),
+    "save over /dev/null": lambda d: rotlie.scheme("ABCBA2").save("/dev/null"),
+    "save through a link to nothing": lambda d: (os.symlink("none", d + "/l"), rotlie.scheme("ABCBA2").save(d + "/l")),
+    "load_table of a FIFO": lambda d: (os.mkfifo(d + "/g"), rotlie.load_table(d + "/g")),
+    "load_table of 1 MB": lambda d: (open(d + "/big", "wb").write(b"#" * (1 << 20) + b"
+"), rotlie.load_table(d + "/big")),
+    "Q0 not a rotation": lambda d: rotlie.exact_flow(W, [1, 1, 1], 2 * np.eye(3), t=1),
+    "Q0 a reflection": lambda d: rotlie.integrate("ABCBA2", W, [1, 1, 1], np.diag([1.0, 1, -1]), h=0.1, steps=1),
+    "complex G0": lambda d: rotlie.exact_flow(W, [1 + 1j, 1, 1], t=1),
+    "steps 10**30": lambda d: rotlie.integrate("ABCBA2", W, [1, 1, 1], h=0.1, steps=10**30),
+    "digits 2**70": lambda d: rotlie.solve(W, digits=2**70),
+    "G0 1e-200": lambda d: rotlie.exact_flow(W, [1e-200, 0, 0], t=1),
+    "G0 1.7e150": lambda d: rotlie.exact_flow(W, [1.7e150, 0, 0], t=1),
+    "h = 0": lambda d: rotlie.integrate("ABCBA2", W, [1, 1, 1], h=0, steps=1),
+    "unknown scheme": lambda d: rotlie.scheme("Nope", W),
+    "symmetric top": lambda d: rotlie.best("1,1,2"),
+}
+out = {}
+for name, call in cases.items():
+    with tempfile.TemporaryDirectory() as d:
+        try:
+            call(d)
+            out[name] = ["returned", ""]
+        except (ValueError, TypeError, RuntimeError, OSError) as e:
+            out[name] = [type(e).__name__, str(e)]
+print(json.dumps(out))
+"""
+
+
+def python_surface(R, quick):
+    cls = "python"
+    package = pathlib.Path(R.binary).parent.parent / "python"
+    if not (package / "rotlie").is_dir():
+        print(f"python: skipped (no package at {package})")
+        return
+    env = {**os.environ, "PYTHONPATH": str(package), "PYTHONDONTWRITEBYTECODE": "1"}
+    R.commands += 1
+    try:
+        p = subprocess.run(["/usr/bin/python3", "-c", PYTHON_CASES], capture_output=True, text=True, timeout=300, env=env)
+    except subprocess.TimeoutExpired:
+        R.record(cls, "the Python cases", "hung (timeout)")
+        return
+    if p.returncode != 0:
+        R.record(cls, "the Python cases", f"the interpreter ended with {p.returncode}: {p.stderr[-300:]!r}")
+        return
+    for name, (kind, message) in json.loads(p.stdout).items():
+        if kind == "returned":
+            R.record(cls, name, "returned where it had to raise", silent=True)
+        elif "\n" in message.strip() or not message:
+            R.record(cls, name, f"{kind} not in one line: {message[:200]!r}")
+        else:
+            R.record(cls, name)
+
+
+# ------------------------------------------------------------------------------------------------
+# 8. LAMMPS (lmp_rotlie beside the binary): filled in with the rotor cases.
+def lammps_surface(R, quick):
+    pass
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--binary", required=True)
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--quick", action="store_true", help="fewer kill trials")
     parser.add_argument("--verbose", action="store_true")
-    parser.add_argument("--classes", default="extreme,kills,concurrent,state")
+    parser.add_argument("--classes", default="extreme,kills,concurrent,state,spin,files,python,lammps")
     a = parser.parse_args()
     binary = str(pathlib.Path(a.binary).resolve())
     with tempfile.TemporaryDirectory(prefix="rotlie-replay-") as work:
         R = Replay(binary, pathlib.Path(work), random.Random(a.seed), a.verbose)
         begin = time.monotonic()
-        steps = {"extreme": extreme_values, "kills": kills, "concurrent": concurrent, "state": state_files}
+        steps = {"extreme": extreme_values, "kills": kills, "concurrent": concurrent, "state": state_files,
+                 "spin": spin_surface, "files": files_surface, "python": python_surface, "lammps": lammps_surface}
         for name in a.classes.split(","):
             steps[name](R, a.quick)
         for cls, (n, failed, silent) in R.by_class.items():

@@ -82,4 +82,70 @@ BOOST_AUTO_TEST_CASE(bad_input_is_one_line_and_exit_two) {
   }
 }
 
+BOOST_AUTO_TEST_CASE(the_step_is_the_one_asked_for) {
+  // T not a whole number of steps: refused (before, --h 0.4 --T 1 ran three steps of 1/3 and said h = 0.4,
+  // and --h 2 --T 1 ran one step of a whole orbit)
+  for (const char* args : {"--h 0.4 --T 1", "--h 2 --T 1", "--h 3/7 --T 1"}) {
+    const auto r = run(std::string("spin --body Hyperion --e 0.1 --integrator SIER2 ") + args);
+    BOOST_TEST(r.status == 2, args << ": status " << r.status);
+    BOOST_TEST(r.err.find("is not a whole number of steps") != std::string::npos, args << ": " << r.err);
+    BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, args << ": " << r.err);
+  }
+  // a step that divides T exactly (as exact numbers), and one typed from a float
+  auto j = spin_json("--body Hyperion --e 0.1 --integrator SIER2 --h 1/3 --T 1");
+  BOOST_TEST(j["steps"].get<long>() == 3);
+  BOOST_TEST(j["h"].get<double>() == 1.0 / 3);
+  j = spin_json("--body Hyperion --e 0.1 --integrator SIER2 --h 0.1 --T 0.7");
+  BOOST_TEST(j["steps"].get<long>() == 7);
+  BOOST_TEST(std::abs(j["h"].get<double>() - 0.1) < 1e-16);
+  j = spin_json("--body Hyperion --e 0.1 --integrator SIER2 --h 0.333333333333 --T 1");
+  BOOST_TEST(j["steps"].get<long>() == 3);
+  BOOST_TEST(j["h"].get<double>() == 1.0 / 3);  // the step used
+}
+
+BOOST_AUTO_TEST_CASE(a_run_that_cannot_be_trusted_says_so) {
+  // Hyperion at e = 0, one step per orbit: the Jacobi integral (conserved at e = 0) jumps; and the Moon
+  // at e = 0.99 with 1000 steps an orbit, where RKF78 at 1e-12 and 1e-14 and SIER4 at h = 1e-6 give
+  // theta = 1.009 and this step gave -0.347 with no word
+  for (const char* args : {"--body Hyperion --e 0 --integrator SIER2 --h 1 --T 50", "--body Moon --e 0.99 --integrator SIER4 --h 1/1000 --T 1"}) {
+    const auto r = run(std::string("spin --json ") + args);
+    BOOST_TEST_REQUIRE(r.status == 0, args << ": " << r.err);
+    const auto j = nlohmann::json::parse(r.out);
+    BOOST_TEST(j["unstable"].get<bool>(), args);
+    BOOST_TEST(j["round_off_floor"].get<bool>() == false, args);
+    BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, args << ": " << r.err);
+    BOOST_TEST(r.err.rfind("rotlie: warning: ", 0) == 0u, args << ": " << r.err);
+  }
+  // accurate runs are not flagged, and their conserved quantity holds far below the potential's fluctuation
+  for (const char* args : {"--body Hyperion --e 0 --integrator SIER4 --h 1/200 --T 5", "--body Hyperion --e 0.1 --integrator SIER4 --h 1/1000 --T 2",
+                           "--body Mercury --e 0.2056 --omega0 1.5 --integrator odeint-rkf78:1e-12 --h 1/100 --T 2",
+                           "--body Moon --e 0.99 --integrator SIER4 --h 1/200000 --T 1"}) {
+    const auto r = run(std::string("spin --json ") + args);
+    BOOST_TEST_REQUIRE(r.status == 0, args << ": " << r.err);
+    const auto j = nlohmann::json::parse(r.out);
+    BOOST_TEST(!j["unstable"].get<bool>(), args);
+    BOOST_TEST(r.err.empty(), args << ": " << r.err);
+    BOOST_TEST(j["conserved"]["change_percent"].get<double>() < 1, args << ": " << j["conserved"].dump());
+  }
+}
+
+BOOST_AUTO_TEST_CASE(an_adaptive_tolerance_beyond_the_scalar_is_refused) {
+  // 1e-30 would take about 66 days an orbit in double; 5 ε is the floor (1.1e-15 double, 5.4e-19 long double)
+  for (const char* args : {"--integrator odeint-rkf78:1e-30", "--integrator odeint-rkf78:1e-16", "--integrator odeint-dopri5:1e-19 --scalar long-double"}) {
+    const auto r = run(std::string("spin --body Moon --e 0.0549 --h 1/100 --T 1 ") + args);
+    BOOST_TEST(r.status == 2, args << ": status " << r.status);
+    BOOST_TEST(r.err.find("tolerance") != std::string::npos, args << ": " << r.err);
+    BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, args << ": " << r.err);
+  }
+  // within reach of long double, not of double
+  BOOST_TEST(run("spin --body Moon --e 0.0549 --h 1/100 --T 1/10 --integrator odeint-rkf78:1e-16 --scalar long-double").status == 0);
+}
+
+BOOST_AUTO_TEST_CASE(a_tv_table_as_the_rotor_is_bad_input_as_in_md) {
+  const auto r = run("spin --body Hyperion --e 0.1 --integrator SIER4/Strang-TV --h 1/100 --T 1");
+  BOOST_TEST(r.status == 2, r.err);  // md exits 2 too
+  BOOST_TEST(r.err.find("TV") != std::string::npos, r.err);
+  BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, r.err);
+}
+
 BOOST_AUTO_TEST_SUITE_END()  // spin_cli_test

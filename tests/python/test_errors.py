@@ -111,3 +111,78 @@ def test_nothing_is_printed(capfd):
     rotlie.order("ABCBA2", WATER, max_level=4)
     out, _ = capfd.readouterr()
     assert out == ""
+
+
+def test_save_never_replaces_a_link_fifo_or_device(tmp_path):
+    """save() writes a regular file; a link is written through to its regular target; anything else is refused."""
+    import os
+    s = rotlie.scheme("ABCBA2")
+    target = tmp_path / "target.scheme"
+    target.write_text("old\n")
+    link = tmp_path / "link.scheme"
+    link.symlink_to("target.scheme")
+    s.save(link)
+    assert link.is_symlink() and rotlie.load_table(target).name == s.name
+    fifo = tmp_path / "fifo.scheme"
+    os.mkfifo(fifo)
+    with pytest.raises(RuntimeError, match="regular files only"):
+        s.save(fifo)
+    assert fifo.is_fifo()
+    with pytest.raises(RuntimeError, match="it is a device"):
+        s.save("/dev/null")
+    assert os.path.exists("/dev/null") and not os.path.isfile("/dev/null")
+    dangling = tmp_path / "dangling.scheme"
+    dangling.symlink_to("missing.scheme")
+    with pytest.raises(RuntimeError, match="does not exist"):
+        s.save(dangling)
+    assert dangling.is_symlink() and not (tmp_path / "missing.scheme").exists()
+
+
+def test_table_files_are_bounded_as_on_the_command_line(tmp_path):
+    big = tmp_path / "big.scheme"
+    big.write_bytes(b"#" * (1 << 20) + b"\n")
+    with pytest.raises(ValueError) as e:
+        rotlie.load_table(big)
+    assert "bytes" in str(e.value) and "\n" not in str(e.value)
+    import os
+    fifo = tmp_path / "fifo.scheme"
+    os.mkfifo(fifo)
+    with pytest.raises(ValueError, match="not a regular file"):
+        rotlie.load_table(fifo)  # returns: no writer is waited for
+
+
+def test_attitudes_must_be_rotations_and_arrays_real():
+    with pytest.raises(ValueError, match="not a rotation"):
+        rotlie.exact_flow(WATER, [1, 1, 1], 2 * np.eye(3), t=1)
+    with pytest.raises(ValueError, match="not a rotation"):
+        rotlie.integrate("ABCBA2", WATER, [1, 1, 1], np.diag([1.0, 1.0, -1.0]), h=0.1, steps=1)  # a reflection
+    with pytest.raises(TypeError, match="G0 must be real"):
+        rotlie.exact_flow(WATER, [1 + 1j, 1, 1], t=1)
+    with pytest.raises(TypeError, match="Q0 must be real"):
+        rotlie.exact_flow(WATER, [1, 1, 1], np.eye(3) * (1 + 0j), t=1)
+    with pytest.raises(TypeError, match="t must be real"):
+        rotlie.exact_flow(WATER, [1, 1, 1], t=1j)
+    # a rotation rounded to ten digits is still one
+    c, s = np.cos(0.3), np.sin(0.3)
+    rotlie.exact_flow(WATER, [1, 1, 1], np.round(np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]]), 10), t=1)
+
+
+def test_out_of_range_integers_are_one_line_errors():
+    for call in (lambda: rotlie.integrate("ABCBA2", WATER, [1, 1, 1], h=0.1, steps=10**30),
+                 lambda: rotlie.solve(WATER, digits=2**70),
+                 lambda: rotlie.bch("XY", 10**20)):
+        with pytest.raises(ValueError) as e:
+            call()
+        assert "\n" not in str(e.value) and "outside" in str(e.value)
+    with pytest.raises(TypeError, match="steps must be an integer"):
+        rotlie.integrate("ABCBA2", WATER, [1, 1, 1], h=0.1, steps=1.5)
+
+
+def test_messages_show_numbers_in_a_few_digits():
+    # |G0| = 1e-200 once read "|G0| = 0.000000", and 1.7e150 a 151-digit integer
+    for G in ([1e-200, 0, 0], [1.7e150, 0, 0]):
+        with pytest.raises(ValueError) as e:
+            rotlie.exact_flow(WATER, G, t=1)
+        message = str(e.value)
+        assert "0.000000" not in message and len(message) < 200, message
+        assert "1e-200" in message or "1.7e+150" in message, message

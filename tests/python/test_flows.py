@@ -14,9 +14,10 @@ def random_states(n, seed=7):
     rng = np.random.default_rng(seed)
     G = rng.normal(size=(n, 3))
     Q = np.empty((n, 3, 3))
-    for i in range(n):  # random attitudes: Q of a random matrix, signs fixed
+    for i in range(n):  # random attitudes: Q of a random matrix, signs fixed, a reflection turned into a rotation
         q, r = np.linalg.qr(rng.normal(size=(3, 3)))
-        Q[i] = q * np.sign(np.diag(r))
+        q = q * np.sign(np.diag(r))
+        Q[i] = q if np.linalg.det(q) > 0 else q * np.array([1, 1, -1])
     return G, Q
 
 

@@ -8,10 +8,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+
 #include <fstream>
 
 #include "folder_support.hpp"
 #include "rotlie/reports/output_file.hpp"
+#include "rotlie/runs/text_file.hpp"
 
 BOOST_AUTO_TEST_SUITE(output_file_test)
 
@@ -116,6 +120,68 @@ BOOST_AUTO_TEST_CASE(stale_temporaries_of_dead_writers_are_removed_live_ones_kep
     std::ofstream(dir / n) << "x";
   BOOST_TEST(rotlie::reports::remove_stale_temporaries(dir) == 2u);
   BOOST_TEST((entries(dir) == std::set<std::string>{live, "keep.txt", ".rotlie-tmpX"}));
+  fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(a_link_is_written_through_and_stays_a_link) {
+  const fs::path dir = scratch("output-link");
+  std::ofstream(dir / "target.txt") << "old";
+  fs::create_symlink("target.txt", dir / "link.txt");
+  write_file_atomically(dir / "link.txt", "new");
+  BOOST_TEST(fs::is_symlink(dir / "link.txt"));
+  BOOST_TEST(slurp(dir / "target.txt") == "new");
+  // a link to a link to a regular file: the final target
+  fs::create_symlink("link.txt", dir / "link2.txt");
+  write_file_atomically(dir / "link2.txt", "newer");
+  BOOST_TEST((fs::is_symlink(dir / "link2.txt") && fs::is_symlink(dir / "link.txt")));
+  BOOST_TEST(slurp(dir / "target.txt") == "newer");
+  // a link to nothing is refused and stays
+  fs::create_symlink("missing.txt", dir / "dangling.txt");
+  const std::string message = failure_of(dir / "dangling.txt", "x");
+  BOOST_TEST(message.find("does not exist") != std::string::npos, message);
+  BOOST_TEST(fs::is_symlink(dir / "dangling.txt"));
+  BOOST_TEST(!fs::exists(dir / "missing.txt"));
+  fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(a_fifo_a_device_or_a_folder_is_refused_and_kept) {
+  const fs::path dir = scratch("output-special");
+  BOOST_TEST_REQUIRE(::mkfifo((dir / "fifo").c_str(), 0644) == 0);
+  fs::create_directory(dir / "folder");
+  fs::create_symlink("fifo", dir / "link-to-fifo");
+  for (const char* name : {"fifo", "folder", "link-to-fifo"}) {
+    const std::string message = failure_of(dir / name, "content");
+    BOOST_TEST(message.find("regular files only") != std::string::npos, name << ": " << message);
+  }
+  BOOST_TEST(fs::is_fifo(dir / "fifo"));
+  BOOST_TEST(fs::is_directory(dir / "folder"));
+  BOOST_TEST(fs::is_symlink(dir / "link-to-fifo"));
+  // a character device: /dev/null stays a device (no test here may need root to make one)
+  const std::string message = failure_of("/dev/null", "content");
+  BOOST_TEST(message.find("it is a device") != std::string::npos, message);
+  BOOST_TEST(fs::is_character_file("/dev/null"));
+  BOOST_TEST(entries(dir) == (std::set<std::string>{"fifo", "folder", "link-to-fifo"}));  // no temporary left
+  fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(the_bounded_reader_refuses_what_it_cannot_read_without_waiting) {
+  const fs::path dir = scratch("reader-special");
+  BOOST_TEST_REQUIRE(::mkfifo((dir / "fifo").c_str(), 0644) == 0);
+  const auto refusal = [](const fs::path& p, std::size_t limit) {
+    try {
+      rotlie::runs::read_bounded_file(p, limit);
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  BOOST_TEST(refusal(dir / "fifo", 100).find("not a regular file") != std::string::npos);  // returns: no writer waited for
+  BOOST_TEST(refusal("/dev/zero", 100).find("not a regular file") != std::string::npos);
+  BOOST_TEST(refusal(dir, 100).find("folder") != std::string::npos);
+  std::ofstream(dir / "big") << std::string(101, 'x');
+  BOOST_TEST(refusal(dir / "big", 100).find("101 bytes") != std::string::npos);
+  BOOST_TEST(rotlie::runs::read_bounded_file(dir / "big", 101) == std::string(101, 'x'));
+  BOOST_TEST(rotlie::runs::read_text_file(dir / "big") == std::string(101, 'x'));
   fs::remove_all(dir);
 }
 

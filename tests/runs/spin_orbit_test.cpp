@@ -216,6 +216,49 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused) {
     BOOST_CHECK_THROW(runs::spin_setup_of(bad), runs::bad_input);
 }
 
+BOOST_AUTO_TEST_CASE(the_potential_rate_is_the_time_derivative_of_the_potential) {
+  // ∂V'/∂t at a fixed attitude against a centred difference of V' in long double (h = 1e-5: error ~1e-10)
+  const auto I = runs::spin_moments_in<long double>(runs::spin_body_named("Hyperion"));
+  const models::spin_orbit_tide<long double> tide(I, 0.3L);
+  const auto s = models::spin_orbit_start<long double>(I, 0.7L, 1.0L, 0.4L);
+  for (const long double t : {0.0L, 0.9L, 2.5L, 4.0L}) {
+    const long double d = 1e-5L;
+    const long double fd = (tide.anisotropic_potential(s.Q, t + d) - tide.anisotropic_potential(s.Q, t - d)) / (2 * d);
+    BOOST_TEST(std::abs(static_cast<double>(tide.anisotropic_potential_rate(s.Q, t) - fd)) < 1e-8, t);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_extended_hamiltonian_converges_with_the_step) {
+  // on an eccentric orbit K = T + V' + p_t changes by O(h^2) (the trapezoidal p_t): halving h divides the
+  // largest change by about 4, and it stays far below the potential's fluctuation
+  runs::spin_request r{"Mercury", "0.2056", "SIER4", "1/400", "4", "0.1", "1.5", "0.05"};
+  const auto coarse = runs::spin_run(runs::spin_setup_of(r));
+  r.h = "1/800";
+  const auto fine = runs::spin_run(runs::spin_setup_of(r));
+  BOOST_TEST(coarse.check.quantity == "extended_hamiltonian");
+  const double ratio = coarse.check.max_change / fine.check.max_change;
+  BOOST_TEST_MESSAGE("max |dK|: h = 1/400 " << coarse.check.max_change << ", 1/800 " << fine.check.max_change << " (ratio " << ratio << ")");
+  BOOST_TEST(ratio > 3.5);
+  BOOST_TEST(ratio < 4.5);
+  BOOST_TEST(coarse.check.change_percent < 0.1);
+  BOOST_TEST(!coarse.check.unstable);
+}
+
+BOOST_AUTO_TEST_CASE(an_adaptive_run_has_a_step_budget) {
+  const auto I = runs::spin_moments_in<double>(runs::spin_body_named("Moon"));
+  const models::spin_orbit_tide<double> tide(I, 0.5);
+  models::spin_odeint_stepper<double> stepper(tide, models::odeint_method::rkf78, 1e-12, 1e-3);
+  stepper.set_step_budget(20);
+  auto s = models::spin_orbit_start<double>(I, 0.1, 1.0, 0.0);
+  double t = 0;
+  try {
+    stepper.advance(s, t, two_pi);
+    BOOST_FAIL("a whole orbit at 1e-12 in 20 steps");
+  } catch (const std::runtime_error& e) {
+    BOOST_TEST(std::string(e.what()).find("budget of 20 steps") != std::string::npos, e.what());
+  }
+}
+
 BOOST_AUTO_TEST_CASE(the_scalars_agree) {
   // the same run in double, long double and float128 (exact rotor), and the Odeint peer in long double
   runs::spin_request r{"Moon", "0.0549", "SIER4", "1/200", "3", "0.1", "1.0", "0.05"};

@@ -13,6 +13,7 @@
 #include "rotlie/runs/exclusive_use.hpp"
 #include "rotlie/runs/md_json.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
+#include "rotlie/runs/output_file.hpp"
 #include "scene_support.hpp"
 
 namespace rotlie::runs {
@@ -57,6 +58,12 @@ scene_result run(const scene_request& request) {
     } else if (::access(folder.c_str(), W_OK) != 0) {
       throw bad_input("--state: cannot write into the folder '" + one_line(folder.string()) + "'");
     }
+    try {
+      writable_target(state);  // a link to nothing is refused now, not after the equilibration
+    } catch (const std::runtime_error& e) {
+      throw bad_input(std::string("--state: ") + e.what());
+    }
+    o.write_file = [](const std::string& path, const std::string& text) { write_file_atomically(path, text); };
   }
   const auto rotor = rotor_table(integrator, models::tip3p_body_text());  // before the equilibration: a bad name costs nothing
   o.rotor_table = rotor ? &*rotor : nullptr;

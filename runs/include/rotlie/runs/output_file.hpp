@@ -4,6 +4,10 @@
 // unnamed files), is flushed to disk, then renamed over the target (atomic on POSIX file
 // systems), and the folder itself is flushed. A run killed even by SIGKILL therefore leaves at
 // most a hidden `.rotlie-tmp-` file, which the next report into that folder removes.
+//
+// Only regular files are written. A path that is a FIFO, a device, a socket or a folder is refused
+// (renaming over it would replace it). A symbolic link is written through: its final target, which
+// must be an existing regular file, gets the content and the link stays a link.
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -15,6 +19,10 @@ inline constexpr std::string_view temporary_prefix = ".rotlie-tmp-";
 
 /// Throws std::runtime_error with the path and the system's reason when the file cannot be written.
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+/// The file write_file_atomically(path, …) would replace: `path` itself when it is absent or a regular
+/// file, a link's final regular target. Throws std::runtime_error for anything else.
+std::filesystem::path writable_target(const std::filesystem::path& path);
 
 /// Removes the temporaries left in `dir` by processes that no longer run (a killed earlier run).
 /// Returns how many were removed; errors are ignored (the files are hidden and harmless).

@@ -3,6 +3,7 @@
 // (RS4-S5-McLachlan:CBA), a dedicated solution SCHEME:PERM:LABEL solved for the body given
 // (N2:BAC:2, P1:BAC:5), or the path of a scheme-table file. This is where the symbolic and numeric
 // sides meet, through text.
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -11,6 +12,9 @@
 #include "rotlie/schemes/scheme_table.hpp"
 
 namespace rotlie::runs {
+
+/// The largest scheme-table file read (the largest solver table is a few kB); larger ones are refused.
+inline constexpr std::uintmax_t max_table_bytes = 1 << 20;
 
 /// What to do with a scheme-table file solved for another body (its `inertia` line, compared up
 /// to a common factor): refuse it and name --force (integrate, order), refuse it where the command

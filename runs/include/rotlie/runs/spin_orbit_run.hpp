@@ -37,7 +37,8 @@ const std::vector<spin_body>& spin_bodies();
 spin_body spin_body_named(const std::string& text);
 
 /// An integrator of the scene: a splitting (SIER2, SIER4, MRDL, MRDL-reversed, SIER2/X, SIER4/X with the
-/// rotor table X resolved for the body) or Boost.Odeint's adaptive odeint-dopri5[:TOL], odeint-rkf78[:TOL].
+/// rotor table X resolved for the body) or Boost.Odeint's adaptive odeint-dopri5[:TOL], odeint-rkf78[:TOL]
+/// (TOL within 5 ε of the scalar … 1e-2: spin_method_named takes long double's floor, spin_setup_of the run's).
 struct spin_method {
   std::string name;
   bool adaptive = false;                       ///< an Odeint method
@@ -56,8 +57,10 @@ struct spin_request {
   std::string body, e, integrator, h, T, theta0 = "0", omega0 = "1", obliquity = "0", scalar = "double";
 };
 
-/// The checked run: h a fraction of the orbital period, T in orbits, steps = round(T/h) (the step
-/// used is 2π T/steps, so that the run ends at T exactly).
+/// The checked run: h a fraction of the orbital period, T in orbits, T a whole number of steps h
+/// (exactly, or within 1e-9 relative for decimals typed from a float: then h = T/steps, the step
+/// used, which the JSON reports). An adaptive method takes h as its first trial step and lands on
+/// every multiple of h, where the conserved quantity is sampled.
 struct spin_setup {
   spin_body body;
   spin_method method;
@@ -69,8 +72,25 @@ struct spin_setup {
 /// Throws bad_input (one line naming the option) for anything that does not describe a run.
 spin_setup spin_setup_of(const spin_request& request);
 
+/// What tells whether a run can be trusted: a quantity the exact flow conserves, sampled after every
+/// step. At e = 0 the Jacobi integral J = T + V − L_z; otherwise the extended-phase-space
+/// Hamiltonian K = T + V' + p_t, V' the potential without its isotropic part and p_t = −∫ ∂V'/∂t dt
+/// (the trapezoidal rule over the steps). "unstable": its largest change reaches the potential's own
+/// fluctuation along the run (the criterion of md's dH/dV ≥ 100 %) and lies beyond round-off.
+struct spin_check {
+  std::string quantity;           ///< "jacobi" or "extended_hamiltonian"
+  double start = 0;               ///< its value at t = 0
+  double max_change = 0;          ///< max |K(t_k) − K(0)| over the steps
+  double potential_fluctuation = 0;  ///< max − min of V' over the steps
+  double change_percent = 0;      ///< 100 max_change / potential_fluctuation (inf when V' is steady)
+  bool unstable = false;
+  bool round_off_floor = false;   ///< a step turns the body by less than 1000 ε: the step is lost in round-off
+  std::vector<std::string> warnings;  ///< one line per flag
+};
+
 struct spin_result {
   spin_setup setup;
+  spin_check check;
   models::mat3<double> Q{};         ///< final attitude: columns the body axes A, B, C in the inertial frame
   models::vec3<double> omega_body{};  ///< final angular velocity in the body frame (units of n)
   double theta = 0;                 ///< the A axis' angle in the inertial xy plane
@@ -79,7 +99,12 @@ struct spin_result {
   long evaluations = 0;             ///< torque evaluations (force_evaluations; right-hand sides for Odeint)
 };
 
-/// Runs the setup in its scalar. Throws std::runtime_error when the run diverges.
+/// The largest number of steps an adaptive run may take per orbit of T (accepted and refused): a
+/// tolerance the problem cannot reach ends the run with an error instead of running for days.
+inline constexpr double adaptive_steps_per_orbit = 1e6;
+
+/// Runs the setup in its scalar. Throws std::runtime_error when the run diverges or an adaptive run
+/// exhausts its step budget.
 spin_result spin_run(const spin_setup& setup);
 
 /// The moments of a body in double (A, B, C).

@@ -2,6 +2,7 @@
 // The spin–orbit scene stepped in any scalar with any of its integrators, an observer called after
 // each step: the one loop behind spin_run, the tests and bench/spin_bench.
 #include <algorithm>
+#include <boost/math/constants/constants.hpp>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -52,6 +53,8 @@ spin_outcome<T> step_spin_orbit(const spin_method& m, const models::vec3<T>& I, 
       throw bad_input("--integrator " + m.name + " runs in double or long double, not in float128");
     } else {
     models::spin_odeint_stepper<T> stepper(tide, m.ode, T(m.tolerance), m.first_step > 0 ? T(m.first_step) : h);
+    const double orbits = static_cast<double>(T(steps) * h / boost::math::constants::two_pi<T>());
+    stepper.set_step_budget(adaptive_steps_per_orbit * std::max(1.0, orbits));
     out.state = start;
     const double cpu0 = models::thread_cpu_seconds();
     if constexpr (observed) {

@@ -30,6 +30,7 @@ class kepler_orbit {
   }
 
   const T& eccentricity() const { return e_; }
+  const T& root() const { return root_; }  ///< √(1 − e²)
 
   /// The mean anomaly reduced to [−π, π].
   static T mean_anomaly(const T& t) {

@@ -33,6 +33,8 @@ struct liquid_water_run_options {
   long molecules = 512;
   int threads = 1;
   std::string state_file;   ///< read if it exists; else the equilibrated start is written there
+  /// Writes a file whole (path, text); empty: write_water_state's own temporary and rename.
+  std::function<void(const std::string&, const std::string&)> write_file;
   double kelvin = 297;
   double density = 0.9973;  ///< g/cm³
   std::uint64_t seed = 1;
@@ -131,7 +133,10 @@ inline rigid_bodies_state<double> liquid_water_start(const liquid_water_run_opti
     return 0;
   });
   if (!o.state_file.empty()) {
-    write_water_state(o.state_file, expected, s);
+    if (o.write_file)
+      o.write_file(o.state_file, water_state_text(expected, s));
+    else
+      write_water_state(o.state_file, expected, s);
     if (progress) progress("wrote " + o.state_file);
   }
   return s;

@@ -52,6 +52,27 @@ class spin_orbit_tide {
     return {k * N[0], k * N[1], k * N[2]};
   }
 
+  /// V without its isotropic part (3/2r³) A, which depends on time alone and turns nothing: the
+  /// potential whose time dependence the extended phase space has to account for.
+  T anisotropic_potential(const mat3<T>& Q, const T& t) const {
+    const orbit_point<T> o = orbit_.at(t);
+    const vec3<T> ub = transpose(Q) * vec3<T>{o.cos_f, o.sin_f, T(0)};
+    return 3 / (2 * o.r * o.r * o.r) * ((I_[1] - I_[0]) * ub[1] * ub[1] + (I_[2] - I_[0]) * ub[2] * ub[2]);
+  }
+
+  /// ∂/∂t of anisotropic_potential at a fixed attitude: r and f move (ṙ = e sin f/√(1−e²),
+  /// ḟ = √(1−e²)/r², n = a = 1), û turns with u' = ḟ (−sin f, cos f, 0).
+  T anisotropic_potential_rate(const mat3<T>& Q, const T& t) const {
+    const orbit_point<T> o = orbit_.at(t);
+    const vec3<T> ub = transpose(Q) * vec3<T>{o.cos_f, o.sin_f, T(0)};
+    const vec3<T> vb = transpose(Q) * vec3<T>{-o.sin_f, o.cos_f, T(0)};
+    const T k = 3 / (o.r * o.r * o.r);
+    const T r_dot = orbit_.eccentricity() * o.sin_f / orbit_.root();
+    const T f_dot = orbit_.root() / (o.r * o.r);
+    const T dB = I_[1] - I_[0], dC = I_[2] - I_[0];
+    return -3 * k * r_dot / o.r / 2 * (dB * ub[1] * ub[1] + dC * ub[2] * ub[2]) + k * f_dot * (dB * ub[1] * vb[1] + dC * ub[2] * vb[2]);
+  }
+
  private:
   vec3<T> I_;
   kepler_orbit<T> orbit_;

@@ -15,7 +15,10 @@
 #include <boost/numeric/odeint.hpp>
 
 #include <array>
+#include <cstdio>
+#include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "rotlie/models/scenes/spin_orbit.hpp"
 
@@ -64,6 +67,9 @@ class spin_odeint_stepper {
 
   long evaluations() const { return evaluations_; }
 
+  /// At most `steps` steps (accepted and refused) over the stepper's life; beyond, advance throws.
+  void set_step_budget(double steps) { budget_ = steps; }
+
   /// Advances (s, t) to t_next.
   void advance(body_state<T>& s, T& t, const T& t_next) {
     spin_ode_state<T> x{};
@@ -84,6 +90,9 @@ class spin_odeint_stepper {
     const spin_orbit_ode<T> rhs{&tide_, &evaluations_};
     int refused = 0;
     while (t < t_next) {
+      if (++tried_ > budget_)
+        throw std::runtime_error("the adaptive run used its budget of " + short_text(budget_) + " steps by t = " + short_text(static_cast<double>(t)) +
+                                 ": the tolerance asks for more steps than the run can afford (raise it)");
       const bool last = dt_ >= t_next - t;
       T dt = last ? t_next - t : dt_;
       const T kept = dt_;
@@ -99,7 +108,15 @@ class spin_odeint_stepper {
     }
   }
 
+  static std::string short_text(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", x);
+    return text;
+  }
+
   const spin_orbit_tide<T>& tide_;
+  double budget_ = std::numeric_limits<double>::infinity();
+  double tried_ = 0;
   odeint_method method_;
   T dt_;
   controlled_dopri5 dopri5_;

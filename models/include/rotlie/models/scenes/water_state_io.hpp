@@ -43,21 +43,31 @@ struct water_state_header {
   T time_fs{};
 };
 
+/// The text of a state file (full precision: a state read back is the state written).
+template <class T>
+std::string water_state_text(const water_state_header<T>& header, const rigid_bodies_state<T>& s) {
+  std::ostringstream out;
+  out.precision(std::numeric_limits<T>::max_digits10);
+  out << "rotlie-state 1\nsystem " << header.system << "\nmodel " << header.model << "\nmolecules " << s.bodies.size() << "\nbox "
+      << header.box << "\ntime_fs " << header.time_fs << "\ncolumns qx qy qz px py pz Q00 Q01 Q02 Q10 Q11 Q12 Q20 Q21 Q22 Gx Gy Gz\n";
+  for (const auto& b : s.bodies) {
+    for (const auto& x : b.q) out << x << ' ';
+    for (const auto& x : b.p) out << x << ' ';
+    for (const auto& x : b.rot.Q.a) out << x << ' ';
+    out << b.rot.G[0] << ' ' << b.rot.G[1] << ' ' << b.rot.G[2] << '\n';
+  }
+  return out.str();
+}
+
+/// Writes the state through a temporary of this process's own, renamed over `path` (the numeric
+/// core's own writer; the command line writes water_state_text through its one file writer).
 template <class T>
 void write_water_state(const std::filesystem::path& path, const water_state_header<T>& header, const rigid_bodies_state<T>& s) {
   const std::filesystem::path tmp = path.string() + ".partial-" + std::to_string(::getpid());  // this process's own
   {
     std::ofstream out(tmp);
     if (!out) throw std::runtime_error("cannot write " + path.string());
-    out.precision(std::numeric_limits<T>::max_digits10);
-    out << "rotlie-state 1\nsystem " << header.system << "\nmodel " << header.model << "\nmolecules " << s.bodies.size() << "\nbox "
-        << header.box << "\ntime_fs " << header.time_fs << "\ncolumns qx qy qz px py pz Q00 Q01 Q02 Q10 Q11 Q12 Q20 Q21 Q22 Gx Gy Gz\n";
-    for (const auto& b : s.bodies) {
-      for (const auto& x : b.q) out << x << ' ';
-      for (const auto& x : b.p) out << x << ' ';
-      for (const auto& x : b.rot.Q.a) out << x << ' ';
-      out << b.rot.G[0] << ' ' << b.rot.G[1] << ' ' << b.rot.G[2] << '\n';
-    }
+    out << water_state_text(header, s);
     out.flush();
     if (!out) {
       std::error_code ec;
@@ -77,6 +87,8 @@ rigid_bodies_state<T> read_water_state(const std::filesystem::path& path, const 
   const std::string where = "state file " + path.string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw std::invalid_argument(where + " is not a regular file");
+  constexpr std::uintmax_t largest = std::uintmax_t(1) << 32;  // 4 GiB: about 500 bytes a molecule, 8 million molecules
+  if (std::filesystem::file_size(path, ec) > largest) throw std::invalid_argument(where + " is larger than any state file (4 GiB)");
   std::ifstream in(path);
   if (!in) throw std::invalid_argument("cannot read state file " + path.string());
   auto field = [&](const std::string& key) {
