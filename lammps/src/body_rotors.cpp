@@ -89,6 +89,8 @@ bool same_shape(const std::array<double, 3>& a, const std::array<double, 3>& b) 
   return true;
 }
 
+std::string body_shapes_text(std::size_t n) { return std::to_string(n) + (n == 1 ? " body shape" : " body shapes"); }
+
 bool symmetric_top(const std::array<double, 3>& I) {
   return I[1] - I[0] <= shape_tolerance * I[2] || I[2] - I[1] <= shape_tolerance * I[2];
 }
@@ -154,8 +156,8 @@ void body_rotors::resolve_shapes(const std::vector<std::pair<std::array<double, 
     const auto asked = std::count_if(shapes_.begin(), shapes_.end(), [&](const auto& s) { return needs_map(s); });
     if (progress && asked > 0)
       progress(shipped_maps_present()
-                   ? "rotor auto: choosing the rotors of " + std::to_string(asked) +
-                         " body shapes from the shipped maps (maps-K200: the nearest grid body's best, one system solved per shape)"
+                   ? "rotor auto: choosing the rotors of " + body_shapes_text(static_cast<std::size_t>(asked)) +
+                         " from the shipped maps (maps-K200: the nearest grid body's best, one system solved per shape)"
                    : "rotor auto: the shipped maps (maps-K200) are not found: the exact rotor runs every shape");
     try {
       if (!points.empty()) maps.emplace(points);
@@ -182,7 +184,7 @@ std::string body_rotors::fallback_note() const {
   }
   if (count == 0) return "";
   std::ostringstream line;
-  line << "rotor auto: the exact rotor runs " << count << " of " << shapes_.size() << " body shapes:";
+  line << "rotor auto: the exact rotor runs " << count << " of " << body_shapes_text(shapes_.size()) << ":";
   for (std::size_t k = 0; k < reasons.size(); ++k)
     line << (k ? ";" : "") << " " << reasons[k].first << " (" << reasons[k].second << (reasons[k].second == 1 ? " shape)" : " shapes)");
   return line.str();

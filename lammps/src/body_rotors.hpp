@@ -109,6 +109,9 @@ class body_rotors {
   std::map<std::array<double, 3>, std::unique_ptr<body_rotor>> rotors_;
 };
 
+/// "1 body shape", "3 body shapes": for the fix's lines.
+std::string body_shapes_text(std::size_t n);
+
 /// Whether two sets of moments are one shape: each agrees to shape_tolerance of the largest.
 bool same_shape(const std::array<double, 3>& a, const std::array<double, 3>& b);
 

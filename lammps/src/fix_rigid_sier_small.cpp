@@ -187,14 +187,14 @@ void FixRigidSierSmall::print_shapes(double seconds) const {
     utils::logmesg(lmp, text);
   }
   if (!rest.empty()) {
-    std::string line = "  " + std::string(style) + ": and " + std::to_string(shapes.size() - listed) + " more body shapes, rotors:";
+    std::string line = "  " + std::string(style) + ": and " + std::to_string(shapes.size() - listed) + " more, rotors:";
     for (const auto& [rotor, n] : rest) line += " " + rotor + " (" + std::to_string(n) + ")";
     utils::logmesg(lmp, line + "\n");
   }
   if (const auto note = rotors_->fallback_note(); !note.empty()) utils::logmesg(lmp, "  " + std::string(style) + ": " + note + "\n");
   if (rotors_->request().what == rotor_request::kind::automatic) {
     char text[120];
-    std::snprintf(text, sizeof text, "  %s: rotor auto: %zu body shapes resolved in %.1f s\n", style, shapes.size(), seconds);
+    std::snprintf(text, sizeof text, "  %s: rotor auto: %s resolved in %.1f s\n", style, body_shapes_text(shapes.size()).c_str(), seconds);
     utils::logmesg(lmp, text);
   }
 }

@@ -127,7 +127,7 @@ BOOST_AUTO_TEST_CASE(rotor_auto_chooses_from_the_maps_in_seconds_on_1_and_2_rank
     const double seconds = seconds_since(start);
     BOOST_TEST(status == 0, d.output);
     BOOST_TEST(lines_with(d.output, "from the shipped maps").size() == 1u, d.output);
-    BOOST_TEST(seconds < 40, ranks << " rank(s): " << seconds << " s");
+    BOOST_TEST(seconds < 20, ranks << " rank(s): " << seconds << " s");
     // the rotor of each shape (the shapes' order and first bodies follow the ranks' bodies)
     for (const auto& line : lines_with(d.output, "body shape (")) rotors[ranks - 1].push_back(line.substr(line.rfind("rotor ")));
     std::sort(rotors[ranks - 1].begin(), rotors[ranks - 1].end());
