@@ -3,9 +3,12 @@
 // The free rotation of the `rotor` keyword for bodies of any shape. A body is known by its principal
 // moments in LAMMPS's order (decreasing, as fix rigid/small's eigensolver returns them); rotlie's
 // rotors take them increasing. Bodies whose moments agree to shape_tolerance (relative) are one
-// shape: a table is resolved once per shape (solved for it, or checked against it), and each body
-// then runs it with its own moments, as LAMMPS's own fixes use each body's own moments.
+// shape: a table is resolved once per shape (solved for it, chosen from the shipped maps for it, or
+// checked against it), and each body then runs it with its own moments, as LAMMPS's own fixes use
+// each body's own moments. Shapes are resolved as text (a scheme table's format), so that the ranks
+// of a fix can each resolve a share and hand the others the very same tables.
 #include <array>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -16,6 +19,8 @@
 #include "rotlie/schemes/scheme_table.hpp"
 
 namespace rotlie::lammps {
+
+class shipped_map_lines;
 
 /// Relative agreement of moments (and of a table's moment ratios) that makes one shape: LAMMPS
 /// computes each body's moments from its atoms' coordinates, so bodies of one shape differ by the
@@ -43,7 +48,16 @@ struct body_shape {
   std::array<double, 3> moments{};
   long first_body = 0;  ///< the ID of a body of this shape (for messages)
   std::optional<schemes::scheme_table> table;
-  std::string table_name;  ///< as resolved: the reference or dedicated scheme's name
+  std::string table_name;  ///< as resolved: the reference or dedicated scheme's name, or exact
+  std::string fallback;    ///< why the exact rotor runs a shape `rotor auto` found no table for; else empty
+};
+
+/// How the ranks of a fix share the resolving: whether this rank resolves shape k (of the list every
+/// rank holds), and the exchange after which every rank holds every shape's text (each rank has
+/// filled in those it resolved). The default: one process resolves every shape.
+struct shape_sharing {
+  std::function<bool(std::size_t)> mine = [](std::size_t) { return true; };
+  std::function<void(std::vector<std::string>&)> exchange = [](std::vector<std::string>&) {};
 };
 
 /// The rotors of one fix: shapes resolved up front (resolve_shapes, identical on every rank), then a
@@ -53,27 +67,56 @@ class body_rotors {
   explicit body_rotors(rotor_request request) : request_(std::move(request)) {}
 
   /// Resolves a table for each shape (moments in rotlie's increasing order, with a body ID each);
-  /// shapes within shape_tolerance of each other are one. Throws runs::bad_input with one line
-  /// naming the body whose shape a table does not fit, or a name that resolves to nothing.
-  void resolve_shapes(const std::vector<std::pair<std::array<double, 3>, long>>& bodies);
+  /// shapes within shape_tolerance of each other are one. `rotor auto` chooses from the shipped maps
+  /// (map_choice.hpp) and falls back to the exact rotor for symmetric tops, or when the maps are not
+  /// found or the solver fails (body_shape::fallback says why). `progress` receives one line before
+  /// the maps are read. Throws runs::bad_input with one line naming the body whose shape a table does
+  /// not fit, or a name that resolves to nothing: the same on every rank.
+  void resolve_shapes(const std::vector<std::pair<std::array<double, 3>, long>>& bodies, const shape_sharing& share = {},
+                      const std::function<void(const std::string&)>& progress = {});
 
-  /// The rotor of a body with these moments (rotlie's order); throws runs::bad_input when the body
-  /// belongs to no resolved shape.
+  /// The rotor of a body with these moments (rotlie's order). A body of a shape that appeared after
+  /// resolve_shapes (a body added during a run: fix deposit, fix pour) runs the exact rotor: resolving
+  /// a table would need every rank, and only the ranks that own such a body get here.
   const body_rotor& rotor_for(const std::array<double, 3>& moments, long body_id);
+
+  /// The shapes that appeared after resolve_shapes and were not yet taken (one note each).
+  std::vector<body_shape> take_new_shapes();
+
+  /// One line on the shapes that fell back to the exact rotor (how many, and why), or empty.
+  std::string fallback_note() const;
+
+  /// A 2-d system: every body turns about the plane's normal, a principal axis, by its closed form
+  /// (the fix's steady rotation), so `rotor auto` resolves no table (the exact rotor, one note).
+  void set_planar(bool planar) { planar_ = planar; }
 
   const std::vector<body_shape>& shapes() const { return shapes_; }
   const rotor_request& request() const { return request_; }
 
-  /// The shape of moments (within shape_tolerance), or nullptr.
+  /// The resolved shape of moments (within shape_tolerance), or nullptr.
   const body_shape* shape_of(const std::array<double, 3>& moments) const;
 
  private:
+  std::string resolved_text(const body_shape& s, const shipped_map_lines* maps, const std::string& no_maps) const;
+  bool needs_map(const body_shape& s) const;
+  void take_text(body_shape& s, const std::string& text) const;
+
   rotor_request request_;
+  bool planar_ = false;
   std::vector<body_shape> shapes_;
+  std::vector<body_shape> new_shapes_;  ///< appeared after resolve_shapes
+  std::size_t new_shapes_taken_ = 0;
   std::map<std::array<double, 3>, std::unique_ptr<body_rotor>> rotors_;
 };
 
+/// "1 body shape", "3 body shapes": for the fix's lines.
+std::string body_shapes_text(std::size_t n);
+
 /// Whether two sets of moments are one shape: each agrees to shape_tolerance of the largest.
 bool same_shape(const std::array<double, 3>& a, const std::array<double, 3>& b);
+
+/// Whether a body (moments increasing) is a symmetric top: two moments agree to shape_tolerance of
+/// the largest. The maps leave such bodies out (their dedicated systems are singular).
+bool symmetric_top(const std::array<double, 3>& moments);
 
 }  // namespace rotlie::lammps

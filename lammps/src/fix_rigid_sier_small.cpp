@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <limits>
+#include <map>
 #include <set>
 #include <stdexcept>
 
@@ -139,19 +141,75 @@ void FixRigidSierSmall::resolve_shapes() {
   MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, world);
   std::vector<std::pair<std::array<double, 3>, long>> bodies;
   for (std::size_t k = 0; k + 3 < all.size(); k += 4) bodies.push_back({{all[k], all[k + 1], all[k + 2]}, static_cast<long>(all[k + 3])});
+  const double start = MPI_Wtime();
+  rotors_->set_planar(domain->dimension == 2);
+  const auto mine_to_resolve = [&](std::size_t k) { return static_cast<int>(k % comm->nprocs) == comm->me; };
+  const auto progress = [&](const std::string& line) {
+    if (comm->me == 0)
+      utils::logmesg(lmp, "  " + std::string(style) + ": " + line +
+                              (comm->nprocs > 1 ? ", shared among " + std::to_string(comm->nprocs) + " ranks" : "") + "\n");
+  };
   try {
-    rotors_->resolve_shapes(bodies);
+    rotors_->resolve_shapes(bodies, {mine_to_resolve, [&](std::vector<std::string>& texts) { share_texts(texts); }}, progress);
   } catch (const std::exception& e) {
     error->all(FLERR, "Fix " + std::string(style) + ": " + e.what());
   }
   shapes_resolved_ = true;
-  if (comm->me == 0)
-    for (const auto& s : rotors_->shapes()) {
-      char text[160];
-      std::snprintf(text, sizeof text, "  %s: body shape (%.8g, %.8g, %.8g) (body %ld): rotor %s\n", style, s.moments[0],
-                    s.moments[1], s.moments[2], s.first_body, !(s.moments[0] > 0) ? "exact (linear body)" : s.table_name.c_str());
-      utils::logmesg(lmp, text);
+  if (comm->me == 0) print_shapes(MPI_Wtime() - start);
+}
+
+void FixRigidSierSmall::share_texts(std::vector<std::string>& texts) {
+  // shape k was resolved by rank k % nprocs: every rank gets its text from there
+  for (std::size_t k = 0; k < texts.size(); ++k) {
+    const int owner = static_cast<int>(k % comm->nprocs);
+    long size = static_cast<long>(texts[k].size());
+    MPI_Bcast(&size, 1, MPI_LONG, owner, world);
+    texts[k].resize(static_cast<std::size_t>(size));
+    MPI_Bcast(texts[k].data(), static_cast<int>(size), MPI_CHAR, owner, world);
+  }
+}
+
+void FixRigidSierSmall::print_shapes(double seconds) const {
+  // each shape with its rotor, the first few of many (the 2-d micelle has 150), then the others counted
+  constexpr std::size_t listed = 10;
+  const auto& shapes = rotors_->shapes();
+  std::map<std::string, int> rest;
+  for (std::size_t k = 0; k < shapes.size(); ++k) {
+    const auto& s = shapes[k];
+    const std::string rotor = !(s.moments[0] > 0) ? "exact (linear body)" : s.table_name;
+    if (k >= listed) {
+      ++rest[rotor];
+      continue;
     }
+    char text[160];
+    std::snprintf(text, sizeof text, "  %s: body shape (%.8g, %.8g, %.8g) (body %ld): rotor %s\n", style, s.moments[0], s.moments[1],
+                  s.moments[2], s.first_body, rotor.c_str());
+    utils::logmesg(lmp, text);
+  }
+  if (!rest.empty()) {
+    std::string line = "  " + std::string(style) + ": and " + std::to_string(shapes.size() - listed) + " more, rotors:";
+    for (const auto& [rotor, n] : rest) line += " " + rotor + " (" + std::to_string(n) + ")";
+    utils::logmesg(lmp, line + "\n");
+  }
+  if (const auto note = rotors_->fallback_note(); !note.empty()) utils::logmesg(lmp, "  " + std::string(style) + ": " + note + "\n");
+  if (rotors_->request().what == rotor_request::kind::automatic) {
+    char text[120];
+    std::snprintf(text, sizeof text, "  %s: rotor auto: %s resolved in %.1f s\n", style, body_shapes_text(shapes.size()).c_str(), seconds);
+    utils::logmesg(lmp, text);
+  }
+}
+
+void FixRigidSierSmall::note_new_shapes() {
+  // one line per shape met by this rank: rank 0 writes LAMMPS's screen and log; the others, which
+  // have neither, standard error
+  for (const auto& s : rotors_->take_new_shapes()) {
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "  %s: body %ld with moments (%.8g, %.8g, %.8g), a shape that appeared during the run, runs the exact rotor\n", style,
+                  s.first_body, s.moments[0], s.moments[1], s.moments[2]);
+    if (comm->me == 0) utils::logmesg(lmp, text);
+    else std::fputs(text, stderr);
+  }
 }
 
 void FixRigidSierSmall::kick(double c) {
@@ -218,6 +276,7 @@ void FixRigidSierSmall::free_flight(double c) {
     MathExtra::q_to_exyz(b->quat, b->ex_space, b->ey_space, b->ez_space);
     MathExtra::angmom_to_omega(b->angmom, b->ex_space, b->ey_space, b->ez_space, b->inertia, b->omega);
   }
+  note_new_shapes();
 }
 
 void FixRigidSierSmall::place_atoms(int vflag) {

@@ -42,6 +42,9 @@ class FixRigidSierSmall : public LAMMPS_NS::FixRigidSmall {
   void free_flight(double c);    // T for c h: xcm and the free rotation of the owned bodies
   void place_atoms(int vflag);   // ghost bodies, then the atoms of every body
   void resolve_shapes();         // the rotors of every body shape, the same on every rank
+  void share_texts(std::vector<std::string>& texts);  // each shape's text from the rank that resolved it
+  void print_shapes(double seconds) const;            // rank 0: the shapes, their rotors, the fallbacks
+  void note_new_shapes();        // one line per shape that appeared during the run
 
   std::vector<double> coefficients_;  ///< the TV table's stage coefficients, V first
   std::string tv_table_;
