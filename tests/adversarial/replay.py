@@ -530,8 +530,7 @@ cases = {
     "save over /dev/null": lambda d: rotlie.scheme("ABCBA2").save("/dev/null"),
     "save through a link to nothing": lambda d: (os.symlink("none", d + "/l"), rotlie.scheme("ABCBA2").save(d + "/l")),
     "load_table of a FIFO": lambda d: (os.mkfifo(d + "/g"), rotlie.load_table(d + "/g")),
-    "load_table of 1 MB": lambda d: (open(d + "/big", "wb").write(b"#" * (1 << 20) + b"
-"), rotlie.load_table(d + "/big")),
+    "load_table of 1 MB": lambda d: (open(d + "/big", "wb").write(b"#" * (1 << 20) + b"\n"), rotlie.load_table(d + "/big")),
     "Q0 not a rotation": lambda d: rotlie.exact_flow(W, [1, 1, 1], 2 * np.eye(3), t=1),
     "Q0 a reflection": lambda d: rotlie.integrate("ABCBA2", W, [1, 1, 1], np.diag([1.0, 1, -1]), h=0.1, steps=1),
     "complex G0": lambda d: rotlie.exact_flow(W, [1 + 1j, 1, 1], t=1),
@@ -581,9 +580,70 @@ def python_surface(R, quick):
 
 
 # ------------------------------------------------------------------------------------------------
-# 8. LAMMPS (lmp_rotlie beside the binary): filled in with the rotor cases.
+# 8. LAMMPS (lmp_rotlie beside the binary, LAMMPS's examples from lammps-examples): bodies rigid/small takes
+# run with every rotor; a bad rotor is one ERROR line and a non-zero exit; nothing hangs.
+EXAMPLES = pathlib.Path("/usr/share/lammps/examples")
+
+
+def lammps_run(R, folder, text, timeout=300):
+    (folder / "in.replay").write_text(text)
+    R.commands += 1
+    start = time.monotonic()
+    try:
+        p = subprocess.run([str(pathlib.Path(R.binary).parent / "lmp_rotlie"), "-in", "in.replay", "-log", "none"], cwd=folder,
+                           capture_output=True, text=True, timeout=timeout, errors="replace", env={**os.environ, "OMP_NUM_THREADS": "1"})
+        return {"rc": p.returncode, "out": p.stdout, "err": p.stderr, "s": time.monotonic() - start}
+    except subprocess.TimeoutExpired:
+        return {"rc": None, "out": "", "err": "", "s": timeout}
+
+
 def lammps_surface(R, quick):
-    pass
+    cls = "lammps"
+    if not (pathlib.Path(R.binary).parent / "lmp_rotlie").exists() or not (EXAMPLES / "rigid" / "data.rigid").exists():
+        print("lammps: skipped (no lmp_rotlie beside the binary, or no lammps-examples)")
+        return
+
+    def judged_ok(what, r, limit=None):
+        problem = None
+        if r["rc"] is None:
+            problem = "hung (timeout)"
+        elif r["rc"] != 0:
+            problem = f"exit {r['rc']}: {(r['out'] + r['err']).strip().splitlines()[-1:]!r}"
+        elif limit and r["s"] > limit:
+            problem = f"took {r['s']:.0f} s, over {limit} s"
+        R.record(cls, what, problem)
+
+    def judged_error(what, r):
+        errors = [l for l in (r["out"] + r["err"]).splitlines() if l.startswith("ERROR")]
+        if r["rc"] is None:
+            R.record(cls, what, "hung (timeout)")
+        elif r["rc"] == 0:
+            R.record(cls, what, "ran where it had to stop with an ERROR", silent=True)
+        elif r["rc"] < 0:
+            R.record(cls, what, f"killed by signal {-r['rc']}")
+        else:
+            R.record(cls, what, None if len(set(errors)) == 1 else f"{len(set(errors))} distinct ERROR lines")
+
+    clumps = (EXAMPLES / "rigid" / "in.rigid.atomvar").read_text()
+    for rotor in ("exact", "auto", "ABCBA2:ABC", "RS4-S5-McLachlan:CBA"):
+        d = R.folder("lammps-clumps-" + rotor.replace(":", "-"))
+        shutil.copy(EXAMPLES / "rigid" / "data.rigid", d)
+        text = clumps.replace("fix 1 all rigid custom v_bodies", f"fix 1 all rigid/sier2/small custom v_bodies rotor {rotor}")
+        text = text[:text.rindex("run")] + "run 500\n"
+        judged_ok(f"clumps example, rotor {rotor} (a symmetric top among its bodies)", lammps_run(R, d, text), limit=60)
+    micelle = (EXAMPLES / "micelle" / "in.micelle-rigid").read_text()
+    d = R.folder("lammps-micelle")
+    shutil.copy(EXAMPLES / "micelle" / "data.micelle", d)
+    text = micelle.replace("fix\t\t5 solute rigid/small molecule", "fix\t\t5 solute rigid/sier2/small molecule rotor auto")
+    judged_ok("2-d micelle (150 shapes), rotor auto", lammps_run(R, d, text), limit=120)
+    # bad rotor values and files
+    d = R.folder("lammps-bad")
+    shutil.copy(EXAMPLES / "rigid" / "data.rigid", d)
+    os.mkfifo(d / "fifo.scheme")
+    (d / "big.scheme").write_bytes(b"#" * (1 << 20) + b"\n")
+    for rotor in ("NOPE", "Strang-TV", "N2:XYZ:2", "fifo.scheme", "big.scheme", "P1:BAC:99"):
+        text = clumps.replace("fix 1 all rigid custom v_bodies", f"fix 1 all rigid/sier2/small custom v_bodies rotor {rotor}")
+        judged_error(f"clumps example, rotor {rotor}", lammps_run(R, d, text[:text.rindex("run")] + "run 10\n", timeout=120))
 
 
 def main():
