@@ -9,10 +9,10 @@
 #include "map_choice.hpp"
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/lie/rigid_body.hpp"
-#include "rotlie/models/exact_free_rotation.hpp"
-#include "rotlie/models/moments_from_text.hpp"
+#include "rotlie/models/closed_form_rotors.hpp"
 #include "rotlie/models/table_rotor.hpp"
-#include "rotlie/runs/scheme_names.hpp"
+#include "rotlie/runs/md_methods.hpp"
+#include "rotlie/schemes/same_body.hpp"
 #include "rotlie/runs/user_input.hpp"
 
 namespace rotlie::lammps {
@@ -48,27 +48,14 @@ lie::moments_of_inertia exact_shape(const std::array<double, 3>& I) {
   return m;
 }
 
-// Whether a table solved for `inertia` (its `inertia` line) fits moments I: the ratios agree.
-bool table_fits(const schemes::scheme_table& t, const std::array<double, 3>& I) {
-  if (t.inertia.empty()) return true;  // a reference scheme: every body
-  const auto J = models::moments_from_text<double>(t.inertia);
-  // compared up to a common factor, as the solver's tables are (H_R3 is homogeneous in the moments)
-  const double scale = I[2] / J[2];
-  for (std::size_t k = 0; k < 3; ++k)
-    if (std::abs(J[k] * scale - I[k]) > shape_tolerance * I[2]) return false;
-  return true;
-}
-
 // The exact rotor for a symmetric top (the reason, shared by the shapes that fall back for it).
 const std::string symmetric_reason = "a symmetric top (two moments equal to 1e-6 relative), which the maps and their dedicated schemes leave out";
 
 // `rotor TABLE` for one shape: the named table, checked to be a free rotation solved for the shape.
 schemes::scheme_table checked_table(const std::string& name, const std::array<double, 3>& I, long id) {
-  auto t = runs::scheme_named(name, exact_shape(I), runs::foreign_table::use_with_warning,
-                              [](const std::string&) {});  // checked below, with LAMMPS's tolerance
-  if (t.splitting == schemes::split::tv)
-    throw runs::bad_input("rotor " + name + ": a TV table is an integrator, not a free rotation (ABC or RS)");
-  if (!table_fits(t, I))
+  auto t = *runs::free_rotor_named(name, exact_shape(I), "rotor " + name, runs::foreign_table::use_with_warning,
+                                   [](const std::string&) {}).table;  // the body checked below, with LAMMPS's tolerance
+  if (schemes::same_body(t, I, shape_tolerance) == schemes::body_match::different)
     throw runs::bad_input("rotor " + name + ": the table was solved for moments (" + t.inertia + "), not for body " +
                           std::to_string(id) + " with moments " + moments_text(I));
   return t;
@@ -97,7 +84,7 @@ bool symmetric_top(const std::array<double, 3>& I) {
 
 rotor_request parse_rotor(const std::string& value) {
   if (value.empty()) throw runs::bad_input("rotor needs a value: exact, auto, a scheme name or a scheme-table file");
-  if (value == "exact") return {rotor_request::kind::exact, ""};
+  if (models::is_closed_form_rotor(value)) return {rotor_request::kind::closed_form, value};
   if (value == "auto") return {rotor_request::kind::automatic, ""};
   return {rotor_request::kind::table, value};
 }
@@ -108,12 +95,13 @@ const body_shape* body_rotors::shape_of(const std::array<double, 3>& moments) co
   return nullptr;
 }
 
-// A shape as text, the same on every rank: a first line `exact`, `fallback WHY`, `table` (the
+// A shape as text, the same on every rank: a first line `closed NAME` (a listed rotor), `fallback WHY`, `table` (the
 // table's text follows) or `error WHY` (a refusal, thrown by every rank alike in take_text).
 std::string body_rotors::resolved_text(const body_shape& s, const shipped_map_lines* maps, const std::string& no_maps) const {
   const bool automatic = request_.what == rotor_request::kind::automatic;
   try {
-    if (!(s.moments[0] > 0) || request_.what == rotor_request::kind::exact) return "exact\n";  // linear: the fix's closed form
+    if (!(s.moments[0] > 0)) return "closed exact\n";  // linear: the fix's closed form
+    if (request_.what == rotor_request::kind::closed_form) return "closed " + request_.name + "\n";
     if (!automatic) return "table\n" + schemes::format_scheme_table(checked_table(request_.name, s.moments, s.first_body));
     if (planar_) return "fallback " + planar_reason + "\n";
     if (symmetric_top(s.moments)) return "fallback " + symmetric_reason + "\n";
@@ -129,9 +117,10 @@ void body_rotors::take_text(body_shape& s, const std::string& text) const {
   const auto end = text.find('\n');
   const std::string first = text.substr(0, end), rest = end == std::string::npos ? "" : text.substr(end + 1);
   const auto word = first.substr(0, first.find(' ')), why = first.size() > word.size() ? first.substr(word.size() + 1) : "";
-  s.table_name = "exact";
+  s.table_name = s.closed_form = "exact";
   if (word == "error") throw runs::bad_input(why);
   if (word == "fallback") s.fallback = why;
+  if (word == "closed") s.table_name = s.closed_form = why;
   if (word == "table") {
     s.table = schemes::parse_scheme_table(rest);
     s.table_name = s.table->name;
@@ -208,8 +197,12 @@ const body_rotor& body_rotors::rotor_for(const std::array<double, 3>& moments, l
   std::unique_ptr<body_rotor> r;
   if (s && s->table)
     r = std::make_unique<rotor_of<models::table_rotor<double>>>(models::table_rotor<double>(*s->table, I));
-  else
-    r = std::make_unique<rotor_of<models::exact_free_rotation<double>>>(models::exact_free_rotation<double>(I));
+  else  // a listed rotor; a shape met during a run, the one asked for if it is listed, else the exact one
+    r = models::with_closed_form_rotor<double>(s ? s->closed_form : request_.what == rotor_request::kind::closed_form ? request_.name : "exact",
+                                               [&](auto rotor) -> std::unique_ptr<body_rotor> {
+      using R = typename decltype(rotor)::type;
+      return std::make_unique<rotor_of<R>>(R(I));
+    });
   return *rotors_.emplace(moments, std::move(r)).first->second;
 }
 

@@ -36,11 +36,12 @@ class body_rotor {
 
 /// What `rotor VALUE` asks for.
 struct rotor_request {
-  enum class kind { exact, table, automatic } what = kind::exact;
-  std::string name;  ///< the table: a reference name, SCHEME:PERM:LABEL or a scheme-table file
+  enum class kind { closed_form, table, automatic } what = kind::closed_form;
+  std::string name = "exact";  ///< a listed rotor's name (closed_form_rotors.hpp), or the table: a reference
+                               ///< name, SCHEME:PERM:LABEL or a scheme-table file
 };
 
-/// Reads VALUE (exact, auto, or a table name); throws runs::bad_input for an empty value.
+/// Reads VALUE (a listed rotor such as exact, auto, or a table name); throws runs::bad_input for an empty value.
 rotor_request parse_rotor(const std::string& value);
 
 /// One shape: its moments (rotlie's increasing order, of its first body) and what runs it.
@@ -48,8 +49,9 @@ struct body_shape {
   std::array<double, 3> moments{};
   long first_body = 0;  ///< the ID of a body of this shape (for messages)
   std::optional<schemes::scheme_table> table;
-  std::string table_name;  ///< as resolved: the reference or dedicated scheme's name, or exact
+  std::string table_name;  ///< as resolved: the reference or dedicated scheme's name, or the listed rotor's
   std::string fallback;    ///< why the exact rotor runs a shape `rotor auto` found no table for; else empty
+  std::string closed_form = "exact";  ///< the listed rotor that runs the shape when it has no table
 };
 
 /// How the ranks of a fix share the resolving: whether this rank resolves shape k (of the list every

@@ -15,8 +15,8 @@
 
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/runs/body_names.hpp"
+#include "rotlie/runs/md_methods.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
-#include "rotlie/runs/scheme_names.hpp"
 #include "rotlie/runs/spin_orbit_stepping.hpp"
 #include "rotlie/runs/user_input.hpp"
 
@@ -176,25 +176,14 @@ spin_method splitting_named(const std::string& name, const spin_body& body) {
   spin_method m;
   m.name = name;
   try {
-    m.splitting = models::md_integrator_named(name);
-  } catch (const std::invalid_argument& e) {
+    auto method = md_method_named(name, numeric_body(body.moments));
+    m.splitting = std::move(method.spec);
+    m.rotor = std::move(method.rotor);
+  } catch (const bad_input& e) {
     std::string why = e.what();
     const auto odeint = " or odeint-dopri5[:TOL], odeint-rkf78[:TOL])";
-    if (why.rfind("unknown integrator", 0) == 0 && why.back() == ')') why = why.substr(0, why.size() - 1) + odeint;
-    throw bad_input("--integrator: " + why);
-  }
-  if (m.splitting.rotor == models::rotor_kind::table) {
-    // a reference name, SCHEME:PERM:LABEL solved for this body, or a table file solved for it
-    try {
-      m.rotor = scheme_named(m.splitting.rotor_table, numeric_body(body.moments), foreign_table::refuse);
-    } catch (const bad_input& e) {
-      std::string why = e.what();
-      if (why.rfind("--scheme: ", 0) == 0) why = why.substr(10);
-      throw bad_input("--integrator " + one_line(name) + ": " + why);
-    }
-    if (m.rotor->splitting == schemes::split::tv)  // what md refuses too (free_rigid_body::check), before the run
-      throw bad_input("--integrator " + one_line(name) + ": " + one_line(m.splitting.rotor_table) +
-                      " splits free flight and kick (TV): the free rotation needs an ABC or RS table");
+    if (why.rfind("--integrator: unknown integrator", 0) == 0 && why.back() == ')') why = why.substr(0, why.size() - 1) + odeint;
+    throw bad_input(why);
   }
   return m;
 }

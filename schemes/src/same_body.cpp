@@ -91,7 +91,7 @@ body_match same_body(const scheme_table& t, const std::array<std::string_view, 3
   return same ? body_match::same : body_match::different;
 }
 
-body_match same_body(const scheme_table& t, const std::array<double, 3>& body) {
+body_match same_body(const scheme_table& t, const std::array<double, 3>& body, double relative) {
   for (std::size_t i = 0; i < 3; ++i)
     if (!(std::isfinite(body[i]) && body[i] > 0))
       throw std::invalid_argument("I" + std::to_string(i + 1) + " is not a finite positive number");
@@ -102,7 +102,7 @@ body_match same_body(const scheme_table& t, const std::array<double, 3>& body) {
     // ratios in long double: the table's values may lie far outside double's range
     const long double recorded = value_of(parts[i]) / r3;
     const long double given = static_cast<long double>(body[i]) / static_cast<long double>(body[2]);
-    if (!(std::fabs(recorded - given) <= 1e-12L * std::fmax(recorded, given))) return body_match::different;
+    if (!(std::fabs(recorded - given) <= static_cast<long double>(relative) * std::fmax(recorded, given))) return body_match::different;
   }
   return body_match::same;
 }

@@ -35,12 +35,16 @@ BOOST_AUTO_TEST_CASE(the_registry_names_tables_rotors_and_costs) {
   const auto reversed = models::md_integrator_named("MRDL-reversed");
   BOOST_TEST(sier2.tv_table == "Strang-TV");
   BOOST_TEST(sier4.tv_table == "PEFRL-TV");
-  BOOST_TEST((sier2.rotor == models::rotor_kind::exact && sier4.rotor == models::rotor_kind::exact));
-  BOOST_TEST((mrdl.rotor == models::rotor_kind::table));
+  BOOST_TEST((sier2.rotor == "exact" && sier4.rotor == "exact"));
+  BOOST_TEST(mrdl.table_rotor());
   BOOST_TEST(mrdl.rotor_table == "ABCBA2:ABC");  // DLM's order 1-2-3-2-1, LAMMPS's NO_SQUISH map
-  BOOST_TEST((reversed.rotor == models::rotor_kind::table && reversed.tv_table == "Strang-TV" && reversed.f == 1));
+  BOOST_TEST((reversed.table_rotor() && reversed.tv_table == "Strang-TV" && reversed.f == 1));
   BOOST_TEST(reversed.rotor_table == "ABCBA2:CBA");  // the reversed order 3-2-1-2-3, full step on the smallest moment
-  BOOST_TEST((sej4.rotor == models::rotor_kind::sej4));
+  BOOST_TEST(sej4.rotor == "sej4");
+  // a listed rotor by name after the slash: SIER2/exact is SIER2, SIER2/sej4 is SEJ4's pair
+  BOOST_TEST(models::md_integrator_named("SIER2/exact").rotor == "exact");
+  BOOST_TEST((models::md_integrator_named("SIER4/sej4").rotor == "sej4" && models::md_integrator_named("SIER4/sej4").f == 4));
+  BOOST_TEST((models::closed_form_rotor_names() == std::vector<std::string>{"exact", "sej4"}));
   BOOST_TEST(sier2.f == 1);
   BOOST_TEST(sier4.f == 4);
   BOOST_TEST(mrdl.f == 1);

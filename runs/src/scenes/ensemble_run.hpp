@@ -37,10 +37,10 @@ inline void read_ensemble_run(const scene_request& r, const std::string& body_te
   e.scalar = option(r, "--scalar");
   if (e.scalar != "double" && e.scalar != "long-double" && e.scalar != "float128")
     throw bad_input("--scalar must be double, long-double or float128, got '" + e.scalar + "'");
-  e.integrator = integrator_named(r.integrator);
-  e.rotor = rotor_table(e.integrator, body_text);
+  auto method = md_method_named(r.integrator, numeric_body(body_text));
+  e.integrator = std::move(method.spec);
+  e.rotor = std::move(method.rotor);
   e.run.rotor_table = e.rotor ? &*e.rotor : nullptr;
-  e.run.integrator = r.integrator;
   e.run.h_fs = positive_number(r.h, "--h");
   e.run.T_ps = positive_number(option(r, "--T"), "--T");
   e.run.runs = integer_in_range(option(r, "--runs"), "--runs", 1, 1'000'000);

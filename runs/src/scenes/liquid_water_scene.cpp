@@ -31,8 +31,8 @@ std::string line(const char* format, A... a) {
 
 scene_result run(const scene_request& request) {
   models::liquid_water_run_options o;
-  o.integrator = request.integrator;
-  const auto integrator = integrator_named(request.integrator);
+  const auto method = md_method_named(request.integrator, numeric_body(models::tip3p_body_text()));  // a bad name costs nothing
+  const auto& integrator = method.spec;
   o.h_fs = positive_number(request.h, "--h");
   o.T_ps = positive_number(option(request, "--T"), "--T");
   o.runs = static_cast<int>(integer_in_range(option(request, "--runs"), "--runs", 1, 1000));
@@ -65,8 +65,7 @@ scene_result run(const scene_request& request) {
     }
     o.write_file = [](const std::string& path, const std::string& text) { write_file_atomically(path, text); };
   }
-  const auto rotor = rotor_table(integrator, models::tip3p_body_text());  // before the equilibration: a bad name costs nothing
-  o.rotor_table = rotor ? &*rotor : nullptr;
+  o.rotor_table = method.rotor_table();
   auto show = [&request](const std::string& text) {
     if (request.progress) request.progress(text);
   };

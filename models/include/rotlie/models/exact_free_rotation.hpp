@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string_view>
 #include <limits>
 #include <utility>
 
@@ -283,6 +284,8 @@ class free_flight_step {
 template <class T>
 class exact_free_rotation {
  public:
+  static constexpr std::string_view rotor_name = "exact";  ///< in closed_form_rotors.hpp's list
+
   explicit exact_free_rotation(const vec3<T>& I, double accuracy = 1e-12)
       : I_(checked(I)), accuracy_(accuracy), step_(I_) {}
 

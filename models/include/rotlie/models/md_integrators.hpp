@@ -5,8 +5,9 @@
 //   MRDL         Strang-TV + the table rotor ABCBA2:ABC           (f = 1)
 //   MRDL-reversed  Strang-TV + the table rotor ABCBA2:CBA         (f = 1)
 //   SEJ4         Strang-TV + sej4_rotor (a RECONSTRUCTION, see sej4_rotor.hpp)   (f = 1)
-//   SIER2/X, SIER4/X   the free rotation by scheme table X (a reference name with its permutation,
-//                      or a dedicated SCHEME:PERM:LABEL the caller resolves for the body)
+//   SIER2/X, SIER4/X   the free rotation by X: a rotor of closed_form_rotors.hpp's list by its name
+//                      (SIER2/exact is SIER2, SIER2/sej4 is SEJ4), or scheme table X (a reference name
+//                      with its permutation, or a dedicated SCHEME:PERM:LABEL the caller resolves for the body)
 // MRDL's rotor: the planar rotations of Dullweber, Leimkuhler & McLachlan (1997) in their order,
 // axes 1, 2, 3, 2, 1 with the full step on axis 3 (ABCBA2, permutation ABC); for water
 // (I1 < I2 < I3) the full step falls on the slowest axis. This is the order with which vZS's τ and
@@ -24,23 +25,22 @@
 #include <string_view>
 #include <vector>
 
+#include "rotlie/models/closed_form_rotors.hpp"
 #include "rotlie/models/composition.hpp"
-#include "rotlie/models/exact_free_rotation.hpp"
-#include "rotlie/models/sej4_rotor.hpp"
 #include "rotlie/models/table_rotor.hpp"
 #include "rotlie/models/torqued_rigid_bodies.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 
 namespace rotlie::models {
 
-enum class rotor_kind { exact, table, sej4 };
-
 struct md_integrator {
-  std::string name;         ///< SIER2, SIER4, MRDL, MRDL-reversed, SEJ4, SIER2/X, SIER4/X
-  std::string tv_table;     ///< Strang-TV or PEFRL-TV
-  rotor_kind rotor = rotor_kind::exact;
-  std::string rotor_table;  ///< the free-rotation table's name (rotor_kind::table only)
-  int f = 1;                ///< force evaluations per step
+  std::string name;          ///< SIER2, SIER4, MRDL, MRDL-reversed, SEJ4, SIER2/X, SIER4/X
+  std::string tv_table;      ///< Strang-TV or PEFRL-TV
+  std::string rotor = "exact";  ///< a closed-form rotor's name (closed_form_rotors.hpp), or empty: rotor_table
+  std::string rotor_table;   ///< the free-rotation table's name (an empty rotor only)
+  int f = 1;                 ///< force evaluations per step
+
+  bool table_rotor() const { return rotor.empty(); }
 };
 
 /// The named integrators (SIER2/X and SIER4/X take any table name X).
@@ -58,11 +58,11 @@ inline constexpr const char* mrdl_reversed_rotor_table = "ABCBA2:CBA";
 inline md_integrator md_integrator_named(std::string_view name) {
   auto f_of = [](const std::string& tv) { return schemes::force_evaluations(*schemes::reference_scheme(tv)); };
   const std::string n(name);
-  if (n == "SIER2") return {n, "Strang-TV", rotor_kind::exact, "", f_of("Strang-TV")};
-  if (n == "SIER4") return {n, "PEFRL-TV", rotor_kind::exact, "", f_of("PEFRL-TV")};
-  if (n == "MRDL") return {n, "Strang-TV", rotor_kind::table, mrdl_rotor_table, f_of("Strang-TV")};
-  if (n == "MRDL-reversed") return {n, "Strang-TV", rotor_kind::table, mrdl_reversed_rotor_table, f_of("Strang-TV")};
-  if (n == "SEJ4") return {n, "Strang-TV", rotor_kind::sej4, "", f_of("Strang-TV")};
+  if (n == "SIER2") return {n, "Strang-TV", "exact", "", f_of("Strang-TV")};
+  if (n == "SIER4") return {n, "PEFRL-TV", "exact", "", f_of("PEFRL-TV")};
+  if (n == "MRDL") return {n, "Strang-TV", "", mrdl_rotor_table, f_of("Strang-TV")};
+  if (n == "MRDL-reversed") return {n, "Strang-TV", "", mrdl_reversed_rotor_table, f_of("Strang-TV")};
+  if (n == "SEJ4") return {n, "Strang-TV", "sej4", "", f_of("Strang-TV")};
   for (const auto& [prefix, tv] : {std::pair<std::string, std::string>{"SIER2/", "Strang-TV"}, {"SIER4/", "PEFRL-TV"}})
     if (n.rfind(prefix, 0) == 0) {
       const std::string table = n.substr(prefix.size());
@@ -70,13 +70,14 @@ inline md_integrator md_integrator_named(std::string_view name) {
       if (table.empty() || table.find_first_of(" \t\r\n") != std::string::npos)
         throw std::invalid_argument("integrator '" + schemes::printable_text(n) + "': " + prefix +
                                     " needs a scheme table name or file, e.g. " + prefix + "RS4-S5-McLachlan:CBA");
-      return {n, tv, rotor_kind::table, table, f_of(tv)};
+      if (is_closed_form_rotor(table)) return {n, tv, table, "", f_of(tv)};
+      return {n, tv, "", table, f_of(tv)};
     }
   throw std::invalid_argument("unknown integrator '" + schemes::printable_text(n) +
-                              "' (SIER2, SIER4, MRDL, MRDL-reversed, SEJ4, SIER2/TABLE, SIER4/TABLE)");
+                              "' (SIER2, SIER4, MRDL, MRDL-reversed, SEJ4, SIER2/X, SIER4/X with X a rotor or a scheme table)");
 }
 
-/// One body type as a scene states it; the rotor comes from the integrator. For rotor_kind::table,
+/// One body type as a scene states it; the rotor comes from the integrator. For a table rotor,
 /// rotor_table is the table resolved for this body, or nullptr to look the name up among the
 /// reference schemes.
 template <class T>
@@ -105,25 +106,22 @@ auto with_md_integrator(const md_integrator& spec, const std::vector<body_kind<T
     for (const auto& k : kinds) types.push_back({k.mass, k.moments, rotor_of(k)});
     return visit(composition<system>(tv, system(std::move(types), potential, units)));
   };
-  switch (spec.rotor) {
-    case rotor_kind::exact:
-      return run([](const body_kind<T>& k) { return exact_free_rotation<T>(k.moments); });
-    case rotor_kind::sej4:
-      return run([](const body_kind<T>& k) { return sej4_rotor<T>(k.moments); });
-    case rotor_kind::table:
-    default:
-      return run([&](const body_kind<T>& k) {
-        std::optional<schemes::scheme_table> table;
-        if (k.rotor_table)
-          table = *k.rotor_table;
-        else
-          table = schemes::reference_scheme(spec.rotor_table);
-        if (!table)
-          throw std::invalid_argument("integrator " + schemes::printable_text(spec.name) + ": '" + schemes::printable_text(spec.rotor_table) +
-                                      "' is not a reference scheme (a dedicated table must be solved for the body first)");
-        return table_rotor<T>(*table, k.moments);
-      });
-  }
+  if (!spec.table_rotor())
+    return with_closed_form_rotor<T>(spec.rotor, [&](auto rotor) {
+      using R = typename decltype(rotor)::type;
+      return run([](const body_kind<T>& k) { return R(k.moments); });
+    });
+  return run([&](const body_kind<T>& k) {
+    std::optional<schemes::scheme_table> table;
+    if (k.rotor_table)
+      table = *k.rotor_table;
+    else
+      table = schemes::reference_scheme(spec.rotor_table);
+    if (!table)
+      throw std::invalid_argument("integrator " + schemes::printable_text(spec.name) + ": '" + schemes::printable_text(spec.rotor_table) +
+                                  "' is not a reference scheme (a dedicated table must be solved for the body first)");
+    return table_rotor<T>(*table, k.moments);
+  });
 }
 
 /// The same for one body type of mass m and moments I in real units (the scenes of van Zon & Schofield).

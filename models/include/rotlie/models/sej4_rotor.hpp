@@ -10,6 +10,7 @@
 // Inside Strang-TV the whole integrator is 2nd order; the "4" is the rotor's order.
 #include <array>
 #include <cmath>
+#include <string_view>
 
 #include "rotlie/models/exact_free_rotation.hpp"
 #include "rotlie/models/rigid_bodies.hpp"
@@ -19,6 +20,8 @@ namespace rotlie::models {
 template <class T>
 class sej4_rotor {
  public:
+  static constexpr std::string_view rotor_name = "sej4";  ///< in closed_form_rotors.hpp's list
+
   explicit sej4_rotor(const vec3<T>& I) : exact_(I) {
     using std::sqrt;
     root3_ = sqrt(T(3));

@@ -24,8 +24,9 @@ bool is_body_text(std::string_view text);
 /// Throws std::invalid_argument when a given value is not a positive number of that form.
 body_match same_body(const scheme_table& t, const std::array<std::string_view, 3>& body);
 
-/// In floating point: the ratios I1/I3 and I2/I3 agree to 1e-12 relative.
+/// In floating point: the ratios I1/I3 and I2/I3 agree to `relative` (1e-12: moments typed or
+/// solved; LAMMPS's bodies, whose moments come from rounded coordinates, take a wider one).
 /// Throws std::invalid_argument when a moment is not finite and positive.
-body_match same_body(const scheme_table& t, const std::array<double, 3>& body);
+body_match same_body(const scheme_table& t, const std::array<double, 3>& body, double relative = 1e-12);
 
 }  // namespace rotlie::schemes
