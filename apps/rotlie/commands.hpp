@@ -123,7 +123,7 @@ namespace rotlie::app {
 
 /// `rotlie spin`: a body on a fixed Kepler orbit under the quadrupole torque (the option strings as typed).
 struct spin_options {
-  std::string body, e, integrator, h, T, theta0 = "0", omega0 = "1", obliquity = "0", scalar = "double";
+  std::string body, e, integrator, h, T, theta0 = "0", omega0 = "1", obliquity = "0", scalar = "double", every = "0";
   bool json = false;
 };
 int run_spin(const spin_options& options);

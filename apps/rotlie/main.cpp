@@ -291,6 +291,7 @@ subcommand add_spin(CLI::App& app, spin_options& spin) {
   spin_cmd->add_option("--omega0", spin.omega0, "Initial spin about the C axis, units of the mean motion n (default 1)");
   spin_cmd->add_option("--obliquity", spin.obliquity, "Initial tilt of the C axis about x, radians (default 0)");
   spin_cmd->add_option("--scalar", spin.scalar, "double, long-double or float128 (default double)");
+  spin_cmd->add_option("--every", spin.every, "With --json: the trajectory every K steps from the start (time, Q, omega_body, energy)");
   spin_cmd->add_flag("--json", spin.json, "Machine-readable output on stdout");
   return {spin_cmd, [&spin] { return run_spin(spin); }};
 }

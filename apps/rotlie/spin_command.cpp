@@ -10,7 +10,7 @@
 namespace rotlie::app {
 
 int run_spin(const spin_options& o) {
-  const auto setup = runs::spin_setup_of({o.body, o.e, o.integrator, o.h, o.T, o.theta0, o.omega0, o.obliquity, o.scalar});
+  const auto setup = runs::spin_setup_of({o.body, o.e, o.integrator, o.h, o.T, o.theta0, o.omega0, o.obliquity, o.scalar, o.every});
   const auto r = runs::spin_run(setup);
   for (const auto& w : r.check.warnings) std::cerr << "rotlie: warning: " << w << "\n";
   if (o.json) {

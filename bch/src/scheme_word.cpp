@@ -104,25 +104,31 @@ coefficient_symbols make_coefficients(const scheme_layout& layout) {
   return out;
 }
 
-std::vector<std::pair<std::string, cln::cl_RA>> parse_coefficient_values(std::string_view text) {
-  std::vector<std::pair<std::string, cln::cl_RA>> out;
+std::vector<std::pair<std::string, std::string>> split_assignments(std::string_view text) {
+  std::vector<std::pair<std::string, std::string>> out;
   if (text.empty()) return out;
-  std::size_t start = 0;
-  while (start <= text.size()) {
+  for (std::size_t start = 0; start <= text.size();) {
     const auto comma = std::min(text.find(',', start), text.size());
     const std::string item(text.substr(start, comma - start));
     const auto eq = item.find('=');
     if (eq == std::string::npos) throw std::invalid_argument("'" + lie::printable_text(item) + "' is not of the form name=value");
-    const std::string name = item.substr(0, eq);
+    out.emplace_back(item.substr(0, eq), item.substr(eq + 1));
+    start = comma + 1;
+  }
+  return out;
+}
+
+std::vector<std::pair<std::string, cln::cl_RA>> parse_coefficient_values(std::string_view text) {
+  std::vector<std::pair<std::string, cln::cl_RA>> out;
+  for (const auto& [name, text_value] : split_assignments(text)) {
     const bool well_formed = name.size() >= 2 && name.size() <= 4 && name[0] >= 'a' && name[0] <= 'z' && name[1] != '0' &&
                              name.find_first_not_of("0123456789", 1) == std::string::npos;
     if (!well_formed) throw std::invalid_argument("'" + lie::printable_text(name) + "' is not a coefficient name (a1, b2, …)");
-    const auto value = lie::parse_exact_number_checked(item.substr(eq + 1));
-    if (!value.value) throw std::invalid_argument(name + " = '" + lie::printable_text(item.substr(eq + 1)) + "' " + value.problem);
+    const auto value = lie::parse_exact_number_checked(text_value);
+    if (!value.value) throw std::invalid_argument(name + " = '" + lie::printable_text(text_value) + "' " + value.problem);
     for (const auto& [n, v] : out)
       if (n == name) throw std::invalid_argument(name + " is given twice");
     out.emplace_back(name, *value.value);
-    start = comma + 1;
   }
   return out;
 }

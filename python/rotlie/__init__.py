@@ -26,7 +26,7 @@ from ._rotlie import Scheme
 
 __all__ = [
     "Body", "Scheme", "scheme", "load_table", "solve", "exact_flow", "integrate", "order",
-    "remainder", "Remainder", "best", "map_line", "bch", "md",
+    "remainder", "Remainder", "best", "map_line", "bch", "md", "spin", "SpinResult", "SpinTrajectory",
 ]
 __version__ = "0.1.0"
 
@@ -160,3 +160,4 @@ def order(scheme, body, G0=(1, 1, 1), T=1, min_level: int = 1, max_level: int = 
 
 from ._remainder import Remainder, remainder  # noqa: E402
 from ._commands import best, map_line, bch, md  # noqa: E402
+from ._rotlie import spin, SpinResult, SpinTrajectory  # noqa: E402  (typed in C++: python/src/spin.cpp)

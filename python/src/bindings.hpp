@@ -24,5 +24,6 @@ void bind_flows(pybind11::module_& m);
 void bind_json_commands(pybind11::module_& m);
 void bind_md(pybind11::module_& m);
 void bind_remainder(pybind11::module_& m);
+void bind_spin(pybind11::module_& m);
 
 }  // namespace rotlie::python

@@ -10,4 +10,5 @@ PYBIND11_MODULE(_rotlie, m) {
   rotlie::python::bind_json_commands(m);
   rotlie::python::bind_md(m);
   rotlie::python::bind_remainder(m);
+  rotlie::python::bind_spin(m);
 }

@@ -14,7 +14,7 @@ nlohmann::json spin_json(const runs::spin_result& r) {
   const auto I = runs::spin_moments(s.body);
   nlohmann::json Q = nlohmann::json::array();
   for (int i = 0; i < 3; ++i) Q.push_back({r.Q(i, 0), r.Q(i, 1), r.Q(i, 2)});
-  return {{"body", s.body.name},
+  nlohmann::json j = {{"body", s.body.name},
           {"moments", {I[0], I[1], I[2]}},
           {"e", s.e},
           {"integrator", s.method.name},
@@ -37,6 +37,14 @@ nlohmann::json spin_json(const runs::spin_result& r) {
             {"change_percent", finite_or_null(r.check.change_percent)}}},
           {"unstable", r.check.unstable},
           {"round_off_floor", r.check.round_off_floor}};
+  if (s.every > 0) {
+    const auto& tr = r.trajectory;
+    nlohmann::json Qs = nlohmann::json::array(), ws = nlohmann::json::array();
+    for (const auto& Q : tr.Q) Qs.push_back({{Q[0], Q[1], Q[2]}, {Q[3], Q[4], Q[5]}, {Q[6], Q[7], Q[8]}});
+    for (const auto& w : tr.omega_body) ws.push_back({w[0], w[1], w[2]});
+    j["trajectory"] = {{"every", s.every}, {"t", tr.t}, {"Q", Qs}, {"omega_body", ws}, {"energy", tr.energy}};
+  }
+  return j;
 }
 
 }  // namespace rotlie::reports

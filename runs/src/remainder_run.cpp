@@ -91,18 +91,12 @@ void check_size(const bch::remainder_request& r) {
 }  // namespace
 
 std::vector<coefficient_text> coefficient_list(std::string_view text) {
-  std::vector<coefficient_text> out;
-  if (text.empty()) return out;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const auto comma = std::min(text.find(',', start), text.size());
-    const std::string item(text.substr(start, comma - start));
-    const auto eq = item.find('=');
-    if (eq == std::string::npos) throw bad_input("--coeffs: '" + item + "' is not of the form name=value");
-    out.emplace_back(item.substr(0, eq), item.substr(eq + 1));
-    start = comma + 1;
+  try {
+    const auto pairs = bch::split_assignments(text);
+    return {pairs.begin(), pairs.end()};
+  } catch (const std::invalid_argument& e) {
+    throw bad_input(std::string("--coeffs: ") + e.what());
   }
-  return out;
 }
 
 bch::remainder_result remainder_run(const remainder_inputs& in) {

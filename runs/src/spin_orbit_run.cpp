@@ -26,6 +26,7 @@ namespace {
 using quad = boost::multiprecision::float128;
 
 constexpr double max_steps = 2e9;  // T/h: about an hour of SIER2 in double
+constexpr long max_samples = 10'000'000;     // a trajectory's samples (--every): about 1 GB of JSON
 constexpr double whole_steps_slack = 1e-9;  // T/h of decimals typed from a float (0.333333333333)
 // An embedded pair's error estimate is a difference of two results, each rounded to a few ε of the
 // state (of size 1 here): a tolerance below 5 ε cannot be met; 1e-18 in long double (9 ε) serves the
@@ -196,9 +197,23 @@ spin_result run_in(const spin_setup& s) {
   const T h = boost::math::constants::two_pi<T>() * T(s.T) / T(s.steps);
   const models::spin_orbit_tide<T> tide(I, e);
   conservation_watch<T> watch(tide, start, h);
-  const auto out = step_spin_orbit<T>(s.method, I, e, start, h, s.steps, watch);
   spin_result r;
   r.setup = s;
+  const auto sample = [&](long k, const T& t, const models::body_state<T>& x) {
+    auto& tr = r.trajectory;
+    tr.t.push_back(static_cast<double>(k) * s.T / static_cast<double>(s.steps));  // orbits: k steps of T/steps, the last exactly T
+    std::array<double, 9> Q{};
+    for (std::size_t i = 0; i < 9; ++i) Q[i] = static_cast<double>(x.Q.a[i]);
+    tr.Q.push_back(Q);
+    const auto w = models::angular_velocity(I, x.G);
+    tr.omega_body.push_back({static_cast<double>(w[0]), static_cast<double>(w[1]), static_cast<double>(w[2])});
+    tr.energy.push_back(static_cast<double>(models::spin_orbit_energy(tide, x, t)));
+  };
+  if (s.every > 0) sample(0, T(0), start);
+  const auto out = step_spin_orbit<T>(s.method, I, e, start, h, s.steps, [&](long k, const T& t, const models::body_state<T>& x) {
+    watch(k, t, x);
+    if (s.every > 0 && k % s.every == 0) sample(k, t, x);
+  });
   const auto omega = models::angular_velocity(I, out.state.G);
   for (std::size_t i = 0; i < 9; ++i) r.Q.a[i] = static_cast<double>(out.state.Q.a[i]);
   for (std::size_t i = 0; i < 3; ++i) r.omega_body[i] = static_cast<double>(omega[i]);
@@ -283,6 +298,10 @@ spin_setup spin_setup_of(const spin_request& r) {
   s.theta0 = finite_number(r.theta0, "--theta0");
   s.omega0 = finite_number(r.omega0, "--omega0");
   s.obliquity = finite_number(r.obliquity, "--obliquity");
+  s.every = integer_in_range(r.every, "--every", 0, std::numeric_limits<long>::max());
+  if (s.every > 0 && s.steps / s.every > max_samples)
+    throw bad_input("--every " + one_line(r.every) + " keeps " + short_text(static_cast<double>(s.steps / s.every)) +
+                    " samples of the trajectory, over the limit of 1e7: take a larger --every");
   s.method = spin_method_named(r.integrator, s.body);
   if (s.method.adaptive && s.scalar == "float128")
     throw bad_input("--integrator " + one_line(r.integrator) + " runs in double or long double, not in float128");

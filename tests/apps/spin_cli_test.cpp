@@ -148,4 +148,21 @@ BOOST_AUTO_TEST_CASE(a_tv_table_as_the_rotor_is_bad_input_as_in_md) {
   BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, r.err);
 }
 
+BOOST_AUTO_TEST_CASE(every_k_steps_gives_the_trajectory) {
+  const auto j = spin_json("--body Hyperion --e 0.1 --integrator SIER4 --h 1/100 --T 1 --every 25");
+  const auto& tr = j["trajectory"];
+  BOOST_TEST(tr["every"].get<long>() == 25);
+  BOOST_TEST_REQUIRE(tr["t"].size() == 5u);  // steps 0, 25, 50, 75, 100
+  BOOST_TEST(tr["t"][0].get<double>() == 0.0);
+  BOOST_TEST(tr["t"][4].get<double>() == 1.0);
+  BOOST_TEST(tr["Q"][4] == j["Q"]);  // the last sample is the final state
+  BOOST_TEST(tr["omega_body"][4] == j["omega_body"]);
+  BOOST_TEST(tr["energy"][0].get<double>() == j["energy_start"].get<double>());
+  BOOST_TEST(tr["energy"][4].get<double>() == j["energy_end"].get<double>());
+  BOOST_TEST(!spin_json("--body Hyperion --e 0.1 --integrator SIER4 --h 1/100 --T 1").contains("trajectory"));
+  const auto r = run("spin --body Hyperion --e 0.1 --integrator SIER2 --h 1e-8 --T 1 --every 1");  // 1e8 samples
+  BOOST_TEST(r.status == 2, r.err);
+  BOOST_TEST(r.err.find("--every") != std::string::npos, r.err);
+}
+
 BOOST_AUTO_TEST_SUITE_END()  // spin_cli_test

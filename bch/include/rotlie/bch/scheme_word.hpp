@@ -62,6 +62,10 @@ scheme_layout layout_scheme(std::string_view word, splitting split, std::string_
 /// Throws std::invalid_argument with a one-line reason.
 std::vector<std::pair<std::string, cln::cl_RA>> parse_coefficient_values(std::string_view text);
 
+/// "a1=1/6,b1=1/2" split into (name, value text) pairs, nothing checked but the form; throws
+/// std::invalid_argument for an item without '='. Empty text: no pairs.
+std::vector<std::pair<std::string, std::string>> split_assignments(std::string_view text);
+
 /// Symbols for the free coefficients and expressions for the eliminated ones (first-order
 /// conditions: Σ of each name's coefficients over the stages = 1).
 struct coefficient_symbols {

@@ -1,7 +1,8 @@
 #pragma once
 // The free rotors that need nothing but the body's moments, each known by its name: the one list a
 // new rotor algorithm joins. A rotor R<T> has `static constexpr std::string_view rotor_name`, a
-// constructor R(const vec3<T>& moments) and advance(body_state<T>&, const T& t) const. Once listed it
+// constructor R(const vec3<T>& moments), moments() and advance(body_state<T>&, const T& t) const (the
+// free_rotor contract of scene_contracts.hpp). Once listed it
 // runs in every integrator with a free flight (SIER2/NAME, SIER4/NAME in md and spin, from Python)
 // and as LAMMPS's `rotor NAME`. The table rotor (table_rotor.hpp) is the other kind: it needs a table.
 #include <optional>

@@ -10,6 +10,7 @@
 //             Williams et al. 2014); e = 0.0549
 //   Mercury   C/MR² = 0.346 (Margot et al. 2012), J₂ = 5.031e-5 and C₂₂ = 0.809e-5 (MESSENGER,
 //             Smith et al. 2012): (B − A)/C = 4C₂₂/(C/MR²) = 9.35e-5, (C − A)/C = (J₂ + 2C₂₂)/(C/MR²); e = 0.2056
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -55,6 +56,7 @@ spin_method spin_method_named(const std::string& name, const spin_body& body);
 /// What a user types (the command line's contract, the strings as given).
 struct spin_request {
   std::string body, e, integrator, h, T, theta0 = "0", omega0 = "1", obliquity = "0", scalar = "double";
+  std::string every = "0";  ///< a trajectory sample every K steps (0: none)
 };
 
 /// The checked run: h a fraction of the orbital period, T in orbits, T a whole number of steps h
@@ -66,6 +68,7 @@ struct spin_setup {
   spin_method method;
   double e = 0, h = 0, T = 0, theta0 = 0, omega0 = 1, obliquity = 0;
   long steps = 0;
+  long every = 0;  ///< trajectory samples at steps 0, K, 2K, … (0: none)
   std::string scalar = "double";
 };
 
@@ -88,9 +91,19 @@ struct spin_check {
   std::vector<std::string> warnings;  ///< one line per flag
 };
 
+/// The state every K steps (spin_setup::every), from the start: time in orbits, attitude (row-major,
+/// columns the body axes), angular velocity in the body frame (units of n), energy T + V(t).
+struct spin_trajectory {
+  std::vector<double> t;
+  std::vector<std::array<double, 9>> Q;
+  std::vector<std::array<double, 3>> omega_body;
+  std::vector<double> energy;
+};
+
 struct spin_result {
   spin_setup setup;
   spin_check check;
+  spin_trajectory trajectory;  ///< empty unless setup.every > 0
   models::mat3<double> Q{};         ///< final attitude: columns the body axes A, B, C in the inertial frame
   models::vec3<double> omega_body{};  ///< final angular velocity in the body frame (units of n)
   double theta = 0;                 ///< the A axis' angle in the inertial xy plane

@@ -1,0 +1,144 @@
+// spin: the spin–orbit scene (runs::spin_run, `rotlie spin`) as rotlie.spin(...) with typed keywords,
+// its result a SpinResult whose attributes are the JSON's fields (Q a 3×3 array, the trajectory's
+// samples as arrays) and whose to_dict() is `rotlie spin --json`'s object.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <string>
+
+#include "bindings.hpp"
+#include "interruption.hpp"
+#include "rotlie/reports/spin_io.hpp"
+#include "rotlie/runs/spin_orbit_run.hpp"
+#include "rotlie/runs/user_input.hpp"
+
+namespace rotlie::python {
+namespace {
+
+namespace py = pybind11;
+
+struct spin_object {
+  runs::spin_result result;
+  std::string json;  ///< `rotlie spin --json`'s text
+};
+
+// A TypeError as Python raises it (the module's translator would make a C++ exception a RuntimeError).
+[[noreturn]] void type_error(const std::string& message) {
+  PyErr_SetString(PyExc_TypeError, message.c_str());
+  throw py::error_already_set();
+}
+
+// A number as the command line reads it: str, int, float or Fraction, as str() writes it.
+std::string number_argument(const py::handle& value, const char* what) {
+  if (py::isinstance<py::bool_>(value) || PyComplex_Check(value.ptr()))
+    type_error(std::string(what) + " must be a real number, a Fraction or its text");
+  const auto fractions = py::module_::import("fractions");
+  if (py::isinstance<py::str>(value) || py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value) ||
+      py::isinstance(value, fractions.attr("Fraction")))
+    return py::str(value);
+  type_error(std::string(what) + " must be a real number, a Fraction or its text, got " + std::string(py::str(value.get_type().attr("__name__"))));
+}
+
+// A body as `--body` takes it: a name or "A,B,C" as text, a Body, or three moments.
+std::string body_argument(const py::handle& body) {
+  if (py::isinstance<py::str>(body)) return py::str(body);
+  const py::object moments = py::hasattr(body, "moments") ? py::object(body.attr("moments")) : py::reinterpret_borrow<py::object>(body);
+  std::string text;
+  for (const auto& m : py::iter(moments)) text += (text.empty() ? "" : ",") + number_argument(m, "a moment of body");
+  return text;
+}
+
+struct trajectory_object {
+  runs::spin_trajectory samples;
+  long every = 0;
+};
+
+py::array_t<double> vector_array(const std::vector<double>& v) { return py::array_t<double>(py::ssize_t(v.size()), v.data()); }
+
+// Rows of N fixed-size arrays as one array of shape (N, tail...).
+template <std::size_t n>
+py::array_t<double> rows_array(const std::vector<std::array<double, n>>& rows, std::vector<py::ssize_t> tail) {
+  tail.insert(tail.begin(), py::ssize_t(rows.size()));
+  py::array_t<double> a(tail);
+  for (std::size_t k = 0; k < rows.size(); ++k) std::copy(rows[k].begin(), rows[k].end(), a.mutable_data() + n * k);
+  return a;
+}
+
+py::array_t<double> matrix(const std::array<double, 9>& Q) {
+  py::array_t<double> a({3, 3});
+  std::copy(Q.begin(), Q.end(), a.mutable_data());
+  return a;
+}
+
+spin_object spin(const py::object& body, const py::object& e, const std::string& integrator, const py::object& h, const py::object& T,
+                 const py::object& theta0, const py::object& omega0, const py::object& obliquity, const std::string& scalar,
+                 const py::object& every) {
+  runs::spin_request q{body_argument(body), number_argument(e, "e"), integrator, number_argument(h, "h"), number_argument(T, "T"),
+                       number_argument(theta0, "theta0"), number_argument(omega0, "omega0"), number_argument(obliquity, "obliquity"),
+                       scalar, every.is_none() ? "0" : std::string(py::str(py::int_(every)))};
+  auto out = std::make_shared<spin_object>();
+  run_symbolic([q, out] {  // a rotor SCHEME:PERM:LABEL is solved symbolically
+    out->result = runs::spin_run(runs::spin_setup_of(q));
+    out->json = reports::spin_json(out->result).dump();
+  });
+  for (const auto& w : out->result.check.warnings)
+    if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 2) != 0) throw py::error_already_set();
+  return std::move(*out);
+}
+
+}  // namespace
+
+void bind_spin(py::module_& m) {
+  py::class_<trajectory_object>(m, "SpinTrajectory", "The state every K steps from the start, as arrays")
+      .def_readonly("every", &trajectory_object::every)
+      .def_property_readonly("t", [](const trajectory_object& s) { return vector_array(s.samples.t); }, "times in orbits, shape (N,)")
+      .def_property_readonly("Q", [](const trajectory_object& s) { return rows_array(s.samples.Q, {3, 3}); }, "attitudes, shape (N, 3, 3)")
+      .def_property_readonly("omega_body", [](const trajectory_object& s) { return rows_array(s.samples.omega_body, {3}); },
+                             "angular velocities in the body frame (units of n), shape (N, 3)")
+      .def_property_readonly("energy", [](const trajectory_object& s) { return vector_array(s.samples.energy); }, "T + V(t), shape (N,)");
+  py::class_<spin_object>(m, "SpinResult", "The result of rotlie.spin: the fields of `rotlie spin --json` as attributes")
+      .def_property_readonly("body", [](const spin_object& s) { return s.result.setup.body.name; })
+      .def_property_readonly("integrator", [](const spin_object& s) { return s.result.setup.method.name; })
+      .def_property_readonly("scalar", [](const spin_object& s) { return s.result.setup.scalar; })
+      .def_property_readonly("e", [](const spin_object& s) { return s.result.setup.e; })
+      .def_property_readonly("h", [](const spin_object& s) { return s.result.setup.h; }, "the step taken, in orbits")
+      .def_property_readonly("T", [](const spin_object& s) { return s.result.setup.T; })
+      .def_property_readonly("steps", [](const spin_object& s) { return s.result.setup.steps; })
+      .def_property_readonly("evaluations", [](const spin_object& s) { return s.result.evaluations; })
+      .def_property_readonly("Q", [](const spin_object& s) { return matrix(s.result.Q.a); }, "final attitude, columns the body axes")
+      .def_property_readonly("omega_body", [](const spin_object& s) {
+        return py::array_t<double>(3, s.result.omega_body.data());
+      })
+      .def_property_readonly("theta", [](const spin_object& s) { return s.result.theta; })
+      .def_property_readonly("energy_start", [](const spin_object& s) { return s.result.energy_start; })
+      .def_property_readonly("energy_end", [](const spin_object& s) { return s.result.energy_end; })
+      .def_property_readonly("cpu_s", [](const spin_object& s) { return s.result.cpu_s; })
+      .def_property_readonly("unstable", [](const spin_object& s) { return s.result.check.unstable; })
+      .def_property_readonly("round_off_floor", [](const spin_object& s) { return s.result.check.round_off_floor; })
+      .def_property_readonly("conserved", [](const spin_object& s) {
+        return py::module_::import("json").attr("loads")(s.json)["conserved"];
+      })
+      .def_property_readonly("trajectory", [](const spin_object& s) -> py::object {
+        if (s.result.setup.every <= 0) return py::none();
+        return py::cast(trajectory_object{s.result.trajectory, s.result.setup.every});
+      }, "the samples every K steps (every=K), or None")
+      .def("to_dict", [](const spin_object& s) { return py::module_::import("json").attr("loads")(s.json); },
+           "the object `rotlie spin --json` prints")
+      .def("__repr__", [](const spin_object& s) {
+        return "<SpinResult " + s.result.setup.body.name + " " + s.result.setup.method.name + ", " + std::to_string(s.result.setup.steps) +
+               " steps" + (s.result.check.unstable ? ", unstable>" : ">");
+      });
+  m.def("spin", &spin, py::arg("body"), py::arg("e"), py::arg("integrator"), py::arg("h"), py::arg("T"), py::arg("theta0") = 0,
+        py::arg("omega0") = 1, py::arg("obliquity") = 0, py::arg("scalar") = "double", py::arg("every") = py::none(),
+        R"(spin(body, e, integrator, h, T, theta0=0, omega0=1, obliquity=0, scalar="double", every=None) -> SpinResult
+
+A triaxial body on a fixed Kepler orbit under the quadrupole torque, as ``rotlie spin`` (docs/spin_orbit.md).
+body: "Hyperion", "Moon", "Mercury", "A,B,C", a Body or three moments (A <= B <= C); e: eccentricity in [0, 1);
+integrator: SIER2, SIER4, MRDL, MRDL-reversed, SEJ4, SIER2/X, SIER4/X, odeint-dopri5[:TOL], odeint-rkf78[:TOL];
+h: the step as a fraction of the orbit (str, Fraction or float), T: orbits, a whole number of steps;
+theta0, obliquity (rad), omega0 (units of n): the start; every: a trajectory sample every K steps
+(SpinResult.trajectory: t, Q, omega_body, energy arrays). An untrusted run (SpinResult.unstable) also raises a UserWarning.)");
+}
+
+}  // namespace rotlie::python

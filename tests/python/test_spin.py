@@ -1,0 +1,62 @@
+"""rotlie.spin against `rotlie spin --json`: the same numbers bit for bit, the trajectory's arrays
+included, typed keywords, and the command line's refusals."""
+from fractions import Fraction
+import inspect
+import warnings
+
+import numpy as np
+import pytest
+
+import rotlie
+
+from conftest import cli, cli_error
+
+
+def test_spin_equals_the_command_line_with_its_trajectory():
+    j = cli("spin", "--body", "Mercury", "--e", "0.2056", "--omega0", "1.5", "--integrator", "SIER4", "--h", "1/200", "--T", "2",
+            "--obliquity", "0.1", "--every", "50", "--json")
+    r = rotlie.spin("Mercury", e=0.2056, integrator="SIER4", h=Fraction(1, 200), T=2, omega0=1.5, obliquity=0.1, every=50)
+    assert isinstance(r, rotlie.SpinResult)
+    assert r.Q.shape == (3, 3) and r.Q.tolist() == j["Q"]
+    assert r.omega_body.tolist() == j["omega_body"]
+    assert (r.theta, r.h, r.steps, r.unstable) == (j["theta"], j["h"], j["steps"], j["unstable"])
+    tr = r.trajectory
+    assert isinstance(tr, rotlie.SpinTrajectory) and tr.every == 50
+    assert tr.t.shape == (9,) and tr.Q.shape == (9, 3, 3) and tr.omega_body.shape == (9, 3) and tr.energy.shape == (9,)
+    assert tr.t.tolist() == j["trajectory"]["t"]
+    assert tr.Q.tolist() == j["trajectory"]["Q"]
+    assert tr.omega_body.tolist() == j["trajectory"]["omega_body"]
+    assert tr.energy.tolist() == j["trajectory"]["energy"]
+    assert tr.t[0] == 0 and tr.t[-1] == 2 and np.array_equal(tr.Q[-1], r.Q)
+    d = r.to_dict()
+    d.pop("cpu_s"), j.pop("cpu_s")
+    assert d == j
+    assert r.trajectory is not None and rotlie.spin("Hyperion", 0.1, "SIER2", "1/100", 1).trajectory is None
+
+
+def test_bodies_and_steps_of_every_kind():
+    named = rotlie.spin("Hyperion", 0.1, "SIER2", "1/100", 1)
+    moments = named.to_dict()["moments"]
+    as_text = rotlie.spin("34021/57125,49096/57125,1", 0.1, "SIER2", 0.01, 1)
+    as_body = rotlie.spin(rotlie.Body("34021/57125", "49096/57125", "1"), 0.1, "SIER2", Fraction(1, 100), 1)
+    as_tuple = rotlie.spin((Fraction(34021, 57125), Fraction(49096, 57125), 1), 0.1, "SIER2", "0.01", 1)
+    for r in (as_text, as_body, as_tuple):
+        assert r.Q.tolist() == named.Q.tolist() and r.to_dict()["moments"] == moments
+
+
+def test_keywords_are_typed_and_documented():
+    doc = rotlie.spin.__doc__
+    assert "every" in doc and "Hyperion" in doc
+    with pytest.raises(TypeError):
+        rotlie.spin("Moon", 0.05, "SIER2", 1j, 1)
+    with pytest.raises(TypeError):
+        rotlie.spin("Moon", 0.05, "SIER2", "1/100", 1, nope=3)
+
+
+def test_refusals_and_flags_are_the_command_lines():
+    with pytest.raises(ValueError) as e:
+        rotlie.spin("Hyperion", 0.1, "SIER2", 0.4, 1)
+    assert str(e.value) == cli_error("spin", "--body", "Hyperion", "--e", "0.1", "--integrator", "SIER2", "--h", "0.4", "--T", "1")
+    with pytest.warns(UserWarning, match="Jacobi integral"):
+        r = rotlie.spin("Hyperion", 0, "SIER2", 1, 50)
+    assert r.unstable and r.conserved["quantity"] == "jacobi"
