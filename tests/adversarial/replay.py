@@ -521,13 +521,15 @@ def files_surface(R, quick):
 # ------------------------------------------------------------------------------------------------
 # 7. Python: bad calls raise one-line ValueError/TypeError, files keep the writer's rules, nothing crashes.
 PYTHON_CASES = r"""
-import json, os, sys, tempfile
+import json, os, stat, sys, tempfile
 import numpy as np
 import rotlie
 W = rotlie.Body.named("water")
 cases = {
     "save over a FIFO": lambda d: (os.mkfifo(d + "/f"), rotlie.scheme("ABCBA2").save(d + "/f")),
-    "save over /dev/null": lambda d: rotlie.scheme("ABCBA2").save("/dev/null"),
+    # a device node of the replay's own (as root): a faulty save must not replace the machine's /dev/null
+    "save over a device": lambda d: (os.mknod(d + "/null", 0o666 | stat.S_IFCHR, os.makedev(1, 3)), rotlie.scheme("ABCBA2").save(d + "/null"))
+    if os.geteuid() == 0 else rotlie.scheme("ABCBA2").save("/"),
     "save through a link to nothing": lambda d: (os.symlink("none", d + "/l"), rotlie.scheme("ABCBA2").save(d + "/l")),
     "load_table of a FIFO": lambda d: (os.mkfifo(d + "/g"), rotlie.load_table(d + "/g")),
     "load_table of 1 MB": lambda d: (open(d + "/big", "wb").write(b"#" * (1 << 20) + b"\n"), rotlie.load_table(d + "/big")),
