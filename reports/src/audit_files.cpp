@@ -11,7 +11,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/runs/map_file.hpp"
 #include "rotlie/runs/shipped_data.hpp"
@@ -170,6 +170,6 @@ double agreeing_digits(const std::string& ours, const std::string& paper) {
 
 bool positive_decimal(const std::string& text) { return cln::plusp(decimal(text)); }
 
-std::string percent(double x) { return fixed_text(100 * x, 1) + " %"; }
+std::string percent(double x) { return runs::fixed_text(100 * x, 1) + " %"; }
 
 }  // namespace rotlie::reports

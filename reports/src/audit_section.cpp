@@ -17,7 +17,7 @@
 #include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/reports/audit_claim.hpp"
 #include "rotlie/reports/audit_table.hpp"
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/runs/protocol_curves.hpp"
@@ -101,10 +101,10 @@ outcome cost_model(library_results& lib) {
   for (const auto& t : timed) {
     const double per_rotation = cpu_per_step(t, I) / schemes::cost_in_rotations(t);
     lo = std::min(lo, per_rotation), hi = std::max(hi, per_rotation);
-    v += (v.empty() ? "" : ", ") + t.name + " " + fixed_text(per_rotation * 1e9, 1) + " ns";
+    v += (v.empty() ? "" : ", ") + t.name + " " + runs::fixed_text(per_rotation * 1e9, 1) + " ns";
   }
   return outcome::measured(hi <= 1.25 * lo,
-                           "per rotation: " + v + " (spread " + fixed_text(hi / lo, 2) + "×; process CPU time, double stepper)");
+                           "per rotation: " + v + " (spread " + runs::fixed_text(hi / lo, 2) + "×; process CPU time, double stepper)");
 }
 
 // LV 4.3: Fassò's and Hairer-Vilmart's (0.345, 0.653, 1) is no physical body.
@@ -121,8 +121,8 @@ outcome fasso_moments(library_results&) {
 // LV 4.3: water (10220/29376, 19187/29376, 1) ≃ (0.348, 0.653, 1).
 outcome water_moments(library_results& lib) {
   const double I1 = cln::double_approx(lib.water.I[0]), I2 = cln::double_approx(lib.water.I[1]);
-  return outcome::measured(fixed_text(I1, 3) == "0.348" && fixed_text(I2, 3) == "0.653",
-                           "rotlie's \"water\": (" + fixed_text(I1, 5) + ", " + fixed_text(I2, 5) + ", 1)");
+  return outcome::measured(runs::fixed_text(I1, 3) == "0.348" && runs::fixed_text(I2, 3) == "0.653",
+                           "rotlie's \"water\": (" + runs::fixed_text(I1, 5) + ", " + runs::fixed_text(I2, 5) + ", 1)");
 }
 
 // LV 4.2: for the spherical top R is the identity (its Hamiltonian part vanishes).
@@ -159,7 +159,7 @@ outcome small_angle_error(library_results&) {
       }
       worst = std::max(worst, std::abs(std::sqrt(frobenius) / (std::sqrt(3.0) * std::sqrt(squares / 3)) - 1));
     }
-  return outcome::measured(worst < 1e-4, "largest relative difference " + significant_text(worst, 2));
+  return outcome::measured(worst < 1e-4, "largest relative difference " + runs::significant_text(worst, 2));
 }
 
 // LV 4.1 (from 3.1.2): RSRSRSR with I1 and I3 swapped (permutation CBA) has the remainder of
@@ -214,7 +214,7 @@ outcome best_r(library_results& lib) {
   for (std::size_t k = 0; k < lib.water_r.solutions.size(); ++k)
     if (lib.water_r.solutions[k].name() == "R ABC (4)") analytic_rank = k + 1;
   const std::string second =
-      ranked.size() > 1 ? "; next " + ranked[1].second + " at " + fixed_text(ranked[1].first / ranked[0].first, 2) + "×" : "";
+      ranked.size() > 1 ? "; next " + ranked[1].second + " at " + runs::fixed_text(ranked[1].first / ranked[0].first, 2) + "×" : "";
   return outcome::measured(!ranked.empty() && ranked[0].second == "R ABC (4)",
                            "best of " + std::to_string(ranked.size()) + ": " + ranked[0].second + second + "; R ABC (4) is #" +
                                std::to_string(analytic_rank) + " by ‖H_R5‖");
@@ -249,7 +249,7 @@ outcome best_p(library_results& lib) {
   return outcome::measured(measured[0].second == "P1 BAC (5)",
                            "best: " + measured[0].second + "; P1 BAC (5) is #" + std::to_string(p1_rank) + " of " +
                                std::to_string(j.at("solutions").size()) + " by ‖H_R5‖; the analytic favourite " + favourite.second +
-                               " is " + fixed_text(favourite.first / p1, 2) + "× less accurate than P1 BAC (5)");
+                               " is " + runs::fixed_text(favourite.first / p1, 2) + "× less accurate than P1 BAC (5)");
 }
 
 // id, statement (LV), where, tolerance, sections read, measurement.
@@ -328,7 +328,7 @@ report_section audit_section(const report_options& options) {
         "shows no number. Tolerances are per row; \"about N times\" is read as within 20 %. Files: [audit/audit.csv](audit/audit.csv), "
         "[audit/audit.json](audit/audit.json).\n\n"
      << counts[0] << " statements hold, " << counts[1] << " do not hold, " << counts[2] + counts[3]
-     << " are not checked in this run. The audit's own computations took " << fixed_text(cpu, 1) << " s of CPU time.\n\n"
+     << " are not checked in this run. The audit's own computations took " << runs::fixed_text(cpu, 1) << " s of CPU time.\n\n"
      << "| statement (LV) | where | rotlie (this run) | tolerance | verdict |\n|:--|:--|:--|:--|:--|\n";
   for (const auto& r : rows)
     md << "| " << cell(r.statement) << " | " << cell(r.where) << " | " << cell(r.value) << " | " << cell(r.tolerance) << " | "

@@ -16,7 +16,7 @@
 #include "rotlie/models/error_protocol.hpp"
 #include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/reports/chart.hpp"
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/runs/protocol_curves.hpp"
@@ -206,11 +206,11 @@ void search_text(section_state& w, const std::vector<solver::scanned_system>& sy
                               std::to_string(w.options.quick ? default_starts / 4 : default_starts) +
                               " starts each (the best systems of the broad scan, which `--full` or `rotlie sixth --inertia "
                               "water --all` repeats). ")
-     << "CPU: " << fixed_text(seconds, 1) << " s.\n\n"
+     << "CPU: " << runs::fixed_text(seconds, 1) << " s.\n\n"
      << "| systems | with real roots | starts | converged | distinct roots | hit once | hit twice | hit ≥ 3 | Good–Turing f1/N | Chao1 |\n"
      << "|---|---|---|---|---|---|---|---|---|---|\n"
      << "| " << h.systems << " | " << h.with_roots << " | " << h.starts << " | " << h.converged << " | " << h.roots << " | "
-     << h.hit_once << " | " << h.hit_twice << " | " << h.hit_more << " | " << fixed_text(h.unseen, 2) << " | " << fixed_text(h.chao1, 0)
+     << h.hit_once << " | " << h.hit_twice << " | " << h.hit_more << " | " << runs::fixed_text(h.unseen, 2) << " | " << runs::fixed_text(h.chao1, 0)
      << " |\n\n"
      << "Good–Turing's f1/N estimates the probability that the next converged start finds a root not yet seen; "
         "Chao1 = S + f1²/(2 f2) estimates how many roots the starting box reaches. "
@@ -233,8 +233,8 @@ void tables_text(section_state& w, const std::vector<found_table>& found) {
      << "| scheme | cost C | ‖H_R7‖ | ‖H_R7‖·C⁶ | residual | slope, water | slope, other body | hits |\n|---|---|---|---|---|---|---|---|\n";
   for (const auto& f : found) {
     const int c = schemes::cost_in_rotations(f.table);
-    md << "| " << f.table.name << " | " << c << " | " << scientific_or_dash(f.remainder7, 2) << " | " << scientific_or_dash(f.remainder7 * std::pow(c, 6), 2) << " | "
-       << scientific_or_dash(f.residual, 2) << " | " << fixed_text(f.slope_water, 3) << " | " << fixed_text(f.slope_other, 2) << " | " << f.hits << " |\n";
+    md << "| " << f.table.name << " | " << c << " | " << runs::scientific_or_dash(f.remainder7, 2) << " | " << runs::scientific_or_dash(f.remainder7 * std::pow(c, 6), 2) << " | "
+       << runs::scientific_or_dash(f.residual, 2) << " | " << runs::fixed_text(f.slope_water, 3) << " | " << runs::fixed_text(f.slope_other, 2) << " | " << f.hits << " |\n";
   }
   md << "\n";
   for (const auto& f : found) {
@@ -269,12 +269,12 @@ void sphere_text(section_state& w) {
       const auto x = solver::polished_root(s, r.x, digits);
       const std::string name = "D6:" + r.word + ":ABC (sphere)";
       const auto table = schemes::parse_scheme_table(solver::sixth_order_table_text(s, x, digits, sphere, name, "rotlie report"));
-      md << "| " << name << " | " << scientific_or_dash(r.remainder7, 2) << " | " << scientific_or_dash(cln::double_approx(solver::sixth_order_residual(s, x, digits)), 2)
-         << " | " << scientific_or_dash(solver::jacobian_condition_ratio(s, r.x), 2) << " | " << fixed_text(quad_slope(table, sphere), 3) << " | "
-         << fixed_text(quad_slope(table, water), 2) << " |\n";
+      md << "| " << name << " | " << runs::scientific_or_dash(r.remainder7, 2) << " | " << runs::scientific_or_dash(cln::double_approx(solver::sixth_order_residual(s, x, digits)), 2)
+         << " | " << runs::scientific_or_dash(solver::jacobian_condition_ratio(s, r.x), 2) << " | " << runs::fixed_text(quad_slope(table, sphere), 3) << " | "
+         << runs::fixed_text(quad_slope(table, water), 2) << " |\n";
     } catch (const std::runtime_error& e) {
-      md << "| D6:" << r.word << ":ABC | " << scientific_or_dash(r.remainder7, 2) << " | not polished: " << e.what() << " | "
-         << scientific_or_dash(solver::jacobian_condition_ratio(s, r.x), 2) << " | | |\n";
+      md << "| D6:" << r.word << ":ABC | " << runs::scientific_or_dash(r.remainder7, 2) << " | not polished: " << e.what() << " | "
+         << runs::scientific_or_dash(solver::jacobian_condition_ratio(s, r.x), 2) << " | | |\n";
     }
   }
   md << "\n";
@@ -350,8 +350,8 @@ report_section beyond_section(const report_options& options) {
       h7 = remainder7_of(t, base.word, water);
     } catch (const std::exception&) {
     }
-    md << "| " << c.name << " | " << c.cost << " | " << scientific_or_dash(c.constant, 2) << " | " << scientific_or_dash(h7, 2) << " | " << fixed_text(quad_slope(t, water), 3)
-       << " | " << fixed_text(1e9 * c.seconds_per_step / c.cost, 1) << " |\n";
+    md << "| " << c.name << " | " << c.cost << " | " << runs::scientific_or_dash(c.constant, 2) << " | " << runs::scientific_or_dash(h7, 2) << " | " << runs::fixed_text(quad_slope(t, water), 3)
+       << " | " << runs::fixed_text(1e9 * c.seconds_per_step / c.cost, 1) << " |\n";
   }
   md << "\n";
 
@@ -400,9 +400,9 @@ report_section beyond_section(const report_options& options) {
        << "1. **Is the best dedicated 6th-order scheme ≥ 3× more accurate than the best general 6th-order composition at "
           "equal CPU time?** Best dedicated: `"
        << d6.name << "`; best general (at equal CPU): `" << g6.name << "`. Ratio of errors at equal CPU time: **"
-       << scientific_or_dash(ratio, 2) << "** (" << (ratio >= 3 ? "yes" : "no") << "); at equal h/C: " << scientific_or_dash(ratio_at_equal_reduced_step(g6, d6), 2)
-       << ". K: " << scientific_or_dash(d6.constant, 2) << " against " << scientific_or_dash(g6.constant, 2) << "; CPU per rotation: "
-       << fixed_text(1e9 * d6.seconds_per_step / d6.cost, 1) << " ns against " << fixed_text(1e9 * g6.seconds_per_step / g6.cost, 1)
+       << runs::scientific_or_dash(ratio, 2) << "** (" << (ratio >= 3 ? "yes" : "no") << "); at equal h/C: " << runs::scientific_or_dash(ratio_at_equal_reduced_step(g6, d6), 2)
+       << ". K: " << runs::scientific_or_dash(d6.constant, 2) << " against " << runs::scientific_or_dash(g6.constant, 2) << "; CPU per rotation: "
+       << runs::fixed_text(1e9 * d6.seconds_per_step / d6.cost, 1) << " ns against " << runs::fixed_text(1e9 * g6.seconds_per_step / g6.cost, 1)
        << " ns.\n";
     const double e_target = 1e-10, cpu_d = cpu_for_error(d6, e_target);
     bool every = true;
@@ -413,12 +413,12 @@ report_section beyond_section(const report_options& options) {
       // Where the two laws meet: below it the 6th-order scheme needs less CPU for the same error.
       const double crossing = std::pow(cpu_for_error(c, 1) / cpu_for_error(d6, 1), 1.0 / (1.0 / 4 - 1.0 / 6));
       every = every && e4 > e_target;
-      rows << "| " << c.name << " | " << scientific_or_dash(e4, 2) << " | " << scientific_or_dash(e4 / e_target, 2) << " | " << scientific_or_dash(crossing, 2) << " |\n";
+      rows << "| " << c.name << " | " << runs::scientific_or_dash(e4, 2) << " | " << runs::scientific_or_dash(e4 / e_target, 2) << " | " << runs::scientific_or_dash(crossing, 2) << " |\n";
     }
     md << "2. **Is it more accurate than every 4th-order scheme of rotlie below a mean attitude error of 1e-10 at equal CPU "
           "time?** "
        << (every ? "Yes" : "No") << ": at the CPU time where `" << d6.name << "` reaches 1e-10 ("
-       << scientific_or_dash(cpu_d, 2) << " s per unit time), the 4th-order schemes (the reference compositions at their best permutation "
+       << runs::scientific_or_dash(cpu_d, 2) << " s per unit time), the 4th-order schemes (the reference compositions at their best permutation "
                         "and LV's champions N2 BAC (2), P1 BAC (5), R ABC (4)) reach:\n\n"
        << rows.str() << "\nBelow the crossing error the 6th-order scheme is the cheaper one (its curve is steeper).\n\n";
   }
@@ -432,7 +432,7 @@ report_section beyond_section(const report_options& options) {
             << p.cpu_seconds << "\n";
   write_file_atomically(options.out_dir / "beyond-curves.csv", csv.str());
   section.files.push_back(options.out_dir / "beyond-curves.csv");
-  md << "All curves: [beyond-curves.csv](beyond-curves.csv). Section CPU: " << fixed_text(cpu_now() - t0, 1) << " s.\n\n";
+  md << "All curves: [beyond-curves.csv](beyond-curves.csv). Section CPU: " << runs::fixed_text(cpu_now() - t0, 1) << " s.\n\n";
   section.markdown = md.str();
   return section;
 }

@@ -8,7 +8,7 @@
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
-#include "rotlie/reports/solve_io.hpp"
+#include "rotlie/runs/solve_io.hpp"
 
 namespace rotlie::reports {
 namespace {

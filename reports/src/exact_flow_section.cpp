@@ -10,7 +10,7 @@
 
 #include "rotlie/models/exact_free_body.hpp"
 #include "rotlie/reports/chart.hpp"
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/schemes/quad.hpp"
 
@@ -64,22 +64,22 @@ std::vector<regime> regimes(bool quick) {
   std::vector<regime> r;
   for (int e = 2; e <= 15; e += quick ? 4 : 1) {
     const double d = std::pow(10.0, -e);
-    r.push_back({"middle axis, water, G(0) = (d, 1, d)", "d = " + scientific_text(d, 1), water, {d, 1, d}, 3, d});
+    r.push_back({"middle axis, water, G(0) = (d, 1, d)", "d = " + runs::scientific_text(d, 1), water, {d, 1, d}, 3, d});
   }
   r.push_back({"on the separatrix, I = (3, 15/4, 5)", "G(0) = (1, 1/2, 1)", {3, 3.75, 5}, {1, 0.5, 1}, 10});
   r.push_back({"on the separatrix, I = (3, 15/4, 5)", "G(0) = (−1, 1/2, 1)", {3, 3.75, 5}, {-1, 0.5, 1}, 10});
   for (int e = 3; e <= 12; e += quick ? 9 : 3) {
     const double a = std::pow(10.0, -e);
-    r.push_back({"near-spherical, prolate (1, 1, 1 + a)", "a = " + scientific_text(a, 1), {1, 1, 1 + a}, {0.3, 1, 0.7}, 3});
-    r.push_back({"near-spherical, oblate (1, 1 + a, 1 + a)", "a = " + scientific_text(a, 1), {1, 1 + a, 1 + a}, {0.3, 1, 0.7}, 3});
-    r.push_back({"near-spherical, triaxial (1, 1 + a, 1 + 2a)", "a = " + scientific_text(a, 1), {1, 1 + a, 1 + 2 * a}, {0.3, 1, 0.7}, 3, a});
+    r.push_back({"near-spherical, prolate (1, 1, 1 + a)", "a = " + runs::scientific_text(a, 1), {1, 1, 1 + a}, {0.3, 1, 0.7}, 3});
+    r.push_back({"near-spherical, oblate (1, 1 + a, 1 + a)", "a = " + runs::scientific_text(a, 1), {1, 1 + a, 1 + a}, {0.3, 1, 0.7}, 3});
+    r.push_back({"near-spherical, triaxial (1, 1 + a, 1 + 2a)", "a = " + runs::scientific_text(a, 1), {1, 1 + a, 1 + 2 * a}, {0.3, 1, 0.7}, 3, a});
   }
   r.push_back({"thin rod (1e-8, 1, 1)", "T = 1 (3e7 rad of spin)", {1e-8, 1, 1}, {0.3, 1, 0.7}, 1});
   r.push_back({"flat, I1 + I2 = I3", "(1/4, 3/4, 1)", {0.25, 0.75, 1}, {0.3, 1, 0.7}, 3});
   r.push_back({"flat, near-symmetric", "(1/2, 1/2 + 1e-9, 1)", {0.5, 0.5 + 1e-9, 1}, {0.3, 1, 0.7}, 3});
   for (const double s : {1e-150, 1e-20, 1e20, 1e150})
-    r.push_back({"‖G‖ scaled, I = (0.4, 0.7, 1)", "‖G‖ ≈ " + scientific_text(s, 1), {0.4, 0.7, 1}, {0.1 * s, s, 0.2 * s}, 3 / s});
-  for (const double T : {1e3, 1e6}) r.push_back({"long time, water, G(0) = (1, 1, 1)", "T = " + scientific_text(T, 1), water, {1, 1, 1}, T});
+    r.push_back({"‖G‖ scaled, I = (0.4, 0.7, 1)", "‖G‖ ≈ " + runs::scientific_text(s, 1), {0.4, 0.7, 1}, {0.1 * s, s, 0.2 * s}, 3 / s});
+  for (const double T : {1e3, 1e6}) r.push_back({"long time, water, G(0) = (1, 1, 1)", "T = " + runs::scientific_text(T, 1), water, {1, 1, 1}, T});
   return r;
 }
 
@@ -121,8 +121,8 @@ report_section exact_flow_section(const report_options& options) {
       estimate{"estimate, middle axis", {}, {}, false};
   for (const auto& r : regimes(options.quick)) {
     const auto m = measure(r);
-    md << "| " << r.family << " | " << r.parameter << " | " << scientific_text(m.mc, 1) << " | " << scientific_text(m.q, 1) << " | " << scientific_text(m.g, 1) << " | "
-       << scientific_text(m.estimate, 1) << " | " << scientific_text(m.composed, 1) << " |\n";
+    md << "| " << r.family << " | " << r.parameter << " | " << runs::scientific_text(m.mc, 1) << " | " << runs::scientific_text(m.q, 1) << " | " << runs::scientific_text(m.g, 1) << " | "
+       << runs::scientific_text(m.estimate, 1) << " | " << runs::scientific_text(m.composed, 1) << " |\n";
     if (r.x > 0 && r.family.rfind("middle", 0) == 0) {
       middle.x.push_back(r.x), middle.y.push_back(std::max(m.q, 1e-18));
       estimate.x.push_back(r.x), estimate.y.push_back(m.estimate);

@@ -3,7 +3,7 @@
 
 #include "rotlie/lie/lie_poisson_algebra.hpp"
 #include "rotlie/lie/stage_table.hpp"
-#include "rotlie/reports/lie_tables_io.hpp"
+#include "rotlie/runs/lie_tables_io.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
 
@@ -38,11 +38,11 @@ report_section lie_algebra_section(const report_options& options) {
     write_file_atomically(dir / name, content);
     s.files.push_back(dir / name);
   };
-  write("dims.json", dims_json(pieces).dump(2) + "\n");
-  write("dims.md", dims_markdown(pieces));
-  write("table1.json", stages_json(blocks).dump(2) + "\n");
-  write("table1.md", stages_markdown(blocks));
-  write("table1.tex", stages_latex(blocks));
+  write("dims.json", runs::dims_json(pieces).dump(2) + "\n");
+  write("dims.md", runs::dims_markdown(pieces));
+  write("table1.json", runs::stages_json(blocks).dump(2) + "\n");
+  write("table1.md", runs::stages_markdown(blocks));
+  write("table1.tex", runs::stages_latex(blocks));
 
   std::ostringstream md;
   md << "## " << s.title << "\n\n"
@@ -57,12 +57,12 @@ report_section lie_algebra_section(const report_options& options) {
         "over Q) equal to the Theorem 1–2 bound (an upper bound, because every spanning vector was checked exactly "
         "to satisfy both theorems).\n\n"
      << "Files: [dims.md](dims.md), [dims.json](dims.json).\n\n"
-     << dims_markdown(pieces) << "\n"
+     << runs::dims_markdown(pieces) << "\n"
      << "### Table 1 (regenerated)\n\n"
      << "Files: [table1.md](table1.md), [table1.tex](table1.tex), [table1.json](table1.json). Rigid-body stage "
         "counts follow the paper's rules (N equations → N stages; symmetric: 2N_sym − 1 stages); the general blocks' "
         "stage columns are literature values the paper quotes, marked as such.\n\n"
-     << stages_markdown(blocks) << "\n";
+     << runs::stages_markdown(blocks) << "\n";
   s.markdown = md.str();
   return s;
 }

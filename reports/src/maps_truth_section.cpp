@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/reports/triangle_contour.hpp"
@@ -186,11 +186,11 @@ std::string summary_table(const std::vector<truth_row>& rows) {
       std::sort(v.begin(), v.end());
       return v[v.size() / 2];
     };
-    md << "| " << family << " | " << measured.size() << " | " << fixed_text(spearman(analytic, measured), 3) << " (CPU: "
-       << fixed_text(spearman(analytic, measured_cpu), 3) << ") | " << fixed_text(spearman(predicted, measured), 3) << " (CPU: "
-       << fixed_text(spearman(predicted, measured_cpu), 3) << ") | " << fixed_text(spearman(gradient, measured), 3) << " | "
-       << significant_text(median(off_pred), 3) << "; " << significant_text(median(off_an), 3) << " | " << wins_h << "; " << wins_cpu << " | "
-       << wins_an << " | " << flips_an << "; " << flips_pred << " | " << fixed_text(slope_lo, 2) << "–" << fixed_text(slope_hi, 2)
+    md << "| " << family << " | " << measured.size() << " | " << runs::fixed_text(spearman(analytic, measured), 3) << " (CPU: "
+       << runs::fixed_text(spearman(analytic, measured_cpu), 3) << ") | " << runs::fixed_text(spearman(predicted, measured), 3) << " (CPU: "
+       << runs::fixed_text(spearman(predicted, measured_cpu), 3) << ") | " << runs::fixed_text(spearman(gradient, measured), 3) << " | "
+       << runs::significant_text(median(off_pred), 3) << "; " << runs::significant_text(median(off_an), 3) << " | " << wins_h << "; " << wins_cpu << " | "
+       << wins_an << " | " << flips_an << "; " << flips_pred << " | " << runs::fixed_text(slope_lo, 2) << "–" << runs::fixed_text(slope_hi, 2)
        << " |\n";
   }
   return md.str();
@@ -204,9 +204,9 @@ std::string flips_table(const std::vector<truth_row>& rows) {
   for (const auto& r : rows)
     if ((r.analytic > 1) != (r.measured_h > 1)) {
       ++n;
-      md << "| " << r.family << " | " << fixed_text(r.I1, 4) << " | " << fixed_text(r.I2, 4) << " | " << r.best << " | "
-         << significant_text(r.analytic, 3) << " | " << significant_text(r.measured_h, 3) << " | " << significant_text(r.measured_cpu, 3) << " | "
-         << significant_text(r.predicted, 3) << " |\n";
+      md << "| " << r.family << " | " << runs::fixed_text(r.I1, 4) << " | " << runs::fixed_text(r.I2, 4) << " | " << r.best << " | "
+         << runs::significant_text(r.analytic, 3) << " | " << runs::significant_text(r.measured_h, 3) << " | " << runs::significant_text(r.measured_cpu, 3) << " | "
+         << runs::significant_text(r.predicted, 3) << " |\n";
     }
   if (n == 0) return "No body's verdict flips.\n";
   return md.str();
@@ -239,7 +239,7 @@ report_section maps_truth_section(const report_options& options) {
     }
     cpu_seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
     provenance = "computed in this run: the " + std::to_string(bodies.size() - 1) + " asymmetric bodies of the grid K = " +
-                 std::to_string(K) + " (issue 14's grid) and water, " + fixed_text(cpu_seconds, 0) + " s CPU" +
+                 std::to_string(K) + " (issue 14's grid) and water, " + runs::fixed_text(cpu_seconds, 0) + " s CPU" +
                  (options.full ? "" : " (`--full`: K = 11, 111 bodies)");
   }
   const auto rows = parse_rows(csv);
@@ -279,10 +279,10 @@ report_section maps_truth_section(const report_options& options) {
      << flips_table(rows) << "\n";
   for (const auto& r : rows)
     if (std::abs(r.I1 - 10220.0 / 29376) < 1e-12 && std::abs(r.I2 - 19187.0 / 29376) < 1e-12)
-      md << "Water, " << r.family << ": the analytic best " << r.best << " has analytic ratio " << significant_text(r.analytic, 3)
-         << ", measured " << significant_text(r.measured_h, 3) << " (equal CPU " << significant_text(r.measured_cpu, 3)
-         << "), transported prediction " << significant_text(r.predicted, 3) << "; error constant measured "
-         << significant_text(r.measured_constant, 3) << ", predicted " << significant_text(r.predicted_constant, 3) << ".\n\n";
+      md << "Water, " << r.family << ": the analytic best " << r.best << " has analytic ratio " << runs::significant_text(r.analytic, 3)
+         << ", measured " << runs::significant_text(r.measured_h, 3) << " (equal CPU " << runs::significant_text(r.measured_cpu, 3)
+         << "), transported prediction " << runs::significant_text(r.predicted, 3) << "; error constant measured "
+         << runs::significant_text(r.measured_constant, 3) << ", predicted " << runs::significant_text(r.predicted_constant, 3) << ".\n\n";
   md << measured_map_chart(options, rows, "N", grid_K, sec.files) << "\n"
      << measured_map_chart(options, rows, "P", grid_K, sec.files) << "\n"
      << scatter_chart(options, rows, sec.files) << "\n"

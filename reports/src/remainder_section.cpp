@@ -7,7 +7,7 @@
 
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/lie/theorems.hpp"
-#include "rotlie/reports/expression_io.hpp"
+#include "rotlie/runs/expression_io.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
 
@@ -55,7 +55,7 @@ std::string latex_third_order(const paper_form& p, const std::string& equation, 
   for (int i = 0; i < 3; ++i) {
     const GiNaC::ex c = p.k.remainder[3].coefficient(mons[i]);
     out << names[i] << " &= "
-        << (factored ? latex_factored(c, p.symbols, " ") : format_expression(c, p.symbols, expression_style::latex))
+        << (factored ? latex_factored(c, p.symbols, " ") : runs::format_expression(c, p.symbols, runs::expression_style::latex))
         << (i < 2 ? " \\\\\n" : "\n");
   }
   out << "\\end{align*}\n";
@@ -77,9 +77,9 @@ std::string latex_factored(const GiNaC::ex& e, const std::vector<GiNaC::symbol>&
     GiNaC::ex base = x;
     int power = 1;
     if (GiNaC::is_a<GiNaC::power>(x)) base = x.op(0), power = GiNaC::ex_to<GiNaC::numeric>(x.op(1)).to_int();
-    std::string text = format_expression(base, symbols, expression_style::latex);
+    std::string text = runs::format_expression(base, symbols, runs::expression_style::latex);
     if (text.rfind('-', 0) == 0) {
-      text = format_expression(-base, symbols, expression_style::latex);
+      text = runs::format_expression(-base, symbols, runs::expression_style::latex);
       if (power % 2 != 0) constant = -constant;
     }
     std::string t = "\\left(" + text + "\\right)";
@@ -93,7 +93,7 @@ std::string latex_factored(const GiNaC::ex& e, const std::vector<GiNaC::symbol>&
   std::sort(factors.begin(), factors.end(), [](const std::string& a, const std::string& b) {
     return a.size() != b.size() ? a.size() < b.size() : a < b;
   });
-  std::string out = format_expression(constant, {}, expression_style::latex);
+  std::string out = runs::format_expression(constant, {}, runs::expression_style::latex);
   for (const auto& t : factors) out += joiner + t;
   return out;
 }
@@ -103,7 +103,7 @@ std::string latex_resultant(const paper_form& p, const std::string& v2_name) {
   const GiNaC::symbol v2 = p.coefficients.free.at(v2_name);
   const GiNaC::ex res = GiNaC::resultant(p.k.remainder[3].coefficient(lie::monomial(2, 2, 0)).expand(),
                                          p.k.remainder[3].coefficient(lie::monomial(2, 0, 2)).expand(), v2);
-  return "\\mathrm{Res}_{" + format_expression(v2, {v2}, expression_style::latex) + "}(P'_1, P'_2) &= " +
+  return "\\mathrm{Res}_{" + runs::format_expression(v2, {v2}, runs::expression_style::latex) + "}(P'_1, P'_2) &= " +
          latex_factored(res, p.symbols, " \\\\\n &\\quad\\times ");
 }
 

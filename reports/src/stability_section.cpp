@@ -6,7 +6,7 @@
 #include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/models/stability_scan.hpp"
 #include "rotlie/reports/chart.hpp"
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 #include "rotlie/reports/report.hpp"
@@ -72,7 +72,7 @@ report_section stability_section(const report_options& options) {
       tables.push_back(p1), tables.push_back(r4);
     }
     chart c;
-    c.title = "Stability, " + b.title + " (I = " + b.inertia + "), T = " + significant_text(total_time, 3);
+    c.title = "Stability, " + b.title + " (I = " + b.inertia + "), T = " + runs::significant_text(total_time, 3);
     c.x_label = "reduced step h/C";
     c.y_label = "mean attitude error";
     c.horizontal_line = threshold;
@@ -88,9 +88,9 @@ report_section stability_section(const report_options& options) {
       for (const auto& p : scan.points)
         if (p.finite) series.x.push_back(p.h / cost), series.y.push_back(p.mean_error);
       c.series.push_back(std::move(series));
-      md << "| " << t.name << " | " << cost << " | " << significant_text(scan.last_working_h, 3) << " | "
-         << significant_text(scan.last_working_h / cost, 3) << " | "
-         << (scan.failure.empty() ? std::string("none up to T") : significant_text(scan.first_failing_h, 3)) << " | "
+      md << "| " << t.name << " | " << cost << " | " << runs::significant_text(scan.last_working_h, 3) << " | "
+         << runs::significant_text(scan.last_working_h / cost, 3) << " | "
+         << (scan.failure.empty() ? std::string("none up to T") : runs::significant_text(scan.first_failing_h, 3)) << " | "
          << (scan.failure.empty() ? "" : scan.failure) << " |\n";
     }
     md << "\n";

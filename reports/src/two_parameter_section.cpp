@@ -11,7 +11,7 @@
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/runs/family_names.hpp"
 #include "rotlie/reports/chart.hpp"
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
@@ -33,8 +33,8 @@ void ranking_table(std::ostringstream& md, const solver::two_parameter_result& r
   for (const auto& e : r.entries) {
     if (!e.polished || rank == rows) continue;
     ++rank;
-    md << "| " << rank << " | " << runs::two_parameter_name(e) << " | " << cost_of(e) << " | " << significant_text(e.best.remainder, 6) << " | "
-       << significant_text(e.best.remainder * std::pow(cost_of(e), 4), 4) << " | " << e.search.minima.size() << " | "
+    md << "| " << rank << " | " << runs::two_parameter_name(e) << " | " << cost_of(e) << " | " << runs::significant_text(e.best.remainder, 6) << " | "
+       << runs::significant_text(e.best.remainder * std::pow(cost_of(e), 4), 4) << " | " << e.search.minima.size() << " | "
        << e.search.minima.front().hits << " / " << e.search.converged << " / " << e.search.starts << " | "
        << lie::to_decimal(e.best.projected_gradient, 2) << " | " << lie::to_decimal(e.best.order_residual, 2) << " |\n";
   }
@@ -43,7 +43,7 @@ void ranking_table(std::ostringstream& md, const solver::two_parameter_result& r
 std::string coefficients_block(const solver::two_parameter_entry& e) {
   std::ostringstream o;
   const auto layout = bch::layout_scheme(e.word, e.split, e.permutation);
-  o << "```\n" << runs::two_parameter_name(e) << "   word " << layout.permuted << "   ‖H_R5‖ = " << significant_text(e.best.remainder, 10) << "\n";
+  o << "```\n" << runs::two_parameter_name(e) << "   word " << layout.permuted << "   ‖H_R5‖ = " << runs::significant_text(e.best.remainder, 10) << "\n";
   std::vector<std::string> seen;
   for (const auto& st : layout.stages) {
     if (std::find(seen.begin(), seen.end(), st.coefficient) != seen.end()) continue;
@@ -114,7 +114,7 @@ report_section two_parameter_section(const report_options& options) {
         "relative to the terms of ∇f); the reduced Hessian is positive (a local minimum). **Not certified**: that the "
         "best minimum found is the global one, of a system or of the family; the counts of distinct minima and of "
         "the starts that reached the best are given for that judgement. Only the ten ABC systems with the smallest minima are polished here (`rotlie solve` polishes every system). Search and polishing took "
-     << significant_text(q.seconds, 3) << " s (Q) and " << significant_text(qrs.seconds, 3) << " s (QRS) of CPU.\n\n";
+     << runs::significant_text(q.seconds, 3) << " s (Q) and " << runs::significant_text(qrs.seconds, 3) << " s (QRS) of CPU.\n\n";
   md << "### Q: 13-stage ABC palindromes, the ten best systems by ‖H_R5‖\n\n";
   ranking_table(md, q, 10);
   md << "\n### QRS: 11-stage RS palindromes\n\n";
@@ -153,7 +153,7 @@ report_section two_parameter_section(const report_options& options) {
   curves.push_back(runner.run(table_of(*best_rs)));
   curves.back().name = runs::two_parameter_name(*best_rs);
   const auto& p1_curve = curves[0];
-  md << "### Against P1 BAC (5) (cost 11, ‖H_R5‖ = " << significant_text(p1.analytic_remainder, 5) << ") at equal cost\n\n"
+  md << "### Against P1 BAC (5) (cost 11, ‖H_R5‖ = " << runs::significant_text(p1.analytic_remainder, 5) << ") at equal cost\n\n"
      << "Predicted: R_P1 / R_new × (11 / C_new)^4, the ratio of the errors at equal h/C if the error were "
         "‖H_R5‖ C^4 (h/C)^4. Measured: LV's protocol (G(0) = (1, 1, 1), T = 1, h = 2^-i, i = 1 … " << max_level
      << ", mean attitude error in long double, constant error/(h/C)^4 over the three finest steps; CPU time of the "
@@ -164,10 +164,10 @@ report_section two_parameter_section(const report_options& options) {
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const auto& k = curves[i];
     const bool known = remainders[i] > 0;
-    md << "| " << k.name << " | " << k.cost << " | " << (known ? significant_text(remainders[i], 4) : std::string("—")) << " | "
-       << significant_text(k.slope, 4) << " | " << significant_text(k.constant, 3) << " | "
-       << (known ? significant_text(p1.analytic_remainder / remainders[i] * std::pow(11.0 / k.cost, 4), 3) : std::string("—")) << " | "
-       << significant_text(runs::ratio_at_equal_reduced_step(p1_curve, k), 3) << " | " << significant_text(runs::ratio_at_equal_cpu_time(p1_curve, k), 3) << " |\n";
+    md << "| " << k.name << " | " << k.cost << " | " << (known ? runs::significant_text(remainders[i], 4) : std::string("—")) << " | "
+       << runs::significant_text(k.slope, 4) << " | " << runs::significant_text(k.constant, 3) << " | "
+       << (known ? runs::significant_text(p1.analytic_remainder / remainders[i] * std::pow(11.0 / k.cost, 4), 3) : std::string("—")) << " | "
+       << runs::significant_text(runs::ratio_at_equal_reduced_step(p1_curve, k), 3) << " | " << runs::significant_text(runs::ratio_at_equal_cpu_time(p1_curve, k), 3) << " |\n";
   }
   md << "\nA ratio above 1 means more accurate than P1 BAC (5). ‖H_R5‖ (the norm of the coefficients on the "
         "monomials G1^a G2^b G3^c) is a proxy: where the prediction and the measurement differ, the measurement "
@@ -186,8 +186,8 @@ report_section two_parameter_section(const report_options& options) {
       const double ratio = runs::ratio_at_equal_reduced_step(p1_screen, k);
       ++measured;
       better += ratio > 1;
-      md << "| " << runs::two_parameter_name(e) << " | " << significant_text(e.best.remainder, 4) << " | "
-         << significant_text(p1.analytic_remainder / e.best.remainder * std::pow(11.0 / cost_of(e), 4), 3) << " | " << significant_text(ratio, 3) << " |\n";
+      md << "| " << runs::two_parameter_name(e) << " | " << runs::significant_text(e.best.remainder, 4) << " | "
+         << runs::significant_text(p1.analytic_remainder / e.best.remainder * std::pow(11.0 / cost_of(e), 4), 3) << " | " << runs::significant_text(ratio, 3) << " |\n";
     }
   md << "\n" << better << " of " << measured << " polished systems are more accurate than P1 BAC (5) at equal h/C.\n\n";
   const auto write = [&](const std::string& file, bool cpu, const std::string& caption) {

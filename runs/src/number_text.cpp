@@ -1,10 +1,10 @@
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 std::string fixed_text(double x, int decimals) {
   std::ostringstream o;
@@ -26,4 +26,4 @@ std::string significant_text(double x, int digits) {
   return o.str();
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

@@ -3,7 +3,7 @@
 // exact bytes when its code moves. Each is an std::ostream with the named flags, nothing more.
 #include <string>
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 /// `decimals` digits after the point (std::fixed): fixed_text(3.14159, 2) is "3.14".
 std::string fixed_text(double x, int decimals);
@@ -18,4 +18,4 @@ std::string scientific_or_dash(double x, int decimals);
 /// trailing zeros dropped). digits = 6 is what `std::cout << x` prints.
 std::string significant_text(double x, int digits);
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs
