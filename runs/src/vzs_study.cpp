@@ -10,6 +10,7 @@
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/bch/scheme_word.hpp"
 #include "rotlie/models/cpu_time.hpp"
+#include "rotlie/models/order_fit.hpp"
 #include "rotlie/models/scenes/water.hpp"
 #include "rotlie/runs/scheme_names.hpp"
 #include "rotlie/schemes/quad.hpp"
@@ -146,15 +147,13 @@ vzs_budget vzs_budget_for(bool quick) {
 }
 
 double growth_exponent(const models::free_water_result& r) {
-  std::vector<double> x, y;
+  // δ against t in the one fit's terms: t in place of h, every positive sample of the second half
+  std::vector<models::protocol_point> points;
   for (std::size_t j = r.t_ps.size() / 2; j < r.t_ps.size(); ++j)
-    if (r.delta[j] > 0) x.push_back(std::log(r.t_ps[j])), y.push_back(std::log(r.delta[j]));
-  double mx = 0, my = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) mx += x[i], my += y[i];
-  mx /= static_cast<double>(x.size()), my /= static_cast<double>(x.size());
-  double sxy = 0, sxx = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
-  return sxx > 0 ? sxy / sxx : std::nan("");
+    if (r.delta[j] > 0) points.push_back({r.t_ps[j], r.t_ps[j], r.delta[j], 0});
+  models::fit_rule every;
+  every.margin = 0;
+  return models::fitted_order(points, every);
 }
 
 vzs_study_result vzs_study(const vzs_budget& b, const std::function<void(const std::string&)>& progress_sink) {

@@ -80,7 +80,7 @@ struct vzs_study_result {
 /// Runs the whole study; `progress` (may be empty) receives a line before each piece.
 vzs_study_result vzs_study(const vzs_budget& budget, const std::function<void(const std::string&)>& progress = {});
 
-/// Slope of log δ against log t over the second half of the samples.
+/// Slope of log δ against log t over the second half of the samples (models::fitted_order).
 double growth_exponent(const models::free_water_result& r);
 
 }  // namespace rotlie::runs
