@@ -265,7 +265,7 @@ report_section maps_truth_section(const report_options& options) {
         "identity attitude, T = 1, h = 2^-" << truth_min_level << " … 2^-" << truth_max_level
      << ", long double, error constants error / (h/C)^4 from the three finest steps) against RS4 S5 McLachlan at its "
         "best MEASURED permutation among the six. Ratios > 1: the family's integrator is more accurate. Equal CPU: "
-        "the error constants scaled by the measured process CPU seconds per step of the double stepper "
+        "the error constants scaled by the measured CPU seconds per step (this thread) of the double stepper "
         "(fastest of 5 runs of ≥ 10 ms).\n\n"
      << "Predictors, computed from H_R5 alone, without running any scheme: (a) the maps' ratio R_M / R_best · "
         "(12/C)^4; (b) the **transported remainder**: a 4th-order symmetric composition is the exact flow of "
