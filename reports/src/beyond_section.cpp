@@ -7,13 +7,11 @@
 #include <cmath>
 #include <sstream>
 
-#include "rotlie/bch/scheme_word.hpp"
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/runs/number_text.hpp"
 #include "rotlie/runs/sixth_order_study.hpp"
-#include "rotlie/schemes/reference_schemes.hpp"
 
 namespace rotlie::reports {
 
@@ -87,7 +85,7 @@ void tables_text(section_state& w, const std::vector<runs::sixth_order_found>& f
         "five points; on water and on the body (1/2, 4/5, 1), where a dedicated scheme must lose its order.\n\n"
      << "| scheme | cost C | ‖H_R7‖ | ‖H_R7‖·C⁶ | residual | slope, water | slope, other body | hits |\n|---|---|---|---|---|---|---|---|\n";
   for (const auto& f : found) {
-    const int c = schemes::cost_in_rotations(f.table);
+    const int c = f.cost;
     md << "| " << f.table.name << " | " << c << " | " << runs::scientific_or_dash(f.remainder7, 2) << " | " << runs::scientific_or_dash(f.remainder7 * std::pow(c, 6), 2) << " | "
        << runs::scientific_or_dash(f.residual, 2) << " | " << runs::fixed_text(f.slope_water, 3) << " | " << runs::fixed_text(f.slope_other, 2) << " | " << f.hits << " |\n";
   }
@@ -149,7 +147,7 @@ report_section beyond_section(const report_options& options) {
      << "Coefficients from the literature, cited in each table's `source` (`rotlie sixth --references`); ABC versions "
         "of the compositions of ABCBA leapfrogs, and of Blanes & Moan's two-part S10 through the adjoint composition "
         "φ = ABC, φ* = CBA.\n\n"
-     << "‖H_R7‖ is shown where the word has at most " << bch::max_word_length
+     << "‖H_R7‖ is shown where the word has at most " << study.remainder_word_limit
      << " stages (the remainder engine's limit; the ABC compositions are longer).\n\n"
      << "| scheme | cost C | K = err/(h/C)⁶ | ‖H_R7‖ | slope (float128) | CPU per rotation (ns) |\n|---|---|---|---|---|---|\n";
   for (std::size_t k = 0; k < general6.size(); ++k) {

@@ -4,10 +4,10 @@
 #include <iomanip>
 #include <sstream>
 
-#include "rotlie/lie/exact_number.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/runs/dedicated_study.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/runs/solve_io.hpp"
 
 namespace rotlie::reports {
@@ -17,7 +17,7 @@ std::string coefficient_cells(const solver::dedicated_solution& s, int digits) {
   std::string out;
   for (const auto& f : s.free)
     for (const auto& [n, v] : s.coefficients)
-      if (n == f) out += (out.empty() ? "" : "; ") + n + " = " + lie::to_decimal(v, digits);
+      if (n == f) out += (out.empty() ? "" : "; ") + n + " = " + runs::decimal_text(v, digits);
   return out;
 }
 

@@ -6,7 +6,6 @@
 #include <map>
 #include <sstream>
 
-#include "rotlie/models/scenes/water_model.hpp"
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report_csv_reader.hpp"
@@ -142,7 +141,7 @@ report_section section(const report_options& options, const budget& b) {
   }
   md << "## " << s.title << "\n\n"
      << "van Zon & Schofield section V.C: 512 rigid water molecules at 297 K and 0.9973 g/cm³ (cubic box of "
-     << runs::significant_text(models::liquid_water_box(512, 0.9973), 5)
+     << runs::significant_text(study.box_A, 5)
      << " Å, periodic, minimum image). Model: TIP3P (Jorgensen et al. 1983; the paper does not say which of its models; "
         "TIP3P's three massive sites let LAMMPS integrate the very same rigid body). Site–site Coulomb and O–O "
         "Lennard-Jones with a smooth molecular cutoff: the whole molecule-pair energy times a C³ switch of the O–O "
@@ -151,7 +150,7 @@ report_section section(const report_options& options, const budget& b) {
      << runs::significant_text(b.sizes.equilibration_ps, 3) << " ps with a Berendsen thermostat (τ = 0.1 ps), then NVE.\n\n"
      << "SIER2/N2:BAC:2 and SIER4/P1:BAC:5 are SIER2 and SIER4 with the exact free rotation replaced by a dedicated "
         "rotor solved for the TIP3P body (moments "
-     << models::tip3p_moments_text[0] << ", " << models::tip3p_moments_text[1] << ", " << models::tip3p_moments_text[2]
+     << study.moments_text[0] << ", " << study.moments_text[1] << ", " << study.moments_text[2]
      << " g/mol·Å², I₃ = I₁ + I₂ exactly): the solver's best-ranked N and P solutions for it (`rotlie solve --family N` and "
         "`--family P --scheme P1 --perm BAC` with these moments).\n\n"
      << "Budget: " << b.words << ". ΔE/ΔV is the rms fluctuation of the total energy over that of the potential energy, "

@@ -8,7 +8,6 @@
 #include <iomanip>
 #include <sstream>
 
-#include "rotlie/lie/exact_number.hpp"
 #include "rotlie/runs/family_names.hpp"
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/runs/number_text.hpp"
@@ -21,7 +20,7 @@ namespace {
 
 constexpr int digits = runs::two_parameter_study_digits;
 
-int cost_of(const solver::two_parameter_entry& e) { return bch::family_cost(runs::two_parameter_family(e.split)); }
+int cost_of(const solver::two_parameter_entry& e) { return runs::two_parameter_cost(e); }
 
 void ranking_table(std::ostringstream& md, const solver::two_parameter_result& r, std::size_t rows) {
   md << "| rank | scheme | C/C0 | ‖H_R5‖ | ‖H_R5‖·C^4 | distinct minima | hits of the best / converged / starts | "
@@ -33,20 +32,15 @@ void ranking_table(std::ostringstream& md, const solver::two_parameter_result& r
     md << "| " << rank << " | " << runs::two_parameter_name(e) << " | " << cost_of(e) << " | " << runs::significant_text(e.best.remainder, 6) << " | "
        << runs::significant_text(e.best.remainder * std::pow(cost_of(e), 4), 4) << " | " << e.search.minima.size() << " | "
        << e.search.minima.front().hits << " / " << e.search.converged << " / " << e.search.starts << " | "
-       << lie::to_decimal(e.best.projected_gradient, 2) << " | " << lie::to_decimal(e.best.order_residual, 2) << " |\n";
+       << runs::decimal_text(e.best.projected_gradient, 2) << " | " << runs::decimal_text(e.best.order_residual, 2) << " |\n";
   }
 }
 
 std::string coefficients_block(const solver::two_parameter_entry& e) {
   std::ostringstream o;
-  const auto layout = bch::layout_scheme(e.word, e.split, e.permutation);
-  o << "```\n" << runs::two_parameter_name(e) << "   word " << layout.permuted << "   ‖H_R5‖ = " << runs::significant_text(e.best.remainder, 10) << "\n";
-  std::vector<std::string> seen;
-  for (const auto& st : layout.stages) {
-    if (std::find(seen.begin(), seen.end(), st.coefficient) != seen.end()) continue;
-    seen.push_back(st.coefficient);
-    o << st.letter << " " << st.coefficient << " = " << lie::to_decimal(e.best.values.at(st.coefficient), digits) << "\n";
-  }
+  const auto listing = runs::two_parameter_coefficients(e);
+  o << "```\n" << runs::two_parameter_name(e) << "   word " << listing.permuted_word << "   ‖H_R5‖ = " << runs::significant_text(e.best.remainder, 10) << "\n";
+  for (const auto& c : listing.coefficients) o << c.letter << " " << c.name << " = " << runs::decimal_text(c.value, digits) << "\n";
   o << "```\n";
   return o.str();
 }

@@ -54,6 +54,8 @@ liquid_water_study_result liquid_water_study(const liquid_water_budget& b, bool 
     if (progress) progress(line);
   };
   liquid_water_study_result out;
+  out.box_A = models::liquid_water_box(512, 0.9973);
+  for (std::size_t k = 0; k < 3; ++k) out.moments_text[k] = models::tip3p_moments_text[k];
   models::liquid_water_run_options o;
   o.threads = 2;
   o.runs = b.runs;

@@ -4,6 +4,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "rotlie/lie/exact_number.hpp"
+
 namespace rotlie::runs {
 
 std::string fixed_text(double x, int decimals) {
@@ -25,5 +27,7 @@ std::string significant_text(double x, int digits) {
   o << std::setprecision(digits) << x;
   return o.str();
 }
+
+std::string decimal_text(const cln::cl_RA& x, int digits) { return lie::to_decimal(x, digits); }
 
 }  // namespace rotlie::runs

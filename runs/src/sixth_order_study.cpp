@@ -122,6 +122,7 @@ void polish_best(sixth_order_study_result& out, const lie::moments_of_inertia& w
     f.text = solver::sixth_order_table_text(s, x, digits, water, name,
                                             "rotlie report (Beyond the paper): H_R3 = H_R5 = 0, Newton from random starts, polished");
     f.table = schemes::parse_scheme_table(f.text);
+    f.cost = schemes::cost_in_rotations(f.table);
     f.remainder7 = r.remainder7;
     f.residual = cln::double_approx(solver::sixth_order_residual(s, x, digits));
     f.hits = r.hits;
@@ -183,6 +184,7 @@ sixth_order_study_result sixth_order_study(bool quick, bool full, const progress
   const double t0 = models::thread_cpu_seconds();
   sixth_order_study_result out;
   out.full = full;
+  out.remainder_word_limit = bch::max_word_length;
   const auto water = lie::parse_moments("water");
   progress("searching");
   search(out, quick, water, progress);

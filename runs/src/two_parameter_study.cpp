@@ -2,6 +2,8 @@
 // two_parameter_study.hpp).
 #include "rotlie/runs/two_parameter_study.hpp"
 
+#include <algorithm>
+
 #include "rotlie/bch/scheme_word.hpp"
 #include "rotlie/runs/family_names.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
@@ -18,6 +20,16 @@ std::optional<solver::two_parameter_entry> best_entry(const solver::two_paramete
 }
 
 }  // namespace
+
+two_parameter_listing two_parameter_coefficients(const solver::two_parameter_entry& e) {
+  const auto layout = bch::layout_scheme(e.word, e.split, e.permutation);
+  two_parameter_listing out{layout.permuted, {}};
+  for (const auto& st : layout.stages) {
+    if (std::any_of(out.coefficients.begin(), out.coefficients.end(), [&](const auto& c) { return c.name == st.coefficient; })) continue;
+    out.coefficients.push_back({st.letter, st.coefficient, e.best.values.at(st.coefficient)});
+  }
+  return out;
+}
 
 two_parameter_study_result two_parameter_study(bool quick, const std::function<void(const std::string&)>& progress_to) {
   const auto progress = [&](const std::string& line) {

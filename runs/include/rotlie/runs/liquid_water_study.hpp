@@ -3,6 +3,7 @@
 // sweep of every integrator over its steps on 512 TIP3P molecules, the fitted slopes, g_OO(r), and the
 // side by side with LAMMPS (single point and timed NVE). Plain numbers; reports/liquid_water_section
 // formats and draws them.
+#include <array>
 #include <functional>
 #include <string>
 #include <utility>
@@ -43,6 +44,8 @@ struct liquid_water_timing {
 };
 
 struct liquid_water_study_result {
+  double box_A = 0;                        ///< side of the cubic box of 512 molecules at 0.9973 g/cm³
+  std::array<std::string, 3> moments_text;  ///< TIP3P's exact moments, g/mol·Å²
   std::vector<liquid_water_sweep> sweeps;
   /// ΔE/ΔV below this (%) is a point of its curve; at or above it the run left its stable range.
   double diverged_percent = 100;

@@ -1,6 +1,8 @@
 #pragma once
 // How the report and the CLI print a double: one function per format, so that a table keeps its
 // exact bytes when its code moves. Each is an std::ostream with the named flags, nothing more.
+#include <cln/rational.h>
+
 #include <string>
 
 namespace rotlie::runs {
@@ -17,5 +19,8 @@ std::string scientific_or_dash(double x, int decimals);
 /// `digits` significant digits in the stream's general format (as %g: "0.00123", "1.2e+03",
 /// trailing zeros dropped). digits = 6 is what `std::cout << x` prints.
 std::string significant_text(double x, int digits);
+
+/// An exact number as `digits` decimals (lie::to_decimal): the coefficients of tables and solutions.
+std::string decimal_text(const cln::cl_RA& x, int digits);
 
 }  // namespace rotlie::runs

@@ -21,6 +21,7 @@ inline constexpr int sixth_order_default_starts = 200, sixth_order_full_starts =
 /// A dedicated 6th-order table found for water.
 struct sixth_order_found {
   schemes::scheme_table table;
+  int cost = 0;      ///< rotations per step
   std::string text;  ///< the table as written
   std::string file;  ///< its file name in the report folder
   double remainder7 = 0, residual = 0, slope_water = 0, slope_other = 0;  ///< slopes in float128; other = (1/2, 4/5, 1)
@@ -43,6 +44,7 @@ struct sixth_order_general {
 };
 
 struct sixth_order_study_result {
+  std::size_t remainder_word_limit = 0;  ///< longest word whose ‖H_R7‖ the remainder engine computes
   bool full = false;
   int starts = 0;                                ///< per system
   std::vector<solver::scanned_system> systems;   ///< the search

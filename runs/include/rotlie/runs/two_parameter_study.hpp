@@ -24,6 +24,19 @@ struct two_parameter_screened {
   double ratio = 0;      ///< P1's error over this one's at equal h/C
 };
 
+/// A system's coefficients in stage order, each name once: the part letter after the permutation, the
+/// name (a1, b2, …), the value as written.
+struct two_parameter_coefficient {
+  char letter = 'A';
+  std::string name;
+  cln::cl_RA value;
+};
+struct two_parameter_listing {
+  std::string permuted_word;
+  std::vector<two_parameter_coefficient> coefficients;
+};
+two_parameter_listing two_parameter_coefficients(const solver::two_parameter_entry& e);
+
 struct two_parameter_study_result {
   int abc_starts = 0, rs_starts = 0;  ///< per system
   std::size_t abc_words = 0;          ///< 13-stage ABC palindromes
