@@ -2,7 +2,6 @@
 // the measured ratio and two cheap predictors, over a fixed set of bodies (runs/maps_truth.hpp).
 #include <algorithm>
 #include <cmath>
-#include <ctime>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -14,17 +13,14 @@
 #include "rotlie/reports/triangle_contour.hpp"
 #include "rotlie/runs/maps_truth.hpp"
 #include "rotlie/runs/maps_truth_csv.hpp"
+#include "rotlie/runs/maps_study.hpp"
 #include "rotlie/runs/text_file.hpp"
-#include "rotlie/solver/body_grid.hpp"
 
 namespace rotlie::reports {
 
 // From the runs library (rotlie::runs):
-using runs::measure_body_truth;
 using runs::spearman;
-using runs::truth_bodies;
 using runs::truth_csv_header;
-using runs::truth_csv_rows;
 using runs::truth_max_level;
 using runs::truth_min_level;
 
@@ -229,16 +225,12 @@ report_section maps_truth_section(const report_options& options) {
     csv = runs::read_bounded_file(given, largest_csv_bytes);  // the one bounded reader: no FIFO waited on
     provenance = "read from the given measured-ratios.csv (`bench/maps_truth_study`)";
   } else {
-    const auto bodies = truth_bodies(K);
-    csv = truth_csv_header();
-    const std::clock_t start = std::clock();
-    for (std::size_t k = 0; k < bodies.size(); ++k) {
-      if (options.progress)
-        options.progress("Maps truth: body " + std::to_string(k + 1) + " of " + std::to_string(bodies.size()));
-      csv += truth_csv_rows(measure_body_truth(bodies[k], {"N", "P"}));
-    }
-    cpu_seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
-    provenance = "computed in this run: the " + std::to_string(bodies.size() - 1) + " asymmetric bodies of the grid K = " +
+    const auto measured = runs::measure_truth_grid(K, [&](const std::string& line) {
+      if (options.progress) options.progress("Maps truth: " + line);
+    });
+    csv = measured.csv;
+    cpu_seconds = measured.cpu_seconds;
+    provenance = "computed in this run: the " + std::to_string(measured.bodies - 1) + " asymmetric bodies of the grid K = " +
                  std::to_string(K) + " (issue 14's grid) and water, " + runs::fixed_text(cpu_seconds, 0) + " s CPU" +
                  (options.full ? "" : " (`--full`: K = 11, 111 bodies)");
   }
