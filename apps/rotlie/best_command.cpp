@@ -1,13 +1,13 @@
 // rotlie best: the best integrator for one body (runs/best_for_body.hpp), printed as a table or as
-// JSON (reports/best_io.hpp). Every name is one that `integrate` accepts with the same --inertia.
+// JSON (runs/best_io.hpp). Every name is one that `integrate` accepts with the same --inertia.
 #include <iostream>
 #include <sstream>
 
 #include "arguments.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
-#include "rotlie/reports/number_text.hpp"
-#include "rotlie/reports/best_io.hpp"
+#include "rotlie/runs/number_text.hpp"
+#include "rotlie/runs/best_io.hpp"
 #include "rotlie/runs/best_for_body.hpp"
 #include "rotlie/runs/map_file.hpp"
 #include "rotlie/solver/scheme_table.hpp"
@@ -16,7 +16,7 @@ namespace rotlie::app {
 namespace {
 
 // 3 digits after the point unless said (the tables' habit).
-std::string scientific(double x, int digits = 3) { return reports::scientific_text(x, digits); }
+std::string scientific(double x, int digits = 3) { return runs::scientific_text(x, digits); }
 
 }  // namespace
 
@@ -28,7 +28,7 @@ int run_best(const best_options& options) {
     r = runs::best_for_body(body, options.analytic_only, [&](const std::string& line) { progress.show(line); });
   }
   if (options.json) {
-    std::cout << reports::best_json(r).dump(2) << "\n";
+    std::cout << runs::best_json(r).dump(2) << "\n";
     return 0;
   }
   const auto& points = r.points;

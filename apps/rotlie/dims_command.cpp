@@ -4,7 +4,7 @@
 #include "commands.hpp"
 #include "progress.hpp"
 #include "rotlie/lie/lie_poisson_algebra.hpp"
-#include "rotlie/reports/lie_tables_io.hpp"
+#include "rotlie/runs/lie_tables_io.hpp"
 
 namespace rotlie::app {
 
@@ -19,9 +19,9 @@ int run_dims(const dims_options& options) {
   };
   const auto pieces = lie::lie_poisson_algebra(max_order, algebra);
   if (options.json)
-    std::cout << reports::dims_json(pieces).dump(2) << "\n";
+    std::cout << runs::dims_json(pieces).dump(2) << "\n";
   else
-    std::cout << reports::dims_text(pieces);
+    std::cout << runs::dims_text(pieces);
   return 0;
 }
 

@@ -1,13 +1,13 @@
 // integrate, order and exact: the free-body runs of the library floor (runs/free_body_runs.hpp)
-// on the command line, printed as a table or as JSON (reports/free_body_io.hpp).
+// on the command line, printed as a table or as JSON (runs/free_body_io.hpp).
 #include <iostream>
 #include <sstream>
 
 #include "arguments.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
-#include "rotlie/reports/free_body_io.hpp"
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/free_body_io.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/runs/body_names.hpp"
 #include "rotlie/runs/free_body_runs.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
@@ -15,7 +15,7 @@
 namespace rotlie::app {
 namespace {
 
-std::string number(double x) { return reports::significant_text(x, 6); }
+std::string number(double x) { return runs::significant_text(x, 6); }
 
 void warn_reference(double error, double reference_error, const std::string& where) {
   std::cerr << "rotlie: warning: " << where << ": the exact reference's estimated error " << reference_error
@@ -41,7 +41,7 @@ int run_integrate(const integrate_options& o) {
   });
   if (!r.point.attributable()) warn_reference(r.point.error, r.point.reference_error, "h = " + number(h));
   if (o.json) {
-    std::cout << reports::integrate_json(r).dump(2) << "\n";
+    std::cout << runs::integrate_json(r).dump(2) << "\n";
   } else {
     std::cout << r.scheme << " (" << r.cost << " C0 per step), h = " << h << ", T = " << total << ", " << r.steps
               << " steps\nmean attitude error " << r.point.error << " (exact reference: estimated error "
@@ -61,7 +61,7 @@ int run_order(const order_options& o) {
   for (const auto& p : m.points)
     if (!p.attributable()) warn_reference(p.error, p.reference_error, "h = " + number(p.h) + " (left out of the fit)");
   if (o.json) {
-    std::cout << reports::order_json(r).dump(2) << "\n";
+    std::cout << runs::order_json(r).dump(2) << "\n";
   } else {
     std::cout << r.scheme << " in " << o.scalar << ": declared order " << r.declared_order << ", fitted slope " << m.slope << "\n";
     for (std::size_t i = 0; i < m.points.size(); ++i)
@@ -77,7 +77,7 @@ int run_exact(const exact_options& o) {
   const auto r = runs::exact_run(body, runs::initial_momentum(o.G0), total);
   const auto& s = r.state;
   if (o.json) {
-    std::cout << reports::exact_json(r).dump(2) << "\n";
+    std::cout << runs::exact_json(r).dump(2) << "\n";
   } else {
     std::ostringstream out;
     out.precision(17);

@@ -3,7 +3,7 @@
 
 #include "arguments.hpp"
 #include "commands.hpp"
-#include "rotlie/reports/remainder_io.hpp"
+#include "rotlie/runs/remainder_io.hpp"
 #include "rotlie/runs/remainder_run.hpp"
 
 namespace rotlie::app {
@@ -13,11 +13,11 @@ int run_remainder(const remainder_options& options) {
   const auto result = runs::remainder_run(
       {options.scheme, options.split, options.perm, options.order, options.inertia, runs::coefficient_list(options.coeffs)});
   if (options.json)
-    std::cout << reports::remainder_json(result).dump(2) << "\n";
+    std::cout << runs::remainder_json(result).dump(2) << "\n";
   else if (options.latex)
-    std::cout << reports::remainder_latex(result);
+    std::cout << runs::remainder_latex(result);
   else
-    std::cout << reports::remainder_text(result);
+    std::cout << runs::remainder_text(result);
   return 0;
 }
 

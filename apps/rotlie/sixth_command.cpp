@@ -1,5 +1,5 @@
 // rotlie sixth: dedicated 6th-order schemes for one body (runs/sixth_search.hpp): the options
-// checked, the search run, its best tables printed as a table or JSON (reports/sixth_io.hpp).
+// checked, the search run, its best tables printed as a table or JSON (runs/sixth_io.hpp).
 // --references lists the general 6th-order compositions instead.
 #include <iostream>
 #include <sstream>
@@ -7,8 +7,8 @@
 #include "arguments.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
-#include "rotlie/reports/number_text.hpp"
-#include "rotlie/reports/sixth_io.hpp"
+#include "rotlie/runs/number_text.hpp"
+#include "rotlie/runs/sixth_io.hpp"
 #include "rotlie/runs/body_names.hpp"
 #include "rotlie/runs/sixth_search.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
@@ -17,11 +17,11 @@ namespace rotlie::app {
 namespace {
 
 // 3 digits after the point unless said (the tables' habit).
-std::string scientific(double x, int digits = 3) { return reports::scientific_text(x, digits); }
+std::string scientific(double x, int digits = 3) { return runs::scientific_text(x, digits); }
 
 int list_references(bool json) {
   if (json) {
-    std::cout << reports::sixth_references_json().dump(2) << "\n";
+    std::cout << runs::sixth_references_json().dump(2) << "\n";
     return 0;
   }
   for (const auto& name : schemes::reference_sixth_order_scheme_names()) {
@@ -70,7 +70,7 @@ int run_sixth(const sixth_options& o) {
     r = runs::sixth_search(q, [&](const std::string& line) { progress.show(line); });
   }
   if (o.json) {
-    std::cout << reports::sixth_json(r, q.body, o.split).dump(2) << "\n";
+    std::cout << runs::sixth_json(r, q.body, o.split).dump(2) << "\n";
     return 0;
   }
   const auto& stats = r.stats;

@@ -4,8 +4,8 @@
 
 #include "arguments.hpp"
 #include "commands.hpp"
-#include "rotlie/reports/output_file.hpp"
-#include "rotlie/reports/solve_io.hpp"
+#include "rotlie/runs/output_file.hpp"
+#include "rotlie/runs/solve_io.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 #include "rotlie/runs/body_names.hpp"
 #include "rotlie/runs/family_names.hpp"
@@ -50,14 +50,14 @@ int run_solve(const solve_options& options) {
     for (const auto& s : result.solutions) {
       std::string file = solver::scheme_table_name(s);
       std::replace(file.begin(), file.end(), ':', '_');
-      reports::write_file_atomically(std::filesystem::path(options.out) / (file + ".scheme"),
+      runs::write_file_atomically(std::filesystem::path(options.out) / (file + ".scheme"),
                                      solver::scheme_table_text(s, body, digits));
     }
   }
   if (options.json)
-    std::cout << reports::solve_json(result, body, options.family, digits).dump(2) << "\n";
+    std::cout << runs::solve_json(result, body, options.family, digits).dump(2) << "\n";
   else
-    std::cout << reports::solve_text(result, body, digits, 20);
+    std::cout << runs::solve_text(result, body, digits, 20);
   return 0;
 }
 

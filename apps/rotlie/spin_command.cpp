@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "rotlie/reports/spin_io.hpp"
+#include "rotlie/runs/spin_io.hpp"
 #include "rotlie/runs/spin_orbit_run.hpp"
 
 namespace rotlie::app {
@@ -14,7 +14,7 @@ int run_spin(const spin_options& o) {
   const auto r = runs::spin_run(setup);
   for (const auto& w : r.check.warnings) std::cerr << "rotlie: warning: " << w << "\n";
   if (o.json) {
-    std::cout << reports::spin_json(r).dump(2) << "\n";
+    std::cout << runs::spin_json(r).dump(2) << "\n";
     return 0;
   }
   const auto I = runs::spin_moments(setup.body);

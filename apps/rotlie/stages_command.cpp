@@ -4,7 +4,7 @@
 #include "commands.hpp"
 #include "rotlie/lie/lie_poisson_algebra.hpp"
 #include "rotlie/lie/stage_table.hpp"
-#include "rotlie/reports/lie_tables_io.hpp"
+#include "rotlie/runs/lie_tables_io.hpp"
 
 namespace rotlie::app {
 
@@ -15,9 +15,9 @@ int run_stages(const stages_options& options) {
   for (const auto& p : lie::lie_poisson_algebra(max_order)) dims.push_back(p.dimension);
   const auto blocks = lie::stage_table(max_order, dims);
   if (options.json)
-    std::cout << reports::stages_json(blocks).dump(2) << "\n";
+    std::cout << runs::stages_json(blocks).dump(2) << "\n";
   else
-    std::cout << reports::stages_text(blocks);
+    std::cout << runs::stages_text(blocks);
   return 0;
 }
 

@@ -9,8 +9,8 @@
 
 #include "commands.hpp"
 #include "rotlie/lie/exact_number.hpp"
-#include "rotlie/reports/output_file.hpp"
-#include "rotlie/reports/two_parameter_io.hpp"
+#include "rotlie/runs/output_file.hpp"
+#include "rotlie/runs/two_parameter_io.hpp"
 #include "rotlie/runs/family_names.hpp"
 #include "rotlie/runs/two_parameter_solve.hpp"
 
@@ -33,12 +33,12 @@ int run_solve_two_parameter(const solve_options& options) {
       if (!e.polished) continue;
       std::string file = runs::two_parameter_name(e);
       std::replace(file.begin(), file.end(), ':', '_');
-      reports::write_file_atomically(std::filesystem::path(options.out) / (file + ".scheme"),
+      runs::write_file_atomically(std::filesystem::path(options.out) / (file + ".scheme"),
                                      solved.table_text(e, "rotlie solve --family " + options.family));
     }
   }
   if (options.json) {
-    std::cout << reports::two_parameter_json(result, options.family, solved.body, solved.digits, solved.search.starts).dump(2)
+    std::cout << runs::two_parameter_json(result, options.family, solved.body, solved.digits, solved.search.starts).dump(2)
               << "\n";
     return 0;
   }

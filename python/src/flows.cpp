@@ -19,7 +19,7 @@
 #include "rotlie/models/composition_stepper.hpp"
 #include "rotlie/models/exact_free_body.hpp"
 #include "rotlie/models/moments_from_text.hpp"
-#include "rotlie/reports/free_body_io.hpp"
+#include "rotlie/runs/free_body_io.hpp"
 #include "rotlie/runs/body_names.hpp"
 #include "rotlie/runs/free_body_runs.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"

@@ -8,7 +8,7 @@
 #include "bindings.hpp"
 #include "interruption.hpp"
 #include "rotlie/bch/free_bch.hpp"
-#include "rotlie/reports/best_io.hpp"
+#include "rotlie/runs/best_io.hpp"
 #include "rotlie/runs/best_for_body.hpp"
 #include "rotlie/runs/family_names.hpp"
 #include "rotlie/runs/map_rows.hpp"

@@ -7,7 +7,7 @@
 #include "bindings.hpp"
 #include "interruption.hpp"
 #include "rotlie/bch/scheme_word.hpp"
-#include "rotlie/reports/remainder_io.hpp"
+#include "rotlie/runs/remainder_io.hpp"
 #include "rotlie/runs/remainder_run.hpp"
 #include "rotlie/runs/user_input.hpp"
 

@@ -9,7 +9,7 @@
 
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/lv_paper_tables.hpp"
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/runs/accuracy_curves.hpp"
 
@@ -64,9 +64,9 @@ void curve_table(std::ostringstream& md, const std::vector<scheme_curve>& curves
      << anchor.name << " (equal CPU) |\n|:--|--:|--:|--:|--:|--:|--:|\n";
   for (const auto& k : curves) {
     const bool same_order = k.order == anchor.order;
-    md << "| " << k.name << " | " << k.cost << " | " << fixed_text(k.slope, 2) << " | " << scientific_text(k.constant, 2) << " | "
-       << (same_order ? fixed_text(k.constant / anchor.constant, 3) : "—") << " | " << fixed_text(k.seconds_per_step * 1e9, 0)
-       << " | " << (same_order ? fixed_text(1 / ratio_at_equal_cpu_time(anchor, k), 3) : "—") << " |\n";
+    md << "| " << k.name << " | " << k.cost << " | " << runs::fixed_text(k.slope, 2) << " | " << runs::scientific_text(k.constant, 2) << " | "
+       << (same_order ? runs::fixed_text(k.constant / anchor.constant, 3) : "—") << " | " << runs::fixed_text(k.seconds_per_step * 1e9, 0)
+       << " | " << (same_order ? runs::fixed_text(1 / ratio_at_equal_cpu_time(anchor, k), 3) : "—") << " |\n";
   }
   md << "\nColumns × " << anchor.name << ": the scheme's error divided by that of " << anchor.name
      << " at equal h/C (or equal CPU time); below 1 is more accurate.\n\n";
@@ -126,8 +126,8 @@ report_section accuracy_section(const report_options& options) {
       continue;
     }
     const double numeric = c->constant / n5_2->constant, analytic = sol->analytic_remainder / n5_analytic;
-    md << "| " << name << " | " << fixed_text(numeric, 2) << " | " << fixed_text(lv_numeric, 2) << " | "
-       << fixed_text(100 * (numeric / lv_numeric - 1), 1) << " % | " << fixed_text(analytic, 2) << " | " << fixed_text(lv_analytic, 2) << " |\n";
+    md << "| " << name << " | " << runs::fixed_text(numeric, 2) << " | " << runs::fixed_text(lv_numeric, 2) << " | "
+       << runs::fixed_text(100 * (numeric / lv_numeric - 1), 1) << " % | " << runs::fixed_text(analytic, 2) << " | " << runs::fixed_text(lv_analytic, 2) << " |\n";
     ours.x.push_back(numeric), ours.y.push_back(analytic);
     paper.x.push_back(lv_numeric), paper.y.push_back(lv_analytic);
   }
@@ -175,8 +175,8 @@ report_section accuracy_section(const report_options& options) {
     const bool ok = std::abs(deviation) <= 0.2;
     held += ok;
     md << "| " << c.text << " (" << c.worse.name << " vs " << c.better.name << ") | " << c.paper << "× | "
-       << fixed_text(ours_ratio, ours_ratio < 10 ? 2 : 0) << "× | " << fixed_text(100 * deviation, 1) << " % | "
-       << (ok ? "yes" : "**no**") << " | " << fixed_text(c.at_equal_cpu_time(), 2) << "× |\n";
+       << runs::fixed_text(ours_ratio, ours_ratio < 10 ? 2 : 0) << "× | " << runs::fixed_text(100 * deviation, 1) << " % | "
+       << (ok ? "yes" : "**no**") << " | " << runs::fixed_text(c.at_equal_cpu_time(), 2) << "× |\n";
   }
   md << "\n" << held << " of " << curves.claims.size()
      << " claims reproduced within 20 % at equal reduced step h/C, the paper's measure. The last column "

@@ -10,7 +10,7 @@
 
 #include "rotlie/reports/audit_files.hpp"
 #include "rotlie/reports/lv_paper_tables.hpp"
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 
 namespace rotlie::reports {
 namespace {
@@ -64,7 +64,7 @@ outcome table3_analytic(report_files& f) {
             two_decimals);
   return outcome::measured(d.within == static_cast<int>(lv_table3.size()),
                            std::to_string(d.within) + " of " + std::to_string(lv_table3.size()) + " equal; largest difference " +
-                               significant_text(d.worst, 2) + " (" + d.worst_name + ")");
+                               runs::significant_text(d.worst, 2) + " (" + d.worst_name + ")");
 }
 
 // Every water solution by ‖H_R5‖, smallest first.
@@ -102,7 +102,7 @@ outcome table4_values(report_files& f) {
     if (const auto* s = find_solution_named(*water, paper.integrator))
       d.add(paper.integrator, 100 * s->at("analytic_remainder").get<double>() - paper.analytic_e2, two_decimals);
   return outcome::measured(d.within == static_cast<int>(lv_table4.size()),
-                           std::to_string(d.within) + " of 15 equal; largest difference " + significant_text(d.worst, 2) + "e-2 (" +
+                           std::to_string(d.within) + " of 15 equal; largest difference " + runs::significant_text(d.worst, 2) + "e-2 (" +
                                d.worst_name + ")");
 }
 
@@ -111,8 +111,8 @@ outcome water_smallest_remainders(report_files& f) {
   if (!water) return outcome::missing(section_not_run("dedicated"));
   const auto all = water_by_remainder(*water);
   const bool ok = all.size() >= 2 && all[0].second == "N2 BAC (2)" && all[1].second == "N2 ACB (1)";
-  return outcome::measured(ok, all[0].second + " (" + significant_text(100 * all[0].first, 3) + "e-2), " + all[1].second + " (" +
-                                   significant_text(100 * all[1].first, 3) + "e-2)");
+  return outcome::measured(ok, all[0].second + " (" + runs::significant_text(100 * all[0].first, 3) + "e-2), " + all[1].second + " (" +
+                                   runs::significant_text(100 * all[1].first, 3) + "e-2)");
 }
 
 // The coefficients of eqs. (74) and (76), quoted with 41 digits, against the solver's certified ones.
@@ -137,7 +137,7 @@ claim printed_coefficients_claim(std::string id, const std::string& integrator, 
               if (e.integrator == integrator) {
                 const double d = agreeing_digits(s->at("coefficients").at(e.coefficient).get<std::string>(), e.paper);
                 least = std::min(least, d);
-                v += (v.empty() ? "" : ", ") + std::string(e.coefficient) + ": " + fixed_text(d, 1);
+                v += (v.empty() ? "" : ", ") + std::string(e.coefficient) + ": " + runs::fixed_text(d, 1);
               }
             return outcome::measured(least >= 38, "agreeing digits " + v);
           }};
@@ -178,7 +178,7 @@ outcome table4_analytic_against_numeric(report_files& f) {
   }
   return outcome::measured(analytic_best != numeric_best,
                            "analytic favourite " + analytic_best + ", numeric best " + numeric_best +
-                               "; Spearman ρ (analytic, numeric) = " + fixed_text(rank_correlation(analytic, numeric), 3) +
+                               "; Spearman ρ (analytic, numeric) = " + runs::fixed_text(rank_correlation(analytic, numeric), 3) +
                                " over " + std::to_string(analytic.size()));
 }
 
@@ -188,7 +188,7 @@ outcome table4_analytic_against_numeric(report_files& f) {
 claim ratio_claim(std::string id, std::string statement, std::string where, std::string file, std::string worse,
                   std::string better, double paper) {
   return {std::move(id), std::move(statement), std::move(where),
-          "our ratio of error/(h/C)^4 (three finest h) within " + percent(ratio_tolerance) + " of " + significant_text(paper, 3) + "×",
+          "our ratio of error/(h/C)^4 (three finest h) within " + percent(ratio_tolerance) + " of " + runs::significant_text(paper, 3) + "×",
           {"accuracy"},
           [=](report_files& f) {
             const auto* d = f.chart(file);
@@ -197,8 +197,8 @@ claim ratio_claim(std::string id, std::string statement, std::string where, std:
             if (!w || !b) return outcome::missing("curve missing in " + file + ".csv");
             const double ours = fit(*w, 4).constant / fit(*b, 4).constant;
             return outcome::measured(std::abs(ours / paper - 1) <= ratio_tolerance,
-                                     significant_text(ours, 3) + "× (" + series_name(*d, better) + " vs " + series_name(*d, worse) +
-                                         ", " + fixed_text(100 * (ours / paper - 1), 1) + " % from the paper)");
+                                     runs::significant_text(ours, 3) + "× (" + series_name(*d, better) + " vs " + series_name(*d, worse) +
+                                         ", " + runs::fixed_text(100 * (ours / paper - 1), 1) + " % from the paper)");
           }};
 }
 
@@ -223,8 +223,8 @@ outcome sphere_best_n(report_files& f) {
   if (!s) return outcome::missing("N5 ABC (2) missing in fig1_sphere.csv");
   std::string runner_up;
   for (const auto& [n, c] : s->fits)
-    if (n != "N5 ABC (2)" && runner_up.empty()) runner_up = n + " at " + fixed_text(c.constant / s->mine, 3) + "× N5 (2)'s";
-  return outcome::measured(s->best(), "smallest: " + s->fits.front().first + "; N5 (2) at " + fixed_text(s->to_smallest(), 3) +
+    if (n != "N5 ABC (2)" && runner_up.empty()) runner_up = n + " at " + runs::fixed_text(c.constant / s->mine, 3) + "× N5 (2)'s";
+  return outcome::measured(s->best(), "smallest: " + s->fits.front().first + "; N5 (2) at " + runs::fixed_text(s->to_smallest(), 3) +
                                           "× the smallest; next " + runner_up + f.quick_note());
 }
 
@@ -241,7 +241,7 @@ outcome table3_numeric(report_files& f) {
     }
   return outcome::measured(dev.within == static_cast<int>(lv_table3.size()),
                            std::to_string(dev.within) + " of " + std::to_string(lv_table3.size()) + " within tolerance (" +
-                               std::to_string(found) + " found); largest deviation " + fixed_text(100 * dev.worst, 1) + " % (" +
+                               std::to_string(found) + " found); largest deviation " + runs::fixed_text(100 * dev.worst, 1) + " % (" +
                                dev.worst_name + ")" + f.quick_note());
 }
 
@@ -250,7 +250,7 @@ outcome sphere_remainders_correlated(report_files& f) {
   const auto* ours = d ? series(*d, "rotlie") : nullptr;
   if (!ours) return outcome::missing("series rotlie missing in fig2_sphere_remainders.csv");
   const double rho = rank_correlation(ours->x, ours->y);
-  return outcome::measured(rho >= 0.9, "Spearman ρ = " + fixed_text(rho, 3) + " over " + std::to_string(ours->x.size()) + " solutions");
+  return outcome::measured(rho >= 0.9, "Spearman ρ = " + runs::fixed_text(rho, 3) + " over " + std::to_string(ours->x.size()) + " solutions");
 }
 
 outcome water_two_best_n(report_files& f) {
@@ -261,7 +261,7 @@ outcome water_two_best_n(report_files& f) {
                                        (fits[0].first == "N2 ACB (1)" && fits[1].first == "N2 BAC (2)"));
   std::string v = "ranked by error/(h/C)^4: ";
   for (std::size_t k = 0; k < std::min<std::size_t>(3, fits.size()); ++k)
-    v += (k ? ", " : "") + fits[k].first + " (" + significant_text(fits[k].second.constant, 3) + ")";
+    v += (k ? ", " : "") + fits[k].first + " (" + runs::significant_text(fits[k].second.constant, 3) + ")";
   return outcome::measured(ok, v + f.quick_note());
 }
 
@@ -290,7 +290,7 @@ outcome water_best_n_by_step(report_files& f) {
 outcome water_best_n(report_files& f) {
   const auto s = standing_of(f, "fig3_water", "N2 BAC (2)");
   if (!s) return outcome::missing("N2 BAC (2) missing in fig3_water.csv");
-  return outcome::measured(s->best(), "smallest: " + s->fits.front().first + "; N2 BAC (2) at " + fixed_text(s->to_smallest(), 2) +
+  return outcome::measured(s->best(), "smallest: " + s->fits.front().first + "; N2 BAC (2) at " + runs::fixed_text(s->to_smallest(), 2) +
                                           "× its error at equal h/C" + f.quick_note());
 }
 
@@ -303,7 +303,7 @@ outcome water_best_reference(report_files& f) {
   std::sort(refs.begin(), refs.end());
   return outcome::measured(!refs.empty() && refs[0].second == "RS4-S5-McLachlan:CBA",
                            "best: " + refs[0].second +
-                               (refs.size() > 1 ? "; next " + refs[1].second + " at " + fixed_text(refs[1].first / refs[0].first, 2) + "×"
+                               (refs.size() > 1 ? "; next " + refs[1].second + " at " + runs::fixed_text(refs[1].first / refs[0].first, 2) + "×"
                                                 : std::string()));
 }
 
@@ -349,7 +349,7 @@ outcome fitted_slopes(report_files& f) {
     }
   }
   return outcome::measured(total > 0 && within == total, std::to_string(within) + " of " + std::to_string(total) +
-                                                             " curves within tolerance; largest deviation " + fixed_text(worst, 2) +
+                                                             " curves within tolerance; largest deviation " + runs::fixed_text(worst, 2) +
                                                              " at " + worst_name + f.quick_note());
 }
 
@@ -385,7 +385,7 @@ bands band_counts(const audit_map& m) {
 }
 
 std::string share(int a, int n) {
-  return (n ? fixed_text(100.0 * a / n, 1) : std::string("0")) + " % (" + std::to_string(a) + "/" + std::to_string(n) + ")";
+  return (n ? runs::fixed_text(100.0 * a / n, 1) : std::string("0")) + " % (" + std::to_string(a) + "/" + std::to_string(n) + ")";
 }
 
 std::string grid(const audit_map& m) {
@@ -409,8 +409,8 @@ outcome n_wins_somewhere(const audit_map& m) {
   int listed = 0;
   for (const auto& x : m.bodies)
     if (x.ratio && *x.ratio > 1 && listed++ < 5)
-      where += (where.empty() ? "" : ", ") + std::string("(") + significant_text(x.I1, 3) + ", " + significant_text(x.I2, 3) + "; δ " +
-               significant_text(asymmetry(x), 2) + "; " + x.best + ")";
+      where += (where.empty() ? "" : ", ") + std::string("(") + runs::significant_text(x.I1, 3) + ", " + runs::significant_text(x.I2, 3) + "; δ " +
+               runs::significant_text(asymmetry(x), 2) + "; " + x.best + ")";
   return outcome::measured(b.total_wins > 0 && fraction < 0.5,
                            "N better at " + share(b.total_wins, b.total) + (where.empty() ? "" : ": (I1, I2) = " + where) + grid(m));
 }
@@ -419,8 +419,8 @@ outcome reference_best_near_tops(const audit_map& m) {
   const auto b = band_counts(m);
   const double near = median(b.log_ratio[0]), far = median(b.log_ratio[2]);
   const bool ok = b.n[0] > 0 && b.n[2] > 0 && near < far;
-  return outcome::measured(ok, "median log10 ratio " + fixed_text(near, 2) + " near the tops, " + fixed_text(median(b.log_ratio[1]), 2) +
-                                   " in between, " + fixed_text(far, 2) + " very asymmetric; N wins " + share(b.wins[0], b.n[0]) +
+  return outcome::measured(ok, "median log10 ratio " + runs::fixed_text(near, 2) + " near the tops, " + runs::fixed_text(median(b.log_ratio[1]), 2) +
+                                   " in between, " + runs::fixed_text(far, 2) + " very asymmetric; N wins " + share(b.wins[0], b.n[0]) +
                                    " near, " + share(b.wins[2], b.n[2]) + " far" + grid(m));
 }
 
@@ -428,8 +428,8 @@ outcome p_wins_far_from_tops(const audit_map& m) {
   const auto b = band_counts(m);
   return outcome::measured(b.total_wins > 0 && b.wins[0] == 0,
                            "P wins " + share(b.wins[0], b.n[0]) + " near the tops, " + share(b.wins[1], b.n[1]) + " in between, " +
-                               share(b.wins[2], b.n[2]) + " very asymmetric; median log10 ratio " + fixed_text(median(b.log_ratio[0]), 2) +
-                               ", " + fixed_text(median(b.log_ratio[1]), 2) + ", " + fixed_text(median(b.log_ratio[2]), 2) + grid(m));
+                               share(b.wins[2], b.n[2]) + " very asymmetric; median log10 ratio " + runs::fixed_text(median(b.log_ratio[0]), 2) +
+                               ", " + runs::fixed_text(median(b.log_ratio[1]), 2) + ", " + runs::fixed_text(median(b.log_ratio[2]), 2) + grid(m));
 }
 
 outcome singular_points_isolated(const audit_map& m) {
@@ -438,7 +438,7 @@ outcome singular_points_isolated(const audit_map& m) {
   for (const auto& x : m.bodies)
     if (x.singular) {
       singular.insert({x.i, x.j});
-      v += (v.empty() ? "" : ", ") + std::string("(") + significant_text(x.I1, 3) + ", " + significant_text(x.I2, 3) + ")";
+      v += (v.empty() ? "" : ", ") + std::string("(") + runs::significant_text(x.I1, 3) + ", " + runs::significant_text(x.I2, 3) + ")";
     }
   bool isolated = true;
   for (const auto& [i, j] : singular)
@@ -495,7 +495,7 @@ claim truth_claim(std::string id, std::string statement, std::string where, std:
 
 outcome ratios_correlated(const measured_ratios& r) {
   const double rho = rank_correlation(r.analytic, r.measured);
-  return outcome::measured(rho >= 0.8, "Spearman ρ = " + fixed_text(rho, 3) + " over " + std::to_string(r.analytic.size()) + " bodies");
+  return outcome::measured(rho >= 0.8, "Spearman ρ = " + runs::fixed_text(rho, 3) + " over " + std::to_string(r.analytic.size()) + " bodies");
 }
 
 outcome verdicts_kept(const measured_ratios& r) {
@@ -590,7 +590,7 @@ std::vector<audit_claim<report_files>> file_claims() {
        "4.3, end", "the largest saving against RS4 S5 McLachlan CBA at equal accuracy and equal h/C below 25 %", {"accuracy"},
        dedicated_time_savings},
       {"fitted-slopes", "All dedicated and reference 4th-order schemes show slope 4 on Figs. 1, 3-5 (leapfrogs slope 2)",
-       "4.2-4.3, Figs. 1, 3-5", "fitted log-log slope over the three finest h within " + fixed_text(slope_tolerance, 1) + " of the order",
+       "4.2-4.3, Figs. 1, 3-5", "fitted log-log slope over the three finest h within " + runs::fixed_text(slope_tolerance, 1) + " of the order",
        {"accuracy"}, fitted_slopes},
 
       // Maps (map-N.jsonl, map-P.jsonl).

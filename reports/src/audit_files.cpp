@@ -11,9 +11,10 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/runs/map_file.hpp"
+#include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/runs/shipped_data.hpp"
 
 namespace rotlie::reports {
@@ -21,7 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int fit_points = 3;  // as protocol_curves.cpp: the three finest steps
 
 double fraction_value(const std::string& f) {
   const auto slash = f.find('/');
@@ -117,18 +117,8 @@ const audit_map* report_files::map(const std::string& family) {
 curve_fit fit(const chart_curve& c, int order) {
   std::vector<std::pair<double, double>> p;
   for (std::size_t i = 0; i < c.x.size(); ++i) p.emplace_back(c.x[i], c.y[i]);
-  std::sort(p.begin(), p.end());
-  if (p.size() < static_cast<std::size_t>(fit_points)) throw std::runtime_error("a curve of fewer than three points");
-  p.resize(fit_points);
-  curve_fit f;
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (const auto& [x, y] : p) {
-    f.constant += y / std::pow(x, order) / fit_points;
-    const double lx = std::log(x), ly = std::log(y);
-    sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly;
-  }
-  f.slope = (fit_points * sxy - sx * sy) / (fit_points * sxx - sx * sx);
-  return f;
+  const auto f = runs::fit_finest(std::move(p), order);
+  return {f.constant, f.slope};
 }
 
 const chart_curve* series(const chart_data& d, const std::string& name) {
@@ -170,6 +160,6 @@ double agreeing_digits(const std::string& ours, const std::string& paper) {
 
 bool positive_decimal(const std::string& text) { return cln::plusp(decimal(text)); }
 
-std::string percent(double x) { return fixed_text(100 * x, 1) + " %"; }
+std::string percent(double x) { return runs::fixed_text(100 * x, 1) + " %"; }
 
 }  // namespace rotlie::reports

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "rotlie/reports/chart.hpp"
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/lammps_section.hpp"
 #include "rotlie/reports/report_csv_reader.hpp"
 #include "rotlie/runs/shipped_data.hpp"
@@ -37,7 +37,7 @@ struct row_view {
   }
 };
 
-std::string number(double x, int digits) { return std::isfinite(x) ? significant_text(x, digits) : std::string("–"); }
+std::string number(double x, int digits) { return std::isfinite(x) ? runs::significant_text(x, digits) : std::string("–"); }
 
 std::string how_to_produce(const fs::path& out_dir) {
   return "Produce it with `lammps/bench/lammps_bench.py --out " + (out_dir / "lammps-bench").string() +

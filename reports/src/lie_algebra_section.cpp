@@ -1,35 +1,22 @@
-#include <chrono>
+// Report section "Lie algebra of the free rigid body": the dimensions of L_k and Table 1
+// (runs::lie_algebra_study) written as JSON, markdown and LaTeX.
 #include <sstream>
 
-#include "rotlie/lie/lie_poisson_algebra.hpp"
-#include "rotlie/lie/stage_table.hpp"
-#include "rotlie/reports/lie_tables_io.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
+#include "rotlie/runs/lie_algebra_study.hpp"
+#include "rotlie/runs/lie_tables_io.hpp"
 
 namespace rotlie::reports {
-namespace {
-
-constexpr int paper_table_orders = 10;  // Table 1 of the paper stops at order 10
-
-}  // namespace
 
 report_section lie_algebra_section(const report_options& options) {
   const int max_order = options.quick ? 20 : 40;
   if (options.progress) options.progress("Lie algebra: dimensions of L_k up to order " + std::to_string(max_order));
-
-  const auto start = std::chrono::steady_clock::now();
-  const auto pieces = lie::lie_poisson_algebra(max_order);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  std::vector<std::size_t> dims;
-  bool all_theorems = true, all_attained = true;
-  for (const auto& p : pieces) {
-    dims.push_back(p.dimension);
-    all_theorems = all_theorems && p.theorem1 && p.theorem2.value_or(true);
-    all_attained = all_attained && p.bound_attained();
-  }
-  const auto blocks = lie::stage_table(paper_table_orders, dims);
+  const auto study = runs::lie_algebra_study(max_order);
+  const auto& pieces = study.pieces;
+  const auto& blocks = study.blocks;
+  const double seconds = study.seconds;
+  const bool all_theorems = study.all_theorems, all_attained = study.all_attained;
 
   report_section s;
   s.title = "Lie algebra of the free rigid body";
@@ -38,11 +25,11 @@ report_section lie_algebra_section(const report_options& options) {
     write_file_atomically(dir / name, content);
     s.files.push_back(dir / name);
   };
-  write("dims.json", dims_json(pieces).dump(2) + "\n");
-  write("dims.md", dims_markdown(pieces));
-  write("table1.json", stages_json(blocks).dump(2) + "\n");
-  write("table1.md", stages_markdown(blocks));
-  write("table1.tex", stages_latex(blocks));
+  write("dims.json", runs::dims_json(pieces).dump(2) + "\n");
+  write("dims.md", runs::dims_markdown(pieces));
+  write("table1.json", runs::stages_json(blocks).dump(2) + "\n");
+  write("table1.md", runs::stages_markdown(blocks));
+  write("table1.tex", runs::stages_latex(blocks));
 
   std::ostringstream md;
   md << "## " << s.title << "\n\n"
@@ -57,12 +44,12 @@ report_section lie_algebra_section(const report_options& options) {
         "over Q) equal to the Theorem 1–2 bound (an upper bound, because every spanning vector was checked exactly "
         "to satisfy both theorems).\n\n"
      << "Files: [dims.md](dims.md), [dims.json](dims.json).\n\n"
-     << dims_markdown(pieces) << "\n"
+     << runs::dims_markdown(pieces) << "\n"
      << "### Table 1 (regenerated)\n\n"
      << "Files: [table1.md](table1.md), [table1.tex](table1.tex), [table1.json](table1.json). Rigid-body stage "
         "counts follow the paper's rules (N equations → N stages; symmetric: 2N_sym − 1 stages); the general blocks' "
         "stage columns are literature values the paper quotes, marked as such.\n\n"
-     << stages_markdown(blocks) << "\n";
+     << runs::stages_markdown(blocks) << "\n";
   s.markdown = md.str();
   return s;
 }

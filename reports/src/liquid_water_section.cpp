@@ -1,68 +1,26 @@
 // Report section "Liquid water" (see liquid_water_section.hpp).
 #include "rotlie/reports/liquid_water_section.hpp"
 
-#include <algorithm>
-#include <chrono>
-#include <ctime>
 #include <cmath>
 #include <iomanip>
 #include <map>
 #include <sstream>
-#include <tuple>
 
-#include "rotlie/models/scenes/lammps_water_io.hpp"
-#include "rotlie/models/scenes/liquid_water_experiment.hpp"
-#include "rotlie/models/scenes/water_model.hpp"
 #include "rotlie/reports/chart.hpp"
-#include "rotlie/reports/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report_csv_reader.hpp"
-#include "rotlie/runs/protocol_curves.hpp"
+#include "rotlie/runs/liquid_water_study.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/runs/shipped_data.hpp"
-#include "rotlie/solver/scheme_table.hpp"
 
 namespace rotlie::reports {
-
-// From the runs library (rotlie::runs):
-using runs::find_solution;
 
 namespace {
 
 struct budget {
-  int runs;
-  double run_ps, equilibration_ps, rdf_ps;
-  long lammps_steps;
+  runs::liquid_water_budget sizes;
   std::string words;
 };
-
-struct sweep {
-  std::string integrator;
-  std::vector<double> h;
-  const schemes::scheme_table* rotor = nullptr;  ///< a dedicated rotor's table, solved for TIP3P
-};
-
-// The dedicated free rotors for the TIP3P body (its exact moments text): the best-ranked N and P
-// solutions of the solver for this body, N2 BAC (2) and P1 BAC (5).
-std::map<std::string, schemes::scheme_table> dedicated_rotors() {
-  const auto body = lie::parse_moments(models::tip3p_body_text());
-  std::map<std::string, schemes::scheme_table> tables;
-  for (const auto& [scheme, perm, label] : {std::tuple<std::string, std::string, int>{"N2", "BAC", 2}, {"P1", "BAC", 5}}) {
-    const auto result = solver::solve_dedicated(body, {scheme}, {perm}, 40);
-    tables.emplace(scheme + ":" + perm + ":" + std::to_string(label), solver::scheme_table_of(find_solution(result, scheme, perm, label), body));
-  }
-  return tables;
-}
-
-/// Least-squares slope of log y on log x over the points with x ≤ x_max.
-double slope(const std::vector<double>& x, const std::vector<double>& y, double x_max) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    if (x[i] <= x_max && y[i] > 0) {
-      const double lx = std::log(x[i]), ly = std::log(y[i]);
-      sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly, n += 1;
-    }
-  return n < 2 ? NAN : (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
 
 // Fig. 1 at the paper's statistics from the shipped full run (data/vzs-fig1), beside this run's own:
 // the chart of ΔE/ΔV against h/f and the table with the standard errors over the nine runs.
@@ -91,8 +49,8 @@ std::string shipped_fig1(const report_options& options, const std::filesystem::p
   for (const auto& row : t->rows) {
     const bool out = row.at(diverged) == "1";
     table << "| " << row.at(who) << " | " << row.at(f) << " | " << row.at(h) << " | " << row.at(runs) << " | "
-          << (out ? std::string("diverged") : significant_text(std::stod(row.at(ratio)), 3)) << " | "
-          << (out || row.at(error).empty() || row.at(error) == "nan" ? std::string() : significant_text(std::stod(row.at(error)), 2))
+          << (out ? std::string("diverged") : runs::significant_text(std::stod(row.at(ratio)), 3)) << " | "
+          << (out || row.at(error).empty() || row.at(error) == "nan" ? std::string() : runs::significant_text(std::stod(row.at(error)), 2))
           << " |\n";
     if (out) {
       gone.x.push_back(std::stod(row.at(hf))), gone.y.push_back(100);
@@ -119,26 +77,7 @@ report_section section(const report_options& options, const budget& b) {
   auto say = [&](const std::string& line) {
     if (options.progress) options.progress("Liquid water: " + line);
   };
-  models::liquid_water_run_options o;
-  o.threads = 2;
-  o.runs = b.runs;
-  o.T_ps = b.run_ps;
-  o.equilibration_ps = b.equilibration_ps;
-  say("equilibration");
-  const auto start = models::liquid_water_start(o, say);
-  std::vector<sweep> sweeps;
-  sweeps.push_back({"SIER2", options.quick ? std::vector<double>{1, 2, 4, 7} : std::vector<double>{0.5, 1, 2, 4, 7, 10}});
-  sweeps.push_back({"SIER4", options.quick ? std::vector<double>{4, 8, 16, 28} : std::vector<double>{1, 2, 4, 8, 16, 28, 40}});
-  sweeps.push_back({"MRDL", options.quick ? std::vector<double>{2, 7} : std::vector<double>{1, 2, 4, 7, 10}});
-  sweeps.push_back({"SEJ4", options.quick ? std::vector<double>{2, 7} : std::vector<double>{1, 2, 4, 7}});
-  if (!options.quick) sweeps.push_back({"SIER2/RS4-S5-McLachlan:CBA", {1, 2, 4, 7}});
-  say("dedicated rotors for the TIP3P body");
-  const auto dedicated = dedicated_rotors();
-  const bool full = options.full;  // the paper's statistics: the same steps as SIER2 and SIER4
-  sweeps.push_back({"SIER2/N2:BAC:2", options.quick ? std::vector<double>{2, 7} : full ? sweeps[0].h : std::vector<double>{1, 2, 4, 7},
-                    &dedicated.at("N2:BAC:2")});
-  sweeps.push_back({"SIER4/P1:BAC:5", options.quick ? std::vector<double>{8, 28} : full ? sweeps[1].h : std::vector<double>{4, 8, 16, 28},
-                    &dedicated.at("P1:BAC:5")});
+  const auto study = runs::liquid_water_study(b.sizes, options.quick, options.full, say);
   std::ostringstream md, table, points;
   // every measured point with its statistics, the data behind Fig. 1 (and what data/vzs-fig1 ships)
   points << std::setprecision(17)
@@ -154,70 +93,64 @@ report_section section(const report_options& options, const budget& b) {
   cpu.x_label = "measured CPU time per simulated ps (ms, both threads)";
   cpu.y_label = "ΔE/ΔV (%)";
   std::ostringstream slopes, failures;
-  double v_per_molecule = 0, temperature = 0;
   // A run whose energy error reaches the potential's own fluctuation (≥ 100 %) or blows up has left the
   // integrator's stable range: it is marked at the 100 % line, not drawn as a point of its curve (the
   // axis once ran to 10⁸ %).
-  constexpr double diverged_percent = 100;
+  const double diverged_percent = study.diverged_percent;
   chart_series gone_h{"diverged (≥ 100 %)", {}, {}, true}, gone_cpu{"diverged (≥ 100 %)", {}, {}, true};
   for (auto* g : {&gone_h, &gone_cpu}) g->colour = "#000000", g->point_type = 2, g->point_size = 1.5;
-  for (const auto& sw : sweeps) {
+  for (const auto& sw : study.sweeps) {
     chart_series a{sw.integrator, {}, {}, false}, c{sw.integrator, {}, {}, false};
-    std::vector<double> hf, ratio;
-    for (double h : sw.h) {
-      o.integrator = sw.integrator;
-      o.rotor_table = sw.rotor;
-      o.h_fs = h;
-      o.T_ps = std::max(b.run_ps, 10 * h / 1000);  // at least 10 steps per run
-      say(sw.integrator + " at h = " + significant_text(h, 3) + " fs");
-      try {
-        const auto r = models::run_liquid_water(o, start, {});
+    for (const auto& p : sw.points) {
+      const double h = p.h_fs;
+      if (!p.failed) {
+        const auto& r = p.result;
         const double per_ps = r.cpu_ms_per_step * 1000 / h;
-        table << "| " << sw.integrator << " | " << r.f << " | " << significant_text(h, 3) << " | " << significant_text(h / r.f, 3) << " | " << significant_text(r.ratio_mean, 3) << " | "
-              << (r.runs > 1 ? significant_text(r.ratio_error, 2) : std::string()) << " | " << significant_text(r.ms_per_step, 3) << " | " << significant_text(r.cpu_ms_per_step, 3) << " | " << significant_text(per_ps, 3) << " | " << significant_text(r.potential_per_molecule, 5)
-              << " | " << significant_text(r.temperature, 4) << " | " << significant_text(r.energy_drift_per_ps, 2) << " |\n";
-        points << sw.integrator << "," << r.f << "," << h << "," << h / r.f << "," << r.runs << "," << o.T_ps << ","
+        table << "| " << sw.integrator << " | " << r.f << " | " << runs::significant_text(h, 3) << " | " << runs::significant_text(h / r.f, 3) << " | " << runs::significant_text(r.ratio_mean, 3) << " | "
+              << (r.runs > 1 ? runs::significant_text(r.ratio_error, 2) : std::string()) << " | " << runs::significant_text(r.ms_per_step, 3) << " | " << runs::significant_text(r.cpu_ms_per_step, 3) << " | " << runs::significant_text(per_ps, 3) << " | " << runs::significant_text(r.potential_per_molecule, 5)
+              << " | " << runs::significant_text(r.temperature, 4) << " | " << runs::significant_text(r.energy_drift_per_ps, 2) << " |\n";
+        points << sw.integrator << "," << r.f << "," << h << "," << h / r.f << "," << r.runs << "," << p.T_ps << ","
                << r.ratio_mean << "," << (r.runs > 1 ? r.ratio_error : std::nan("")) << "," << r.cpu_ms_per_step << ","
                << per_ps << "," << r.potential_per_molecule << "," << r.temperature << "," << r.energy_drift_per_ps << ","
                << (r.ratio_mean < diverged_percent ? 0 : 1) << "\n";
         if (!(r.ratio_mean < diverged_percent)) {
           gone_h.x.push_back(h / r.f), gone_h.y.push_back(diverged_percent);
           gone_cpu.x.push_back(per_ps), gone_cpu.y.push_back(diverged_percent);
-          failures << "- " << sw.integrator << " at h = " << significant_text(h, 3) << " fs: ΔE/ΔV = "
-                   << significant_text(r.ratio_mean, 3) << " %, beyond the stable range\n";
+          failures << "- " << sw.integrator << " at h = " << runs::significant_text(h, 3) << " fs: ΔE/ΔV = "
+                   << runs::significant_text(r.ratio_mean, 3) << " %, beyond the stable range\n";
           continue;
         }
         a.x.push_back(h / r.f), a.y.push_back(r.ratio_mean);
         c.x.push_back(per_ps), c.y.push_back(r.ratio_mean);
-        hf.push_back(h / r.f), ratio.push_back(r.ratio_mean);
-        if (sw.integrator == "SIER2" && h == 1) v_per_molecule = r.potential_per_molecule, temperature = r.temperature;
-      } catch (const std::runtime_error& e) {
-        table << "| " << sw.integrator << " | | " << significant_text(h, 3) << " | | diverged | | | | | | | |\n";
-        failures << "- " << sw.integrator << " at h = " << significant_text(h, 3) << " fs: " << e.what() << "\n";
-        const int f = models::md_integrator_named(sw.integrator).f;
+      } else {
+        table << "| " << sw.integrator << " | | " << runs::significant_text(h, 3) << " | | diverged | | | | | | | |\n";
+        failures << "- " << sw.integrator << " at h = " << runs::significant_text(h, 3) << " fs: " << p.failure << "\n";
+        const int f = p.f;
         gone_h.x.push_back(h / f), gone_h.y.push_back(diverged_percent);
-        points << sw.integrator << "," << f << "," << h << "," << h / f << "," << o.runs << "," << o.T_ps
+        points << sw.integrator << "," << f << "," << h << "," << h / f << "," << p.runs << "," << p.T_ps
                << ",,,,,,,,1\n";
       }
     }
-    if (sw.integrator == "SIER2") slopes << "- SIER2: slope " << significant_text(slope(hf, ratio, 2.01), 3) << " over h/f ≤ 2 fs (order 2 expected)\n";
-    if (sw.integrator == "SIER4") slopes << "- SIER4: slope " << significant_text(slope(hf, ratio, 1.01), 3) << " over h/f ≤ 1 fs (order 4 expected; " << significant_text(slope(hf, ratio, 2.01), 3)
-                                           << " with h/f = 2 fs, where the error grows faster than h⁴)\n";
+    if (sw.integrator == "SIER2")
+      slopes << "- SIER2: slope " << runs::significant_text(runs::liquid_water_slope(sw, diverged_percent, 2.01), 3) << " over h/f ≤ 2 fs (order 2 expected)\n";
+    if (sw.integrator == "SIER4")
+      slopes << "- SIER4: slope " << runs::significant_text(runs::liquid_water_slope(sw, diverged_percent, 1.01), 3) << " over h/f ≤ 1 fs (order 4 expected; "
+             << runs::significant_text(runs::liquid_water_slope(sw, diverged_percent, 2.01), 3) << " with h/f = 2 fs, where the error grows faster than h⁴)\n";
     fig1.series.push_back(std::move(a));
     cpu.series.push_back(std::move(c));
   }
   md << "## " << s.title << "\n\n"
      << "van Zon & Schofield section V.C: 512 rigid water molecules at 297 K and 0.9973 g/cm³ (cubic box of "
-     << significant_text(models::liquid_water_box(512, 0.9973), 5)
+     << runs::significant_text(study.box_A, 5)
      << " Å, periodic, minimum image). Model: TIP3P (Jorgensen et al. 1983; the paper does not say which of its models; "
         "TIP3P's three massive sites let LAMMPS integrate the very same rigid body). Site–site Coulomb and O–O "
         "Lennard-Jones with a smooth molecular cutoff: the whole molecule-pair energy times a C³ switch of the O–O "
         "distance from 9.5 to 11 Å (width 1.5 Å). Units and constants: LAMMPS `real`. Start: lattice, random "
         "orientations, "
-     << significant_text(b.equilibration_ps, 3) << " ps with a Berendsen thermostat (τ = 0.1 ps), then NVE.\n\n"
+     << runs::significant_text(b.sizes.equilibration_ps, 3) << " ps with a Berendsen thermostat (τ = 0.1 ps), then NVE.\n\n"
      << "SIER2/N2:BAC:2 and SIER4/P1:BAC:5 are SIER2 and SIER4 with the exact free rotation replaced by a dedicated "
         "rotor solved for the TIP3P body (moments "
-     << models::tip3p_moments_text[0] << ", " << models::tip3p_moments_text[1] << ", " << models::tip3p_moments_text[2]
+     << study.moments_text[0] << ", " << study.moments_text[1] << ", " << study.moments_text[2]
      << " g/mol·Å², I₃ = I₁ + I₂ exactly): the solver's best-ranked N and P solutions for it (`rotlie solve --family N` and "
         "`--family P --scheme P1 --perm BAC` with these moments).\n\n"
      << "Budget: " << b.words << ". ΔE/ΔV is the rms fluctuation of the total energy over that of the potential energy, "
@@ -243,9 +176,7 @@ report_section section(const report_options& options, const budget& b) {
     if (const auto shipped = runs::shipped_file("vzs-fig1/liquid_water_points.csv")) md << shipped_fig1(options, *shipped, s.files);
 
   // physical sanity: g_OO(r) and V/N
-  say("g(r)");
-  const long rdf_steps = std::lround(b.rdf_ps * 1000);
-  const auto g = models::sample_oxygen_rdf(o, start, rdf_steps, 1.0, 10);
+  const auto& g = study.g_OO;
   chart gr;
   gr.title = "O–O radial distribution function, TIP3P, 297 K";
   gr.x_label = "r (Å)";
@@ -261,78 +192,40 @@ report_section section(const report_options& options, const budget& b) {
   const auto f3 = write_chart(options.out_dir, "liquid_water_gOO", gr);
   s.files.insert(s.files.end(), f3.written.begin(), f3.written.end());
   md << "### Physical sanity\n\n| quantity | rotlie | TIP3P, published |\n|:--|--:|--:|\n"
-     << "| potential energy per molecule (kcal/mol) | " << significant_text(v_per_molecule, 4) << " (at " << significant_text(temperature, 4)
+     << "| potential energy per molecule (kcal/mol) | " << runs::significant_text(study.v_per_molecule, 4) << " (at " << runs::significant_text(study.temperature, 4)
      << " K, 11 Å switched cutoff) | −9.86 (Jorgensen 1983, 298 K, 8.5 Å cutoff) |\n"
-     << "| g_OO first peak position (Å) | " << significant_text(peak.first, 3) << " | ≈ 2.75–2.8 |\n"
-     << "| g_OO first peak height | " << significant_text(peak.second, 3) << " | ≈ 2.7–2.8 |\n\n"
+     << "| g_OO first peak position (Å) | " << runs::significant_text(peak.first, 3) << " | ≈ 2.75–2.8 |\n"
+     << "| g_OO first peak height | " << runs::significant_text(peak.second, 3) << " | ≈ 2.7–2.8 |\n\n"
      << "The published values are quoted as commonly cited for TIP3P; the cutoffs differ, so agreement within a few "
         "per cent is what to expect. g(r) from "
-     << significant_text(b.rdf_ps, 3) << " ps sampled every 10 fs, bins of 0.05 Å.\n\n"
+     << runs::significant_text(b.sizes.rdf_ps, 3) << " ps sampled every 10 fs, bins of 0.05 Å.\n\n"
      << chart_markdown(f3, "liquid_water_gOO", "O–O radial distribution function.") << "\n";
 
   // LAMMPS side by side
   md << "### Side by side with LAMMPS\n\n";
-  models::liquid_water_options<double> dsf;
-  dsf.box = models::liquid_water_box(512, 0.9973);
-  dsf.interaction = models::water_interaction::lammps_dsf;
-  dsf.threads = 2;
-  const models::liquid_water<double> w(models::tip3p<double>(), dsf);
-  std::vector<models::vec3<double>> mine, theirs;
-  say("LAMMPS single point");
-  const double V_mine = w.evaluate_sites(start.bodies, mine);
-  const double V_theirs = models::lammps_single_point(w, start.bodies, theirs);
-  if (theirs.size() != mine.size()) {
+  if (!study.lammps_ran) {
     md << "LAMMPS (`lmp`) is not installed here, or it failed: the comparison is skipped.\n\n";
   } else {
-    double worst = 0, scale = 0;
-    for (std::size_t k = 0; k < mine.size(); ++k)
-      for (int d = 0; d < 3; ++d) worst = std::max(worst, std::abs(mine[k][d] - theirs[k][d])), scale = std::max(scale, std::abs(theirs[k][d]));
+    const double V_mine = study.V_rotlie, V_theirs = study.V_lammps, worst = study.worst_force, scale = study.force_scale;
     md << "Same configuration, same site pair style (`lj/cut/coul/dsf`, α = 0.2 Å⁻¹, 11 Å, LJ shifted, intramolecular pairs "
           "excluded; rotlie implements it for this comparison only, with LAMMPS's polynomial erfc): V = "
-       << significant_text(V_mine, 15) << " (rotlie) and " << significant_text(V_theirs, 15) << " kcal/mol (LAMMPS), relative difference "
-       << significant_text(std::abs(V_mine - V_theirs) / std::abs(V_theirs), 2) << "; largest site-force difference " << significant_text(worst, 2)
-       << " kcal/mol/Å against forces up to " << significant_text(scale, 3) << ".\n\n"
+       << runs::significant_text(V_mine, 15) << " (rotlie) and " << runs::significant_text(V_theirs, 15) << " kcal/mol (LAMMPS), relative difference "
+       << runs::significant_text(std::abs(V_mine - V_theirs) / std::abs(V_theirs), 2) << "; largest site-force difference " << runs::significant_text(worst, 2)
+       << " kcal/mol/Å against forces up to " << runs::significant_text(scale, 3) << ".\n\n"
        << "NVE at h = 1 fs with the same map: LAMMPS `fix rigid/nve/small` (NO_SQUISH; its principal axes in decreasing "
           "moment, planar rotations 3, 2, 1, 2, 3) is rotlie's Strang-TV with the table rotor ABCBA2:ABC in increasing-moment "
           "axes, i.e. MRDL; 100 steps agree to 3e-13 Å (test liquid_water_lammps_test).\n\n"
        << "| program | threads/ranks | wall ms/step | CPU ms/step | ΔE/ΔV (%) |\n|:--|--:|--:|--:|--:|\n";
-    for (int threads : {1, 2}) {
-      models::liquid_water_options<double> d1 = dsf;
-      d1.threads = threads;
-      const models::liquid_water<double> wt(models::tip3p<double>(), d1);
-      say("rotlie DSF, " + std::to_string(threads) + " thread(s)");
-      models::with_md_integrator(models::md_integrator_named("SIER2/ABCBA2:ABC"), nullptr, models::tip3p<double>().mass,
-                                 models::tip3p<double>().moments, wt, [&](const auto& m) {
-                                   auto x = start;
-                                   x.forces_current = false;
-                                   const auto& sys = m.system();
-                                   double es = 0, ess = 0, vs = 0, vss = 0;
-                                   const double e0 = sys.energy(x), v0 = sys.potential_energy(x);
-                                   const std::clock_t c0 = std::clock();
-                                   const auto t0 = std::chrono::steady_clock::now();
-                                   for (long k = 0; k < b.lammps_steps; ++k) {
-                                     m.step(x, 1.0);
-                                     const double V = sys.potential_energy(x), E = V + sys.kinetic_energy(x);
-                                     es += E - e0, ess += (E - e0) * (E - e0), vs += V - v0, vss += (V - v0) * (V - v0);
-                                   }
-                                   const double n = static_cast<double>(b.lammps_steps);
-                                   const double wall = 1000 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / n;
-                                   const double cpu_ms = 1000 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC / n;
-                                   const double ratio = 100 * std::sqrt(ess / n - es * es / (n * n)) / std::sqrt(vss / n - vs * vs / (n * n));
-                                   md << "| rotlie | " << threads << " | " << significant_text(wall, 3) << " | " << significant_text(cpu_ms, 3) << " | " << significant_text(ratio, 3) << " |\n";
-                                   return 0;
-                                 });
-    }
-    for (int procs : {1, 2}) {
-      say("LAMMPS, " + std::to_string(procs) + " rank(s)");
-      const auto r = models::run_lammps_rigid_nve(w, start.bodies, b.lammps_steps, 1.0, procs);
-      if (!r.ran)
-        md << "| LAMMPS | " << procs << " | skipped | | |\n";
+    for (const auto& t : study.rotlie_timings)
+      md << "| rotlie | " << t.threads << " | " << runs::significant_text(t.wall_ms, 3) << " | " << runs::significant_text(t.cpu_ms, 3) << " | " << runs::significant_text(t.ratio_percent, 3) << " |\n";
+    for (const auto& t : study.lammps_timings) {
+      if (!t.ran)
+        md << "| LAMMPS | " << t.threads << " | skipped | | |\n";
       else
-        md << "| LAMMPS | " << procs << " | " << significant_text(r.wall_ms, 3) << " | ≈ " << significant_text(r.wall_ms * r.cpu_percent / 100 * procs, 3) << " | "
-           << significant_text(r.ratio_percent, 3) << " |\n";
+        md << "| LAMMPS | " << t.threads << " | " << runs::significant_text(t.wall_ms, 3) << " | ≈ " << runs::significant_text(t.cpu_ms, 3) << " | "
+           << runs::significant_text(t.ratio_percent, 3) << " |\n";
     }
-    md << "\n" << b.lammps_steps << " steps from the equilibrated start. LAMMPS's CPU time is its wall time times its reported CPU use.\n\n";
+    md << "\n" << b.sizes.lammps_steps << " steps from the equilibrated start. LAMMPS's CPU time is its wall time times its reported CPU use.\n\n";
   }
   s.markdown = md.str();
   return s;
@@ -341,12 +234,12 @@ report_section section(const report_options& options, const budget& b) {
 }  // namespace
 
 report_section liquid_water_section(const report_options& options) {
-  if (options.quick) return section(options, {1, 0.1, 3, 0.2, 100, "quick: one 0.1-ps run per point, 3 ps of equilibration"});
-  return section(options, {1, 0.25, 5, 1, 500, "one 0.25-ps run per point, 5 ps of equilibration (the paper's nine 1-ps runs: the full section)"});
+  if (options.quick) return section(options, {{1, 0.1, 3, 0.2, 100}, "quick: one 0.1-ps run per point, 3 ps of equilibration"});
+  return section(options, {{1, 0.25, 5, 1, 500}, "one 0.25-ps run per point, 5 ps of equilibration (the paper's nine 1-ps runs: the full section)"});
 }
 
 report_section liquid_water_section_full(const report_options& options) {
-  return section(options, {9, 1, 10, 2, 1000, "nine 1-ps runs per point (the paper's statistics), 10 ps of equilibration"});
+  return section(options, {{9, 1, 10, 2, 1000}, "nine 1-ps runs per point (the paper's statistics), 10 ps of equilibration"});
 }
 
 }  // namespace rotlie::reports

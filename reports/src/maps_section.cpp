@@ -3,13 +3,13 @@
 // bodies, at a resolution the default report affords, or from map files of `rotlie map`.
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
@@ -18,10 +18,8 @@
 #include "rotlie/runs/map_check.hpp"
 #include "rotlie/runs/map_file.hpp"
 #include "rotlie/runs/map_neighbour_check.hpp"
-#include "rotlie/runs/map_rows.hpp"
+#include "rotlie/runs/maps_study.hpp"
 #include "rotlie/runs/shipped_data.hpp"
-#include "rotlie/solver/body_grid.hpp"
-#include "rotlie/solver/body_map.hpp"
 
 namespace rotlie::reports {
 namespace {
@@ -58,9 +56,7 @@ body_result from_line(const nlohmann::json& j, int K) {
   if (!ij) throw std::runtime_error("a map line is not a body of its grid");
   b.i = ij->first;
   b.j = ij->second;
-  const auto g = solver::grid_point(K, b.i, b.j);
-  b.I1 = cln::double_approx(g.body.I[0]);
-  b.I2 = cln::double_approx(g.body.I[1]);
+  std::tie(b.I1, b.I2) = runs::grid_moments(K, b.i, b.j);
   b.s = static_cast<double>(b.i) / K;
   b.t = static_cast<double>(b.j) / K;
   if (j.contains("best") && j["best"].is_string()) {
@@ -80,39 +76,21 @@ family_map compute_map(const report_options& options, const std::string& family,
   m.K = K;
   // The path rotlie map takes by default for the family at this grid (N continued, P screened at
   // K ≥ 200 and exact below, R exact).
-  const auto method = runs::map_method_asked(runs::family_to_map(family), K, false, false);
-  m.method = runs::map_method_name(method);
+  const auto computed = runs::compute_family_map(family, K, [&](const std::string& line) {
+    if (options.progress) options.progress("Maps: " + line);
+  });
+  m.method = computed.method;
   m.source = std::string("computed here (") +
-             (method == bch::map_method::exact ? "exact solver" : method == bch::map_method::screened ? "screened fast path" : "fast path") +
+             (m.method == "exact" ? "exact solver" : m.method == "screened" ? "screened fast path" : "fast path") +
              ", --grid " + std::to_string(K) + ")";
-  const auto start = std::chrono::steady_clock::now();
-  const auto grid = solver::asymmetric_grid(K);
-  const std::vector<char> none_done(grid.size(), 0);
-  std::vector<std::string> lines(grid.size());
-  for (std::size_t first = 0; first < grid.size(); first += static_cast<std::size_t>(K)) {
-    if (options.progress)
-      options.progress("Maps: family " + family + " at --grid " + std::to_string(K) + ", row " +
-                       std::to_string(first / K + 1) + " of " + std::to_string(K - 1));
-    for (auto& [k, line] : runs::map_row_lines(grid, first, static_cast<std::size_t>(K), none_done, family, method))
-      lines[k] = std::move(line);
-  }
-  auto header = runs::map_header(family, K, grid.size(), m.method);
-  if (method == bch::map_method::screened) {  // as rotlie map does once every row is done
-    if (options.progress) options.progress("Maps: family " + family + " at --grid " + std::to_string(K) + ", neighbour check");
-    const auto c = runs::check_neighbours(grid, lines, runs::local_neighbour_runner(grid, family));
-    header["neighbour_check"] = runs::neighbour_check_record(c);
-  }
-  std::ostringstream jsonl;
-  jsonl << header.dump() << "\n";
-  for (const auto& line : lines) {
-    jsonl << line << "\n";
+  for (const auto& line : computed.lines) {
     auto j = nlohmann::json::parse(line);
     if (j.contains("failed")) continue;  // drawn as a map file is: without the bodies whose solve failed
     m.lines.push_back(std::move(j));
     m.bodies.push_back(from_line(m.lines.back(), K));
   }
-  m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_file_atomically(runs::map_file_path(options.out_dir, family), jsonl.str());
+  m.seconds = computed.seconds;
+  write_file_atomically(runs::map_file_path(options.out_dir, family), computed.file_text);
   return m;
 }
 
@@ -159,8 +137,7 @@ class body_cells {
   std::pair<double, double> corner(int a, int b) {
     auto [it, fresh] = placed_.try_emplace({a, b});
     if (fresh) {
-      const auto g = solver::grid_point(2 * K_, a, b);
-      it->second = {cln::double_approx(g.body.I[0]), cln::double_approx(g.body.I[1])};
+      it->second = runs::grid_moments(2 * K_, a, b);
     }
     return it->second;
   }
@@ -326,13 +303,11 @@ std::string fast_path_check(const report_options& options, const std::vector<fam
     if (m.method == "exact") continue;
     const bool many = options.full || (m.from_file && !m.shipped);  // the shipped maps' own check is a slow test
     const std::size_t count = many ? full_checks : m.family == "P" ? default_checks_P : default_checks_N;
-    const auto start = std::chrono::steady_clock::now();
-    const auto r = runs::check_map_lines(m.family, m.K, m.lines, count, 14, [&](int done, int of) {
+    const auto [r, seconds] = runs::timed_map_check(m.family, m.K, m.lines, count, 14, [&](int done, int of) {
       if (options.progress)
         options.progress("Maps: the " + m.family + " map against the exact solver, body " + std::to_string(done + 1) + " of " +
                          std::to_string(of));
     });
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     md << "| " << m.family << " | " << m.K << " | " << m.method << " | " << r.checked << " | " << r.disagreements << " | ";
     if (r.unconfirmed > 0) md << r.unconfirmed_differ << " of " << r.unconfirmed;
     else md << "none unconfirmed";
@@ -433,7 +408,7 @@ report_section maps_section(const report_options& options) {
     md << categories_chart(options, m, true, name(0, "b", "permutation"),
                            caption(0, "b") + ": the permutation of that best integrator.", sec.files);
     md << ratio_chart(options, m, name(1, "", "ratio"),
-                      caption(1, "") + ": log10 of R_M / R_" + f + " × (12/" + std::to_string(solver::family_cost(f)) +
+                      caption(1, "") + ": log10 of R_M / R_" + f + " × (12/" + std::to_string(runs::mapped_family_cost(f)) +
                           ")^4, RS4 S5 McLachlan at its best permutation against the best " + f +
                           "; above 0 (right of the black contour ratio = 1) " + f + " wins at equal cost.",
                       sec.files);

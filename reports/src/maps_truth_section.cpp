@@ -2,29 +2,25 @@
 // the measured ratio and two cheap predictors, over a fixed set of bodies (runs/maps_truth.hpp).
 #include <algorithm>
 #include <cmath>
-#include <ctime>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/reports/triangle_contour.hpp"
 #include "rotlie/runs/maps_truth.hpp"
 #include "rotlie/runs/maps_truth_csv.hpp"
+#include "rotlie/runs/maps_study.hpp"
 #include "rotlie/runs/text_file.hpp"
-#include "rotlie/solver/body_grid.hpp"
 
 namespace rotlie::reports {
 
 // From the runs library (rotlie::runs):
-using runs::measure_body_truth;
 using runs::spearman;
-using runs::truth_bodies;
 using runs::truth_csv_header;
-using runs::truth_csv_rows;
 using runs::truth_max_level;
 using runs::truth_min_level;
 
@@ -186,11 +182,11 @@ std::string summary_table(const std::vector<truth_row>& rows) {
       std::sort(v.begin(), v.end());
       return v[v.size() / 2];
     };
-    md << "| " << family << " | " << measured.size() << " | " << fixed_text(spearman(analytic, measured), 3) << " (CPU: "
-       << fixed_text(spearman(analytic, measured_cpu), 3) << ") | " << fixed_text(spearman(predicted, measured), 3) << " (CPU: "
-       << fixed_text(spearman(predicted, measured_cpu), 3) << ") | " << fixed_text(spearman(gradient, measured), 3) << " | "
-       << significant_text(median(off_pred), 3) << "; " << significant_text(median(off_an), 3) << " | " << wins_h << "; " << wins_cpu << " | "
-       << wins_an << " | " << flips_an << "; " << flips_pred << " | " << fixed_text(slope_lo, 2) << "–" << fixed_text(slope_hi, 2)
+    md << "| " << family << " | " << measured.size() << " | " << runs::fixed_text(spearman(analytic, measured), 3) << " (CPU: "
+       << runs::fixed_text(spearman(analytic, measured_cpu), 3) << ") | " << runs::fixed_text(spearman(predicted, measured), 3) << " (CPU: "
+       << runs::fixed_text(spearman(predicted, measured_cpu), 3) << ") | " << runs::fixed_text(spearman(gradient, measured), 3) << " | "
+       << runs::significant_text(median(off_pred), 3) << "; " << runs::significant_text(median(off_an), 3) << " | " << wins_h << "; " << wins_cpu << " | "
+       << wins_an << " | " << flips_an << "; " << flips_pred << " | " << runs::fixed_text(slope_lo, 2) << "–" << runs::fixed_text(slope_hi, 2)
        << " |\n";
   }
   return md.str();
@@ -204,9 +200,9 @@ std::string flips_table(const std::vector<truth_row>& rows) {
   for (const auto& r : rows)
     if ((r.analytic > 1) != (r.measured_h > 1)) {
       ++n;
-      md << "| " << r.family << " | " << fixed_text(r.I1, 4) << " | " << fixed_text(r.I2, 4) << " | " << r.best << " | "
-         << significant_text(r.analytic, 3) << " | " << significant_text(r.measured_h, 3) << " | " << significant_text(r.measured_cpu, 3) << " | "
-         << significant_text(r.predicted, 3) << " |\n";
+      md << "| " << r.family << " | " << runs::fixed_text(r.I1, 4) << " | " << runs::fixed_text(r.I2, 4) << " | " << r.best << " | "
+         << runs::significant_text(r.analytic, 3) << " | " << runs::significant_text(r.measured_h, 3) << " | " << runs::significant_text(r.measured_cpu, 3) << " | "
+         << runs::significant_text(r.predicted, 3) << " |\n";
     }
   if (n == 0) return "No body's verdict flips.\n";
   return md.str();
@@ -229,17 +225,13 @@ report_section maps_truth_section(const report_options& options) {
     csv = runs::read_bounded_file(given, largest_csv_bytes);  // the one bounded reader: no FIFO waited on
     provenance = "read from the given measured-ratios.csv (`bench/maps_truth_study`)";
   } else {
-    const auto bodies = truth_bodies(K);
-    csv = truth_csv_header();
-    const std::clock_t start = std::clock();
-    for (std::size_t k = 0; k < bodies.size(); ++k) {
-      if (options.progress)
-        options.progress("Maps truth: body " + std::to_string(k + 1) + " of " + std::to_string(bodies.size()));
-      csv += truth_csv_rows(measure_body_truth(bodies[k], {"N", "P"}));
-    }
-    cpu_seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
-    provenance = "computed in this run: the " + std::to_string(bodies.size() - 1) + " asymmetric bodies of the grid K = " +
-                 std::to_string(K) + " (issue 14's grid) and water, " + fixed_text(cpu_seconds, 0) + " s CPU" +
+    const auto measured = runs::measure_truth_grid(K, [&](const std::string& line) {
+      if (options.progress) options.progress("Maps truth: " + line);
+    });
+    csv = measured.csv;
+    cpu_seconds = measured.cpu_seconds;
+    provenance = "computed in this run: the " + std::to_string(measured.bodies - 1) + " asymmetric bodies of the grid K = " +
+                 std::to_string(K) + " (issue 14's grid) and water, " + runs::fixed_text(cpu_seconds, 0) + " s CPU" +
                  (options.full ? "" : " (`--full`: K = 11, 111 bodies)");
   }
   const auto rows = parse_rows(csv);
@@ -265,7 +257,7 @@ report_section maps_truth_section(const report_options& options) {
         "identity attitude, T = 1, h = 2^-" << truth_min_level << " … 2^-" << truth_max_level
      << ", long double, error constants error / (h/C)^4 from the three finest steps) against RS4 S5 McLachlan at its "
         "best MEASURED permutation among the six. Ratios > 1: the family's integrator is more accurate. Equal CPU: "
-        "the error constants scaled by the measured process CPU seconds per step of the double stepper "
+        "the error constants scaled by the measured CPU seconds per step (this thread) of the double stepper "
         "(fastest of 5 runs of ≥ 10 ms).\n\n"
      << "Predictors, computed from H_R5 alone, without running any scheme: (a) the maps' ratio R_M / R_best · "
         "(12/C)^4; (b) the **transported remainder**: a 4th-order symmetric composition is the exact flow of "
@@ -279,10 +271,10 @@ report_section maps_truth_section(const report_options& options) {
      << flips_table(rows) << "\n";
   for (const auto& r : rows)
     if (std::abs(r.I1 - 10220.0 / 29376) < 1e-12 && std::abs(r.I2 - 19187.0 / 29376) < 1e-12)
-      md << "Water, " << r.family << ": the analytic best " << r.best << " has analytic ratio " << significant_text(r.analytic, 3)
-         << ", measured " << significant_text(r.measured_h, 3) << " (equal CPU " << significant_text(r.measured_cpu, 3)
-         << "), transported prediction " << significant_text(r.predicted, 3) << "; error constant measured "
-         << significant_text(r.measured_constant, 3) << ", predicted " << significant_text(r.predicted_constant, 3) << ".\n\n";
+      md << "Water, " << r.family << ": the analytic best " << r.best << " has analytic ratio " << runs::significant_text(r.analytic, 3)
+         << ", measured " << runs::significant_text(r.measured_h, 3) << " (equal CPU " << runs::significant_text(r.measured_cpu, 3)
+         << "), transported prediction " << runs::significant_text(r.predicted, 3) << "; error constant measured "
+         << runs::significant_text(r.measured_constant, 3) << ", predicted " << runs::significant_text(r.predicted_constant, 3) << ".\n\n";
   md << measured_map_chart(options, rows, "N", grid_K, sec.files) << "\n"
      << measured_map_chart(options, rows, "P", grid_K, sec.files) << "\n"
      << scatter_chart(options, rows, sec.files) << "\n"

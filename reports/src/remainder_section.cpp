@@ -2,60 +2,26 @@
 // engine in the paper's variables (x, y), the eliminations behind (60)–(61) and (78)–(84), and
 // the structure of H_R5 for every named scheme.
 #include <algorithm>
-#include <chrono>
 #include <sstream>
 
-#include "rotlie/bch/modified_hamiltonian.hpp"
-#include "rotlie/lie/theorems.hpp"
-#include "rotlie/reports/expression_io.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
+#include "rotlie/runs/expression_io.hpp"
+#include "rotlie/runs/remainder_study.hpp"
 
 namespace rotlie::reports {
 namespace {
 
-const GiNaC::symbol& x_symbol() {
-  static const GiNaC::symbol x("x");
-  return x;
-}
-const GiNaC::symbol& y_symbol() {
-  static const GiNaC::symbol y("y");
-  return y;
-}
-
-struct paper_form {
-  bch::scheme_layout layout;
-  bch::coefficient_symbols coefficients;
-  std::vector<GiNaC::symbol> symbols;  // free coefficients, then x, y
-  bch::modified_hamiltonian k;
-};
-
-// H_Rk in the paper's variables, scaled by 2I1 = 1 (eqs. 42–43 for RS, 53–54 for ABC).
-paper_form in_paper_variables(std::string_view scheme, int order) {
-  const auto named = bch::find_named_scheme(scheme);
-  paper_form p;
-  p.layout = bch::layout_scheme(named->word, named->split);
-  p.coefficients = bch::make_coefficients(p.layout);
-  for (const auto& name : p.layout.free_coefficients) p.symbols.push_back(p.coefficients.free.at(name));
-  p.symbols.push_back(x_symbol());
-  p.symbols.push_back(y_symbol());
-  const auto w = named->split == bch::splitting::abc ? bch::inverse_inertia::abc_paper(x_symbol(), y_symbol())
-                                                     : bch::inverse_inertia::rs_paper(x_symbol(), y_symbol());
-  p.k = bch::compute_modified_hamiltonian(bch::stage_elements(p.layout, p.coefficients, w), order);
-  return p;
-}
-
 std::string latex_factored(const GiNaC::ex& e, const std::vector<GiNaC::symbol>& symbols, const std::string& joiner);
 
-std::string latex_third_order(const paper_form& p, const std::string& equation, bool factored) {
+std::string latex_third_order(const runs::remainder_third_order& p, const std::string& equation, bool factored) {
   std::ostringstream out;
   const char* names[] = {"P'_1", "P'_2", "P'_3"};
-  const lie::monomial mons[] = {lie::monomial(2, 2, 0), lie::monomial(2, 0, 2), lie::monomial(0, 2, 2)};
   out << "\\begin{align*}  % regenerates eq. (" << equation << ")\n";
-  for (int i = 0; i < 3; ++i) {
-    const GiNaC::ex c = p.k.remainder[3].coefficient(mons[i]);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const GiNaC::ex& c = p.P[i];
     out << names[i] << " &= "
-        << (factored ? latex_factored(c, p.symbols, " ") : format_expression(c, p.symbols, expression_style::latex))
+        << (factored ? latex_factored(c, p.symbols, " ") : runs::format_expression(c, p.symbols, runs::expression_style::latex))
         << (i < 2 ? " \\\\\n" : "\n");
   }
   out << "\\end{align*}\n";
@@ -77,9 +43,9 @@ std::string latex_factored(const GiNaC::ex& e, const std::vector<GiNaC::symbol>&
     GiNaC::ex base = x;
     int power = 1;
     if (GiNaC::is_a<GiNaC::power>(x)) base = x.op(0), power = GiNaC::ex_to<GiNaC::numeric>(x.op(1)).to_int();
-    std::string text = format_expression(base, symbols, expression_style::latex);
+    std::string text = runs::format_expression(base, symbols, runs::expression_style::latex);
     if (text.rfind('-', 0) == 0) {
-      text = format_expression(-base, symbols, expression_style::latex);
+      text = runs::format_expression(-base, symbols, runs::expression_style::latex);
       if (power % 2 != 0) constant = -constant;
     }
     std::string t = "\\left(" + text + "\\right)";
@@ -93,17 +59,17 @@ std::string latex_factored(const GiNaC::ex& e, const std::vector<GiNaC::symbol>&
   std::sort(factors.begin(), factors.end(), [](const std::string& a, const std::string& b) {
     return a.size() != b.size() ? a.size() < b.size() : a < b;
   });
-  std::string out = format_expression(constant, {}, expression_style::latex);
+  std::string out = runs::format_expression(constant, {}, runs::expression_style::latex);
   for (const auto& t : factors) out += joiner + t;
   return out;
 }
 
 // Res_v2(P'_1, P'_2), factorised.
-std::string latex_resultant(const paper_form& p, const std::string& v2_name) {
-  const GiNaC::symbol v2 = p.coefficients.free.at(v2_name);
-  const GiNaC::ex res = GiNaC::resultant(p.k.remainder[3].coefficient(lie::monomial(2, 2, 0)).expand(),
-                                         p.k.remainder[3].coefficient(lie::monomial(2, 0, 2)).expand(), v2);
-  return "\\mathrm{Res}_{" + format_expression(v2, {v2}, expression_style::latex) + "}(P'_1, P'_2) &= " +
+std::string latex_resultant(const runs::remainder_elimination& e) {
+  const GiNaC::symbol& v2 = e.v2;
+  const GiNaC::ex& res = e.resultant;
+  const auto& p = e;
+  return "\\mathrm{Res}_{" + runs::format_expression(v2, {v2}, runs::expression_style::latex) + "}(P'_1, P'_2) &= " +
          latex_factored(res, p.symbols, " \\\\\n &\\quad\\times ");
 }
 
@@ -114,39 +80,29 @@ report_section remainder_section(const report_options& options) {
   report_section s;
   s.title = "Remainder formulas";
   std::ostringstream tex, md;
-  const auto start = std::chrono::steady_clock::now();
+  const auto study = runs::remainder_study(options.quick);
+  const auto& forms = study.third_order;  // RSRSRSR, SRSRSRS, N4
 
   tex << "% Regenerated by rotlie report from the BCH engine. P'_i = P_i (2I_1)^3 are the coefficients of\n"
       << "% G_1^2G_2^2, G_1^2G_3^2, G_2^2G_3^2 in H_{R_3}; x = I_1/I_2, y = I_1/I_3 (RS) or 1+x = I_1/I_2,\n"
       << "% 1+y = I_1/I_3 (ABC). Terms are in rotlie's order (degree, then exponents), not the paper's.\n\n";
-  tex << "\\paragraph{RSRSRSR (eqs. 47--48).}\n" << latex_third_order(in_paper_variables("RSRSRSR", 3), "48", true) << "\n";
-  tex << "\\paragraph{SRSRSRS (eq. 51).}\n" << latex_third_order(in_paper_variables("SRSRSRS", 3), "51", true) << "\n";
-  tex << "\\paragraph{N4 ABC (eqs. 58--59).}\n" << latex_third_order(in_paper_variables("N4", 3), "59", false) << "\n";
+  tex << "\\paragraph{RSRSRSR (eqs. 47--48).}\n" << latex_third_order(forms.at(0), "48", true) << "\n";
+  tex << "\\paragraph{SRSRSRS (eq. 51).}\n" << latex_third_order(forms.at(1), "51", true) << "\n";
+  tex << "\\paragraph{N4 ABC (eqs. 58--59).}\n" << latex_third_order(forms.at(2), "59", false) << "\n";
 
   tex << "\\paragraph{Eliminations (eqs. 60--61 and appendix A, 78--84).} The resultant of $P'_1$ and $P'_2$ in the "
          "second free coefficient, factorised; the paper's $f$ is the factor of highest degree in the first free "
          "coefficient, the others are spurious (their roots do not solve the system, or make $g$ degenerate).\n";
-  const std::vector<std::pair<std::string, std::string>> eliminations = {
-      {"N1", "b1"}, {"N2", "a2"}, {"N3", "b1"}, {"N4", "b1"}, {"N5", "c1"}, {"N6", "b1"}, {"N7", "c1"}};
-  for (const auto& [scheme, v2] : eliminations) {
-    if (options.quick && scheme != "N4") continue;
-    tex << "\\begin{align*}  % " << scheme << "\n" << latex_resultant(in_paper_variables(scheme, 3), v2) << "\n\\end{align*}\n";
-  }
+  for (const auto& e : study.eliminations)
+    tex << "\\begin{align*}  % " << e.scheme << "\n" << latex_resultant(e) << "\n\\end{align*}\n";
 
   // H_R5 structure (62)–(63) for every named scheme, symbolic in the moments.
   std::ostringstream table;
   table << "| scheme | word | terms of H_R5 | on the monomials of (62) | 3(Q1+…+Q6) + Q7 = 0 (63) |\n|:--|:--|--:|:--|:--|\n";
-  for (const auto& n : bch::named_schemes()) {
-    if (options.quick && n.name != "N4" && n.name != "P1" && n.name != "R") continue;
-    const auto layout = bch::layout_scheme(n.word, n.split);
-    const auto c = bch::make_coefficients(layout);
-    const auto k = bch::compute_modified_hamiltonian(bch::stage_elements(layout, c, bch::inverse_inertia::symbolic()), 5);
-    bool support = true;
-    for (const auto& [m, q] : k.remainder[5].terms()) support = support && lie::theorem1_allows(5, m);
-    table << "| " << n.name << " | " << n.word << " | " << k.remainder[5].size() << " | " << (support ? "yes" : "NO")
-          << " | " << (bch::theorem2_pairing(k.remainder[5]).is_zero() ? "yes" : "NO") << " |\n";
-  }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (const auto& r : study.structure)
+    table << "| " << r.name << " | " << r.word << " | " << r.terms << " | " << (r.support ? "yes" : "NO")
+          << " | " << (r.reduction ? "yes" : "NO") << " |\n";
+  const double seconds = study.seconds;
 
   write_file_atomically(options.out_dir / "remainders.tex", tex.str());
   s.files.push_back(options.out_dir / "remainders.tex");

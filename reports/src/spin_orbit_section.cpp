@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "rotlie/reports/chart.hpp"
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/runs/spin_orbit_cost.hpp"
@@ -62,8 +62,8 @@ void bodies_table(std::ostringstream& md) {
   md << "| body | A/C | B/C | (B − A)/C | e | source |\n|:--|--:|--:|--:|--:|:--|\n";
   for (const auto& b : runs::spin_bodies()) {
     const auto I = runs::spin_moments(b);
-    md << "| " << b.name << " | " << significant_text(I[0] / I[2], 8) << " | " << significant_text(I[1] / I[2], 8) << " | "
-       << significant_text((I[1] - I[0]) / I[2], 4) << " | " << b.orbit_e << " | " << b.source << " |\n";
+    md << "| " << b.name << " | " << runs::significant_text(I[0] / I[2], 8) << " | " << runs::significant_text(I[1] / I[2], 8) << " | "
+       << runs::significant_text((I[1] - I[0]) / I[2], 4) << " | " << b.orbit_e << " | " << b.source << " |\n";
   }
   md << "\n";
 }
@@ -98,28 +98,28 @@ void islands(std::ostringstream& md, const report_options& o, const runs::spin_b
       continue;
     }
     const double tr = runs::planar_map_trace(body, e, f.theta0, w, 200), turns = runs::spin_winding(body, e, f.theta0, w, 1, 200);
-    md << "| " << f.p << " | " << (f.theta0 == 0 ? "0" : "π/2") << " | " << significant_text(w, 6) << " | " << significant_text(turns, 6) << " | "
-       << significant_text(tr, 4) << " | " << (std::abs(tr) < 2 ? "elliptic: an island" : "hyperbolic: no island") << " |\n";
+    md << "| " << f.p << " | " << (f.theta0 == 0 ? "0" : "π/2") << " | " << runs::significant_text(w, 6) << " | " << runs::significant_text(turns, 6) << " | "
+       << runs::significant_text(tr, 4) << " | " << (std::abs(tr) < 2 ? "elliptic: an island" : "hyperbolic: no island") << " |\n";
   }
   md << "\nBoth symmetric 3:2 orbits exist and both are hyperbolic: **Hyperion has no 3:2 island** at (B − A)/C = 0.264, e = 0.1, while the "
         "1:2, 1:1, 2:1 and 5:2 islands survive (issue 24 expected a 3:2 island; there is none). Wisdom (1987, AJ 94, 1350) writes that "
         "this region is so strongly perturbed that the 3/2 resonance … (a quote; the transcript consulted breaks off there, so the "
         "conclusion rests on the table above). The resonance-overlap estimate agrees: the p:1 island's half-width in θ'/n is ω₀√H(p, e), ω₀ = √(3(B − A)/C) = "
-     << significant_text(w0, 4) << ", with Cayley's H (WPM 1984):\n\n| p | H(p, e) | half-width ω₀√H | spans θ'/n |\n|--:|--:|--:|:--|\n";
+     << runs::significant_text(w0, 4) << ", with Cayley's H (WPM 1984):\n\n| p | H(p, e) | half-width ω₀√H | spans θ'/n |\n|--:|--:|--:|:--|\n";
   double width[3];
   int k = 0;
   for (const double p : {1.0, 1.5, 2.0}) {
     const double H = runs::cayley_coefficient(p, e), wd = w0 * std::sqrt(std::abs(H));
     width[k++] = wd;
-    md << "| " << p << " | " << significant_text(H, 4) << " | " << significant_text(wd, 3) << " | " << fixed_text(p - wd, 2) << "–"
-       << fixed_text(p + wd, 2) << " |\n";
+    md << "| " << p << " | " << runs::significant_text(H, 4) << " | " << runs::significant_text(wd, 3) << " | " << runs::fixed_text(p - wd, 2) << "–"
+       << runs::fixed_text(p + wd, 2) << " |\n";
   }
-  md << "\nThe 1:1 and 3:2 half-widths add to " << significant_text((width[0] + width[1]) / 0.5, 3) << " times the distance 0.5 between their "
+  md << "\nThe 1:1 and 3:2 half-widths add to " << runs::significant_text((width[0] + width[1]) / 0.5, 3) << " times the distance 0.5 between their "
         "centres, the 3:2 and 2:1 ones to "
-     << significant_text((width[1] + width[2]) / 0.5, 3)
+     << runs::significant_text((width[1] + width[2]) / 0.5, 3)
      << " times (Chirikov's criterion: overlap above 1): the 3:2 centre lies inside the 1:1 resonance's width, and the estimate's "
         "chaotic band, "
-     << fixed_text(1 - width[0], 2) << "–" << fixed_text(2 + width[2], 2) << " n, lies within the measured zone.\n\n";
+     << runs::fixed_text(1 - width[0], 2) << "–" << runs::fixed_text(2 + width[2], 2) << " n, lies within the measured zone.\n\n";
   // starts on a finer grid through both 3:2 orbits' pericentre rates
   const double step = o.quick ? 0.05 : 0.025;
   int regular = 0, total = 0;
@@ -130,7 +130,7 @@ void islands(std::ostringstream& md, const report_options& o, const runs::spin_b
       const double l = runs::lyapunov_per_orbit(body, e, models::spin_orbit_start<double>(I, theta0, w, 0.0), bu.orbits, bu.steps_per_orbit);
       if (l >= chaos_threshold) continue;
       ++regular;
-      regular_turns += (regular_turns.empty() ? "" : ", ") + significant_text(runs::spin_winding(body, e, theta0, w, bu.orbits, bu.steps_per_orbit), 4);
+      regular_turns += (regular_turns.empty() ? "" : ", ") + runs::significant_text(runs::spin_winding(body, e, theta0, w, bu.orbits, bu.steps_per_orbit), 4);
     }
   md << "Starts on a finer grid through both 3:2 orbits (θ₀ = 0 and π/2, θ'₀ = 1.2 to 2.1 n in steps of " << step << ", " << bu.orbits
      << " orbits each): " << regular << " of " << total << " are regular"
@@ -168,7 +168,7 @@ void hyperion_section(report_section& s, std::ostringstream& md, const report_op
   for (std::size_t j = 0; j < sec.lyapunov.size(); ++j) {
     const double l = sec.lyapunov[j];
     chaotic += l > chaos_threshold, lmax = std::max(lmax, l);
-    if (l > chaos_threshold) chaotic_rates[j % 2] += (chaotic_rates[j % 2].empty() ? "" : ", ") + significant_text(starts[j].second, 3);
+    if (l > chaos_threshold) chaotic_rates[j % 2] += (chaotic_rates[j % 2].empty() ? "" : ", ") + runs::significant_text(starts[j].second, 3);
   }
   md << "### Hyperion: the planar surface of section (Wisdom, Peale & Mignard 1984)\n\n"
      << "With obliquity 0 the scene is the planar problem θ'' = −(3/2)((B − A)/C) r⁻³ sin 2(θ − f). " << starts.size()
@@ -176,13 +176,13 @@ void hyperion_section(report_section& s, std::ostringstream& md, const report_op
      << " orbits by SIER4 at h = 1/" << bu.steps_per_orbit
      << " orbit; each point is one pericentre passage, coloured by the start's Lyapunov exponent (two trajectories 1e-9 apart, "
         "renormalised every orbit). A regular orbit's finite-time estimate decays like log(N)/N ("
-     << significant_text(std::log(bu.orbits) / bu.orbits, 2) << " per orbit at N = " << bu.orbits << "), so an exponent above "
+     << runs::significant_text(std::log(bu.orbits) / bu.orbits, 2) << " per orbit at N = " << bu.orbits << "), so an exponent above "
      << chaos_threshold << " per orbit marks chaos: " << chaotic << " of " << starts.size() << " starts are chaotic, the largest exponent is "
-     << significant_text(lmax, 3) << " per orbit (a Lyapunov time of " << significant_text(1 / lmax, 3) << " orbits, "
-     << significant_text(hyperion_period_days / lmax, 3) << " days). Chaotic starts: θ₀ = 0 at θ'₀/n = "
+     << runs::significant_text(lmax, 3) << " per orbit (a Lyapunov time of " << runs::significant_text(1 / lmax, 3) << " orbits, "
+     << runs::significant_text(hyperion_period_days / lmax, 3) << " days). Chaotic starts: θ₀ = 0 at θ'₀/n = "
      << (chaotic_rates[0].empty() ? std::string("none") : chaotic_rates[0]) << "; θ₀ = π/2 at θ'₀/n = "
      << (chaotic_rates[1].empty() ? std::string("none") : chaotic_rates[1]) << ". The chaotic orbits' pericentre rates fill "
-     << fixed_text(zone_lo, 2) << " to " << fixed_text(zone_hi, 2)
+     << runs::fixed_text(zone_lo, 2) << " to " << runs::fixed_text(zone_hi, 2)
      << " n: one zone from almost no rotation to nearly two and a half turns per orbit around the synchronous island, as Wisdom, "
         "Peale & Mignard (1984) found (and Wisdom 1987, AJ 94, 1350, describes: a quote).\n\n";
   add_chart(s, md, o, "spin_orbit_hyperion_section", c, "Hyperion's planar surface of section, coloured by the Lyapunov exponent.");
@@ -213,11 +213,11 @@ void hyperion_section(report_section& s, std::ostringstream& md, const report_op
   for (double x : lun) lun_max = std::max(lun_max, x);
   md << "**The synchronous state is attitude-unstable.** The symmetric synchronous periodic orbit (θ = 0 at pericentre, π at "
         "apocentre) starts at θ' = "
-     << significant_text(w1, 8) << " n for Hyperion; in the plane its Lyapunov estimate over " << bu.orbits << " orbits is "
-     << significant_text(planar_l, 3) << " per orbit (regular: the 1:1 island). Tilted by 1e-6 rad it leaves the plane: the obliquity "
-     << "grows by a factor e every " << significant_text(1 / growth, 3) << " orbits (rate " << significant_text(growth, 3)
-     << " per orbit between 1e-5 and 1e-2 rad) and reaches " << significant_text(hyp.back(), 3) << " rad after " << tilt_orbits
-     << " orbits, as WPM found. The Moon's synchronous state, tilted the same way, stays below " << significant_text(lun_max, 3)
+     << runs::significant_text(w1, 8) << " n for Hyperion; in the plane its Lyapunov estimate over " << bu.orbits << " orbits is "
+     << runs::significant_text(planar_l, 3) << " per orbit (regular: the 1:1 island). Tilted by 1e-6 rad it leaves the plane: the obliquity "
+     << "grows by a factor e every " << runs::significant_text(1 / growth, 3) << " orbits (rate " << runs::significant_text(growth, 3)
+     << " per orbit between 1e-5 and 1e-2 rad) and reaches " << runs::significant_text(hyp.back(), 3) << " rad after " << tilt_orbits
+     << " orbits, as WPM found. The Moon's synchronous state, tilted the same way, stays below " << runs::significant_text(lun_max, 3)
      << " rad.\n\n";
   add_chart(s, md, o, "spin_orbit_synchronous_tilt", t, "Obliquity of the synchronous state tilted by 1e-6 rad: Hyperion and the Moon.");
 
@@ -237,8 +237,8 @@ void hyperion_section(report_section& s, std::ostringstream& md, const report_op
     const double l = runs::lyapunov_per_orbit(body, 0.1, models::spin_orbit_start<double>(I, st.theta0, st.omega0, st.obliquity), bu.orbits,
                                               bu.steps_per_orbit);
     const bool regular = l < chaos_threshold;
-    md << "| " << st.what << " | " << significant_text(l, 3) << " | " << (regular ? std::string("regular") : significant_text(1 / l, 3)) << " | "
-       << (regular ? std::string("—") : significant_text(hyperion_period_days / l, 3)) << " |\n";
+    md << "| " << st.what << " | " << runs::significant_text(l, 3) << " | " << (regular ? std::string("regular") : runs::significant_text(1 / l, 3)) << " | "
+       << (regular ? std::string("—") : runs::significant_text(hyperion_period_days / l, 3)) << " |\n";
   }
   md << "\nGoldberg et al. (2024, A&A 692, A9) argue that Hyperion is near a nutation–orbit resonance and rotates quasi-regularly, "
         "with chaos orders of magnitude weaker than WPM's (a quote). This scene has no tides, no Titan and the Voyager-era moments, "
@@ -266,17 +266,17 @@ void resonance_section(report_section& s, std::ostringstream& md, const report_o
   md << "### Mercury in 3:2 and the Moon's libration\n\n"
      << "Each starts on the symmetric periodic orbit of its resonance (θ = 0, the long axis towards the point mass, at pericentre and "
         "θ ≡ pπ at apocentre; spin rate at pericentre "
-     << significant_text(w_me, 8) << " n for Mercury, " << significant_text(w_mo, 8) << " n for the Moon, found by bisection), so that no "
+     << runs::significant_text(w_me, 8) << " n for Mercury, " << runs::significant_text(w_mo, 8) << " n for the Moon, found by bisection), so that no "
         "free libration is excited, "
      << bu.resonance_orbits << " orbits of SIER4 at h = 1/200 orbit. γ = θ − pM (mod π) is the resonant angle; its first "
         "harmonic (the discrete Fourier coefficient over each orbit, averaged over the orbits) is the forced libration, compared with first-order theory:\n\n"
      << "| body | p | max |γ| (rad) | forced amplitude | theory | ratio |\n|:--|--:|--:|--:|--:|--:|\n"
-     << "| Mercury | 3/2 | " << significant_text(me.max_excursion, 3) << " | " << significant_text(me.forced_amplitude, 4) << " rad = "
-     << significant_text(me.forced_amplitude * arcsec, 3) << "″ | (3/2)((B − A)/C)(1 − 11e² + 959e⁴/48) = " << significant_text(me_theory, 4)
-     << " | " << significant_text(me.forced_amplitude / me_theory, 4) << " |\n"
-     << "| Moon | 1 | " << significant_text(mo.max_excursion, 3) << " | " << significant_text(mo.forced_amplitude, 4) << " rad = "
-     << significant_text(mo.forced_amplitude * arcsec, 3) << "″ | 2eω₀²/(1 − ω₀²), ω₀² = 3(B − A)/C: " << significant_text(mo_theory, 4)
-     << " | " << significant_text(mo.forced_amplitude / mo_theory, 4) << " |\n\n"
+     << "| Mercury | 3/2 | " << runs::significant_text(me.max_excursion, 3) << " | " << runs::significant_text(me.forced_amplitude, 4) << " rad = "
+     << runs::significant_text(me.forced_amplitude * arcsec, 3) << "″ | (3/2)((B − A)/C)(1 − 11e² + 959e⁴/48) = " << runs::significant_text(me_theory, 4)
+     << " | " << runs::significant_text(me.forced_amplitude / me_theory, 4) << " |\n"
+     << "| Moon | 1 | " << runs::significant_text(mo.max_excursion, 3) << " | " << runs::significant_text(mo.forced_amplitude, 4) << " rad = "
+     << runs::significant_text(mo.forced_amplitude * arcsec, 3) << "″ | 2eω₀²/(1 − ω₀²), ω₀² = 3(B − A)/C: " << runs::significant_text(mo_theory, 4)
+     << " | " << runs::significant_text(mo.forced_amplitude / mo_theory, 4) << " |\n\n"
      << "Both stay in resonance (γ bounded). The theory for Mercury is that of a body whose mantle librates alone (Margot et al. "
         "2007 use (B − A)/C_m, about 2.3 times larger); the rigid scene uses the whole body's C, so its amplitude is the rigid "
         "planet's, not the observed 38.5″ (a quote, Margot et al. 2012).\n\n";
@@ -319,7 +319,7 @@ void cost_section(report_section& s, std::ostringstream& md, const report_option
       for (const auto& p : pts)
         if (p.error > 0) ser.x.push_back(p.cpu_s), ser.y.push_back(p.error);
       c.series.push_back(std::move(ser));
-      md << "| " << family << " | " << scientific_or_dash(runs::cpu_at_error(pts, 1e-9), 2) << " |\n";
+      md << "| " << family << " | " << runs::scientific_or_dash(runs::cpu_at_error(pts, 1e-9), 2) << " |\n";
     };
     for (const auto& m : methods) {
       std::vector<runs::spin_cost_point> pts;
@@ -365,8 +365,8 @@ void drift_section(std::ostringstream& md, const report_options& o) {
     for (const std::string& m : std::vector<std::string>{"SIER4", best, "SIER4/RS4-S5-McLachlan:ABC", "odeint-rkf78:" + tol}) {
       const auto t = runs::spin_track_of(c, m, false, c.steps_per_orbit, checkpoints);
       md << "| " << m << " |";
-      for (std::size_t i = 0; i < t.orbits.size(); ++i) md << " " << scientific_or_dash(static_cast<double>(runs::attitude_angle(ref.Q[i], t.Q[i])), 2) << " |";
-      md << " " << significant_text(t.cpu_s.back(), 3) << " |\n";
+      for (std::size_t i = 0; i < t.orbits.size(); ++i) md << " " << runs::scientific_or_dash(static_cast<double>(runs::attitude_angle(ref.Q[i], t.Q[i])), 2) << " |";
+      md << " " << runs::significant_text(t.cpu_s.back(), 3) << " |\n";
     }
     md << "\n";
   }

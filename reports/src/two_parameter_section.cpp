@@ -8,23 +8,19 @@
 #include <iomanip>
 #include <sstream>
 
-#include "rotlie/lie/exact_number.hpp"
 #include "rotlie/runs/family_names.hpp"
 #include "rotlie/reports/chart.hpp"
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/report.hpp"
-#include "rotlie/runs/protocol_curves.hpp"
-#include "rotlie/schemes/reference_schemes.hpp"
-#include "rotlie/solver/scheme_table.hpp"
-#include "rotlie/solver/two_parameter.hpp"
+#include "rotlie/runs/two_parameter_study.hpp"
 
 namespace rotlie::reports {
 
 namespace {
 
-constexpr int digits = 45;
+constexpr int digits = runs::two_parameter_study_digits;
 
-int cost_of(const solver::two_parameter_entry& e) { return bch::family_cost(runs::two_parameter_family(e.split)); }
+int cost_of(const solver::two_parameter_entry& e) { return runs::two_parameter_cost(e); }
 
 void ranking_table(std::ostringstream& md, const solver::two_parameter_result& r, std::size_t rows) {
   md << "| rank | scheme | C/C0 | ‖H_R5‖ | ‖H_R5‖·C^4 | distinct minima | hits of the best / converged / starts | "
@@ -33,23 +29,18 @@ void ranking_table(std::ostringstream& md, const solver::two_parameter_result& r
   for (const auto& e : r.entries) {
     if (!e.polished || rank == rows) continue;
     ++rank;
-    md << "| " << rank << " | " << runs::two_parameter_name(e) << " | " << cost_of(e) << " | " << significant_text(e.best.remainder, 6) << " | "
-       << significant_text(e.best.remainder * std::pow(cost_of(e), 4), 4) << " | " << e.search.minima.size() << " | "
+    md << "| " << rank << " | " << runs::two_parameter_name(e) << " | " << cost_of(e) << " | " << runs::significant_text(e.best.remainder, 6) << " | "
+       << runs::significant_text(e.best.remainder * std::pow(cost_of(e), 4), 4) << " | " << e.search.minima.size() << " | "
        << e.search.minima.front().hits << " / " << e.search.converged << " / " << e.search.starts << " | "
-       << lie::to_decimal(e.best.projected_gradient, 2) << " | " << lie::to_decimal(e.best.order_residual, 2) << " |\n";
+       << runs::decimal_text(e.best.projected_gradient, 2) << " | " << runs::decimal_text(e.best.order_residual, 2) << " |\n";
   }
 }
 
 std::string coefficients_block(const solver::two_parameter_entry& e) {
   std::ostringstream o;
-  const auto layout = bch::layout_scheme(e.word, e.split, e.permutation);
-  o << "```\n" << runs::two_parameter_name(e) << "   word " << layout.permuted << "   ‖H_R5‖ = " << significant_text(e.best.remainder, 10) << "\n";
-  std::vector<std::string> seen;
-  for (const auto& st : layout.stages) {
-    if (std::find(seen.begin(), seen.end(), st.coefficient) != seen.end()) continue;
-    seen.push_back(st.coefficient);
-    o << st.letter << " " << st.coefficient << " = " << lie::to_decimal(e.best.values.at(st.coefficient), digits) << "\n";
-  }
+  const auto listing = runs::two_parameter_coefficients(e);
+  o << "```\n" << runs::two_parameter_name(e) << "   word " << listing.permuted_word << "   ‖H_R5‖ = " << runs::significant_text(e.best.remainder, 10) << "\n";
+  for (const auto& c : listing.coefficients) o << c.letter << " " << c.name << " = " << runs::decimal_text(c.value, digits) << "\n";
   o << "```\n";
   return o.str();
 }
@@ -72,38 +63,25 @@ chart comparison_chart(const std::vector<runs::scheme_curve>& curves, bool cpu) 
   return c;
 }
 
-const solver::two_parameter_entry* best_entry(const solver::two_parameter_result& r) {
-  for (const auto& e : r.entries)
-    if (e.polished) return &e;
-  return nullptr;
-}
-
 }  // namespace
 
 report_section two_parameter_section(const report_options& options) {
   report_section section;
   section.title = "Beyond the paper: two free parameters at order 4";
-  const auto body = lie::parse_moments("water");
-  solver::minimum_search_options abc_search, rs_search;
-  abc_search.starts = options.quick ? 8 : 40;
-  rs_search.starts = options.quick ? 20 : 100;
-  if (options.progress) options.progress("Two free parameters: searching the 13-stage ABC palindromes for water");
-  const auto q = solver::solve_two_parameter(body, bch::splitting::abc, solver::two_parameter_words(bch::splitting::abc),
-                                             bch::permutation_names(), abc_search, digits, 10);
-  if (options.progress) options.progress("Two free parameters: searching the 11-stage RS palindromes for water");
-  const auto qrs = solver::solve_two_parameter(body, bch::splitting::rs, solver::two_parameter_words(bch::splitting::rs),
-                                               bch::permutation_names(), rs_search, digits);
-
+  const auto study = runs::two_parameter_study(options.quick, [&](const std::string& line) {
+    if (options.progress) options.progress("Two free parameters: " + line);
+  });
+  const auto &q = study.q, &qrs = study.qrs;
   std::ostringstream md;
   md << "## " << section.title << "\n\n"
      << "LV section 3 stops at one free parameter (R: 9-stage RS palindromes, P: 11-stage ABC palindromes; the "
         "parameter chosen by minimising ‖H_R5‖, eq. (64)) and suggests two. One stage more gives them: the "
-        "13-stage ABC palindromes (family **Q**, " << solver::two_parameter_words(bch::splitting::abc).size()
+        "13-stage ABC palindromes (family **Q**, " << study.abc_words
      << " words × 6 permutations) and the 11-stage RS palindromes (**QRS**, RSRSRSRSRSR and SRSRSRSRSRS × 6) have "
         "four free coefficients after the first-order conditions; the two order-4 conditions P1 = P2 = 0 "
         "(dim L3 = 2) leave a 2-dimensional real surface on which ‖H_R5‖ is minimised for water.\n\n"
-     << "Method (`rotlie solve --family Q|QRS --inertia water`): from random starts in [−1, 1]^4 (" << abc_search.starts
-     << " per ABC system, " << rs_search.starts
+     << "Method (`rotlie solve --family Q|QRS --inertia water`): from random starts in [−1, 1]^4 (" << study.abc_starts
+     << " per ABC system, " << study.rs_starts
      << " per RS system here), a minimum-norm Gauss–Newton projection onto P1 = P2 = 0, then descent on the surface "
         "(reduced Newton steps in its tangent plane, shifted where the reduced Hessian is indefinite, each step "
         "restored onto the surface and kept only if ‖H_R5‖ decreases). The best local minimum of each system is "
@@ -114,7 +92,7 @@ report_section two_parameter_section(const report_options& options) {
         "relative to the terms of ∇f); the reduced Hessian is positive (a local minimum). **Not certified**: that the "
         "best minimum found is the global one, of a system or of the family; the counts of distinct minima and of "
         "the starts that reached the best are given for that judgement. Only the ten ABC systems with the smallest minima are polished here (`rotlie solve` polishes every system). Search and polishing took "
-     << significant_text(q.seconds, 3) << " s (Q) and " << significant_text(qrs.seconds, 3) << " s (QRS) of CPU.\n\n";
+     << runs::significant_text(q.seconds, 3) << " s (Q) and " << runs::significant_text(qrs.seconds, 3) << " s (QRS) of CPU.\n\n";
   md << "### Q: 13-stage ABC palindromes, the ten best systems by ‖H_R5‖\n\n";
   ranking_table(md, q, 10);
   md << "\n### QRS: 11-stage RS palindromes\n\n";
@@ -124,9 +102,9 @@ report_section two_parameter_section(const report_options& options) {
         "equal pairs, which checks the search. With two generators dim L3 of the free Lie algebra is 2 as well, so "
         "an RS scheme with H_R3 = 0 has order 4 on every body (as LV's R); only its ‖H_R5‖ is water's.\n\n";
 
-  const auto* best_q = best_entry(q);
-  const auto* best_rs = best_entry(qrs);
-  if (best_q == nullptr || best_rs == nullptr) {
+  const auto& best_q = study.best_q;
+  const auto& best_rs = study.best_rs;
+  if (!best_q || !best_rs) {
     md << "No certified minimum was found in one of the families; the comparison is skipped.\n";
     section.markdown = md.str();
     return section;
@@ -135,60 +113,39 @@ report_section two_parameter_section(const report_options& options) {
      << coefficients_block(*best_q) << "\n" << coefficients_block(*best_rs) << "\n";
 
   // The comparison at equal cost: predicted by ‖H_R5‖ (error ∝ ‖H_R5‖ (h/C)^4 C^4) and measured.
-  if (options.progress) options.progress("Two free parameters: protocol runs against P1 BAC (5) and RS4 S5 McLachlan CBA");
-  const auto p1_family = solver::solve_dedicated(body, {"P1"}, {"BAC"}, 40);
-  const auto& p1 = runs::find_solution(p1_family, "P1", "BAC", 5);
-  const int max_level = options.quick ? 8 : 10;
-  const runs::protocol_runner runner(body, 1, max_level);
-  const auto table_of = [&](const solver::two_parameter_entry& e) {
-    const auto s = solver::two_parameter_conditions(bch::layout_scheme(e.word, e.split, e.permutation), body);
-    return schemes::parse_scheme_table(solver::two_parameter_table_text(s, e.best, digits, body, runs::two_parameter_name(e), "report"));
-  };
-  std::vector<runs::scheme_curve> curves;
-  curves.push_back(runner.run(solver::scheme_table_of(p1, body)));
-  curves.back().name = p1.name();
-  curves.push_back(runner.run(*schemes::reference_scheme("RS4-S5-McLachlan:CBA")));
-  curves.push_back(runner.run(table_of(*best_q)));
-  curves.back().name = runs::two_parameter_name(*best_q);
-  curves.push_back(runner.run(table_of(*best_rs)));
-  curves.back().name = runs::two_parameter_name(*best_rs);
+  const auto& curves = study.curves;
   const auto& p1_curve = curves[0];
-  md << "### Against P1 BAC (5) (cost 11, ‖H_R5‖ = " << significant_text(p1.analytic_remainder, 5) << ") at equal cost\n\n"
+  const int max_level = study.max_level;
+  const double p1_remainder = study.p1_remainder;
+  md << "### Against P1 BAC (5) (cost 11, ‖H_R5‖ = " << runs::significant_text(p1_remainder, 5) << ") at equal cost\n\n"
      << "Predicted: R_P1 / R_new × (11 / C_new)^4, the ratio of the errors at equal h/C if the error were "
         "‖H_R5‖ C^4 (h/C)^4. Measured: LV's protocol (G(0) = (1, 1, 1), T = 1, h = 2^-i, i = 1 … " << max_level
      << ", mean attitude error in long double, constant error/(h/C)^4 over the three finest steps; CPU time of the "
         "double stepper).\n\n"
      << "| scheme | C/C0 | ‖H_R5‖ | fitted order | error/(h/C)^4 | × P1 predicted | × P1 measured (equal h/C) | "
         "× P1 measured (equal CPU) |\n|:--|--:|--:|--:|--:|--:|--:|--:|\n";
-  const std::vector<double> remainders{p1.analytic_remainder, 0, best_q->best.remainder, best_rs->best.remainder};
+  const auto& remainders = study.remainders;
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const auto& k = curves[i];
     const bool known = remainders[i] > 0;
-    md << "| " << k.name << " | " << k.cost << " | " << (known ? significant_text(remainders[i], 4) : std::string("—")) << " | "
-       << significant_text(k.slope, 4) << " | " << significant_text(k.constant, 3) << " | "
-       << (known ? significant_text(p1.analytic_remainder / remainders[i] * std::pow(11.0 / k.cost, 4), 3) : std::string("—")) << " | "
-       << significant_text(runs::ratio_at_equal_reduced_step(p1_curve, k), 3) << " | " << significant_text(runs::ratio_at_equal_cpu_time(p1_curve, k), 3) << " |\n";
+    md << "| " << k.name << " | " << k.cost << " | " << (known ? runs::significant_text(remainders[i], 4) : std::string("—")) << " | "
+       << runs::significant_text(k.slope, 4) << " | " << runs::significant_text(k.constant, 3) << " | "
+       << (known ? runs::significant_text(p1_remainder / remainders[i] * std::pow(11.0 / k.cost, 4), 3) : std::string("—")) << " | "
+       << runs::significant_text(runs::ratio_at_equal_reduced_step(p1_curve, k), 3) << " | " << runs::significant_text(runs::ratio_at_equal_cpu_time(p1_curve, k), 3) << " |\n";
   }
   md << "\nA ratio above 1 means more accurate than P1 BAC (5). ‖H_R5‖ (the norm of the coefficients on the "
         "monomials G1^a G2^b G3^c) is a proxy: where the prediction and the measurement differ, the measurement "
         "is the answer for this initial condition, and minimising ‖H_R5‖ was not minimising the error.\n\n";
   // Every polished system measured, to see whether the norm's ranking is the error's.
-  if (options.progress) options.progress("Two free parameters: protocol runs of every polished system");
-  const runs::protocol_runner screen(body, 1, 8, false);
-  const auto p1_screen = screen.run(solver::scheme_table_of(p1, body));
   md << "Every polished system measured (h = 2^-1 … 2^-8, the constant over the three finest steps) against P1 BAC (5) "
         "at equal h/C, next to the norm's prediction:\n\n| scheme | ‖H_R5‖ | × P1 predicted | × P1 measured |\n|:--|--:|--:|--:|\n";
   int better = 0, measured = 0;
-  for (const auto* family : {&q, &qrs})
-    for (const auto& e : family->entries) {
-      if (!e.polished) continue;
-      auto k = screen.run(table_of(e));
-      const double ratio = runs::ratio_at_equal_reduced_step(p1_screen, k);
-      ++measured;
-      better += ratio > 1;
-      md << "| " << runs::two_parameter_name(e) << " | " << significant_text(e.best.remainder, 4) << " | "
-         << significant_text(p1.analytic_remainder / e.best.remainder * std::pow(11.0 / cost_of(e), 4), 3) << " | " << significant_text(ratio, 3) << " |\n";
-    }
+  for (const auto& e : study.screened) {
+    ++measured;
+    better += e.ratio > 1;
+    md << "| " << e.name << " | " << runs::significant_text(e.remainder, 4) << " | "
+       << runs::significant_text(p1_remainder / e.remainder * std::pow(11.0 / e.cost, 4), 3) << " | " << runs::significant_text(e.ratio, 3) << " |\n";
+  }
   md << "\n" << better << " of " << measured << " polished systems are more accurate than P1 BAC (5) at equal h/C.\n\n";
   const auto write = [&](const std::string& file, bool cpu, const std::string& caption) {
     const auto f = write_chart(options.out_dir, file, comparison_chart(curves, cpu));

@@ -10,39 +10,13 @@
 #include <thread>
 #include <tuple>
 
-#include "rotlie/bch/modified_hamiltonian.hpp"
-#include "rotlie/bch/scheme_word.hpp"
-#include "rotlie/models/experiments/dipole_field_experiment.hpp"
-#include "rotlie/models/experiments/free_water_experiment.hpp"
 #include "rotlie/reports/chart.hpp"
-#include "rotlie/reports/number_text.hpp"
-#include "rotlie/runs/protocol_curves.hpp"
-#include "rotlie/schemes/quad.hpp"
-#include "rotlie/solver/scheme_table.hpp"
+#include "rotlie/runs/number_text.hpp"
+#include "rotlie/runs/vzs_study.hpp"
 
 namespace rotlie::reports {
 
-// From the runs library (rotlie::runs):
-using runs::find_solution;
-
 namespace {
-
-// The run sizes of the section (see budget_text for the CPU time they take).
-struct budget {
-  long tau_runs;
-  double tau_T_ps;
-  long table_runs;
-  double table_T_ps;
-  long scan_runs;
-  double scan_T_ps;
-  double roundoff_double_T_ps, roundoff_long_double_T_ps, roundoff_float128_T_ps;
-  long roundoff_runs;
-};
-
-budget budget_for(bool quick) {
-  if (quick) return {100, 5, 50, 20, 8, 10, 200, 20, 2, 2};
-  return {400, 5, 200, 100, 20, 20, 1000, 100, 10, 4};
-}
 
 // The section's cost, measured with the exact flow of about 16 rotation stages (one core).
 std::string budget_text(bool quick) {
@@ -55,9 +29,9 @@ std::string sig(double x, int digits = 2) {
   const double a = std::abs(x);
   if (a == 0 || (a >= 1e-3 && a < 1e6)) {
     const int magnitude = a == 0 ? 0 : static_cast<int>(std::floor(std::log10(a)));
-    return fixed_text(x, std::max(0, digits - 1 - magnitude));
+    return runs::fixed_text(x, std::max(0, digits - 1 - magnitude));
   }
-  return scientific_text(x, digits - 1);
+  return runs::scientific_text(x, digits - 1);
 }
 
 // A time in ps in the unit the paper would use, with its error in the same unit.
@@ -68,51 +42,6 @@ std::string duration(double ps, double error_ps = std::nan("")) {
     if (ps >= scale || scale == 1)
       return sig(ps / scale) + (std::isfinite(error_ps) ? " ± " + sig(error_ps / scale, 1) : "") + " " + name;
   return "";
-}
-
-struct row {
-  std::string label;  ///< shown
-  std::string name;   ///< integrator name for md_integrator_named
-  const schemes::scheme_table* rotor = nullptr;
-  std::string paper;  ///< the paper's integrator it stands for, if any
-};
-
-// The dedicated rotors solved for the water molecule (the body of the scenes, exact ratios).
-struct dedicated_rotors {
-  std::map<std::string, schemes::scheme_table> tables;
-  dedicated_rotors() {
-    const auto water = lie::parse_moments(models::water::moments_ratio);
-    for (const auto& [scheme, perm, label] : {std::tuple<std::string, std::string, int>{"N2", "BAC", 2}, {"P1", "BAC", 5}, {"R", "ABC", 4}}) {
-      const auto result = solver::solve_dedicated(water, {scheme}, {perm}, 40);
-      tables.emplace(scheme + ":" + perm + ":" + std::to_string(label),
-                     solver::scheme_table_of(find_solution(result, scheme, perm, label), water));
-    }
-  }
-  row sier2(const std::string& key, const std::string& shown) const { return {shown, "SIER2/" + key, &tables.at(key), ""}; }
-};
-
-std::vector<row> all_rows(const dedicated_rotors& d) {
-  return {{"MRDL", "MRDL", nullptr, "MRDL"},
-          {"MRDL-reversed", "MRDL-reversed", nullptr, "MRDL"},
-          {"SEJ4 (reconstruction)", "SEJ4", nullptr, "SEJ4"},
-          {"SIER2", "SIER2", nullptr, "SIER2"},
-          {"SIER4", "SIER4", nullptr, "SIER4"},
-          d.sier2("N2:BAC:2", "SIER2/N2:BAC:2"),
-          d.sier2("P1:BAC:5", "SIER2/P1:BAC:5"),
-          d.sier2("R:ABC:4", "SIER2/R:ABC:4"),
-          {"SIER2/RS4-S5-McLachlan:CBA", "SIER2/RS4-S5-McLachlan:CBA", nullptr, ""},
-          {"SIER2/ABCBA4-SS3-Yoshida", "SIER2/ABCBA4-SS3-Yoshida", nullptr, ""}};
-}
-
-models::md_run_options run_options(const row& r, double h, double T, long runs) {
-  models::md_run_options o;
-  o.integrator = r.name;
-  o.rotor_table = r.rotor;
-  o.h_fs = h;
-  o.T_ps = T;
-  o.runs = runs;
-  o.seed = 1;
-  return o;
 }
 
 struct section_writer {
@@ -151,7 +80,7 @@ std::string range_text(const std::pair<double, double>& r, int digits = 2) {
 
 // --- V.A: τ ------------------------------------------------------------------------------------
 
-void tau_table(section_writer& w, const std::vector<row>& rows, const budget& b, findings& found) {
+void tau_table(section_writer& w, const runs::vzs_study_result& study, const runs::vzs_budget& b, findings& found) {
   const std::map<std::string, std::pair<double, double>> paper = {
       {"MRDL", {117, 7.6}}, {"SEJ4", {0.91e6, 2.1e3}}, {"SIER2", {16e9, 48e9}}};  // vZS section V.A (quoted), ps
   auto& md = w.md;
@@ -163,12 +92,11 @@ void tau_table(section_writer& w, const std::vector<row>& rows, const budget& b,
         "from one ensemble to the next by about that much).\n\n"
      << "| integrator | τ at h = 1.66 fs | paper | ours/paper | τ at h = 8 fs | paper | ours/paper |\n"
      << "|:--|--:|--:|--:|--:|--:|--:|\n";
-  for (const auto& r : rows) {
-    w.progress("tau, " + r.label);
+  for (std::size_t i = 0; i < study.integrators.size(); ++i) {
+    const auto& r = study.integrators[i];
     md << "| " << r.label;
     for (int k = 0; k < 2; ++k) {
-      const double h = k == 0 ? 1.66 : 8;
-      const auto res = models::run_free_water(models::free_water<double>{}, run_options(r, h, b.tau_T_ps, b.tau_runs));
+      const auto& res = study.tau[i][static_cast<std::size_t>(k)];
       found.tau[r.label][static_cast<std::size_t>(k)] = res.tau_ps;
       md << " | " << duration(res.tau_ps, res.tau_error_ps);
       const auto p = paper.find(r.paper);
@@ -181,27 +109,7 @@ void tau_table(section_writer& w, const std::vector<row>& rows, const budget& b,
   md << "\n";
 }
 
-// SIER2's δ is round-off only: its growth law and its size in three scalars.
-template <class T>
-models::free_water_result sier2_roundoff(double T_ps, long runs) {
-  models::md_run_options o = run_options({"SIER2", "SIER2", nullptr, "SIER2"}, 1.66, T_ps, runs);
-  return models::run_free_water(models::free_water<T>{}, o);
-}
-
-// Slope of log δ against log t over the second half of the samples.
-double growth_exponent(const models::free_water_result& r) {
-  std::vector<double> x, y;
-  for (std::size_t j = r.t_ps.size() / 2; j < r.t_ps.size(); ++j)
-    if (r.delta[j] > 0) x.push_back(std::log(r.t_ps[j])), y.push_back(std::log(r.delta[j]));
-  double mx = 0, my = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) mx += x[i], my += y[i];
-  mx /= static_cast<double>(x.size()), my /= static_cast<double>(x.size());
-  double sxy = 0, sxx = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
-  return sxx > 0 ? sxy / sxx : std::nan("");
-}
-
-void roundoff_table(section_writer& w, const budget& b, findings& found) {
+void roundoff_table(section_writer& w, const runs::vzs_study_result& study, const runs::vzs_budget& b, findings& found) {
   auto& md = w.md;
   md << "#### SIER2: τ is round-off\n\n"
      << "SIER2's free flight is the exact flow, so on the free body its δ is round-off alone (the reference is the exact "
@@ -212,25 +120,15 @@ void roundoff_table(section_writer& w, const budget& b, findings& found) {
         "scalar's round-off ε (ε = 2⁻⁵³, 2⁻⁶⁴, 2⁻¹¹³):\n\n"
      << "| scalar | run | steps | δ(end) | growth p | δ(10 ps)/ε | τ, linear fit over the run | τ_10 from δ = c tᵖ | reference δ(end) |\n"
      << "|:--|--:|--:|--:|--:|--:|--:|--:|--:|\n";
-  auto line = [&](const std::string& name, const models::free_water_result& r, const models::free_water_result& at10, double eps) {
-    const double p = growth_exponent(r);
+  for (const auto& [name, r, at10, eps, p] : study.roundoff) {
     const double c = r.delta.back() / std::pow(r.t_ps.back(), p);
     const double tau10 = std::pow(0.1 / c, 1 / p);
     if (name == "double") found.sier2_tau_long = r.tau_ps, found.sier2_long_run = r.t_ps.back(), found.sier2_tau10 = tau10;
     // a float128 run cannot be told apart from its float128 reference: τ is then not fitted (—)
     md << "| " << name << " | " << duration(r.t_ps.back()) << " | " << r.steps << " | " << sig(r.delta.back()) << " | "
-       << fixed_text(p, 2) << " | " << sig(at10.delta.back() / eps) << " | " << duration(r.tau_ps) << " | " << duration(tau10)
+       << runs::fixed_text(p, 2) << " | " << sig(at10.delta.back() / eps) << " | " << duration(r.tau_ps) << " | " << duration(tau10)
        << " | " << sig(r.reference_delta.back()) << " |\n";
-  };
-  w.progress("SIER2 round-off in double");
-  line("double", sier2_roundoff<double>(b.roundoff_double_T_ps, b.roundoff_runs), sier2_roundoff<double>(10, b.roundoff_runs),
-       std::numeric_limits<double>::epsilon() / 2);
-  w.progress("SIER2 round-off in long double");
-  line("long double", sier2_roundoff<long double>(b.roundoff_long_double_T_ps, b.roundoff_runs),
-       sier2_roundoff<long double>(10, b.roundoff_runs), std::numeric_limits<long double>::epsilon() / 2);
-  w.progress("SIER2 round-off in float128");
-  const auto q = sier2_roundoff<quad>(b.roundoff_float128_T_ps, b.roundoff_runs);
-  line("float128", q, q, static_cast<double>(std::numeric_limits<quad>::epsilon() / 2));
+  }
   md << "\nIn double and long double δ grows faster than t (p ≈ 2 over long runs: a systematic drift of the energy "
         "by round-off, which shifts the frequency, rather than a random walk, p = 3/2), so the paper's linear "
         "τ depends on the run length; τ_10, the time at which the measured growth law reaches δ = 0.1, does not. "
@@ -245,14 +143,14 @@ struct paper_cell {
   double e, de, l, dl;  ///< ΔH/ΔV in %, ΔL_z/⟨L_z⟩ (absolute), each ± error
 };
 
-void table_one(section_writer& w, const budget& b, const std::vector<row>& rows, findings& found) {
+void table_one(section_writer& w, const runs::vzs_study_result& study, const runs::vzs_budget& b, findings& found) {
   // vZS Table I (quoted): ΔH/ΔV in %, ΔL_z/⟨L_z⟩ with the column scales 1e-13 (MRDL, SIER) and 1e-3 (SEJ4).
   const std::map<std::string, std::vector<paper_cell>> paper = {
       {"MRDL", {{1.8, 0.3, 16e-13, 1e-13}, {11.4, 1.6, 7.0e-13, 0.6e-13}, {51, 7, 3.9e-13, 0.4e-13}}},
       {"SEJ4", {{0.088, 0.006, 0.0014e-3, 0.0003e-3}, {0.55, 0.04, 0.069e-3, 0.019e-3}, {2.24, 0.16, 2.3e-3, 1.1e-3}}},
       {"SIER2", {{0.088, 0.006, 6e-13, 1e-13}, {0.55, 0.4, 2.1e-13, 0.7e-13}, {2.22, 0.15, 1.4e-13, 0.3e-13}}},
       {"SIER4", {{0.0035, 0.0005, 2.6e-13, 0.7e-13}, {0.27, 0.06, 1.8e-13, 0.3e-13}, {14, 2, 2.6e-13, 0.4e-13}}}};
-  const double h_over_f[] = {4.2, 11, 21};
+  const auto& h_over_f = study.table_h_over_f;
   auto& md = w.md;
   md << "### Dipole in a field: Table I (section V.B)\n\n"
      << "Water (E&K moments), dipole 1.84 D along the C2 axis, field 2.7 MV/m along z; " << b.table_runs
@@ -265,10 +163,9 @@ void table_one(section_writer& w, const budget& b, const std::vector<row>& rows,
      << "| h/f (fs) | integrator | ΔH/ΔV % (ours) | (paper) | agrees | ΔL_z/⟨L_z⟩ (ours) | (paper) |\n"
      << "|--:|:--|--:|--:|:--|--:|--:|\n";
   for (int k = 0; k < 3; ++k) {
-    for (const auto& r : rows) {
-      w.progress("Table I, h/f = " + sig(h_over_f[k]) + " fs, " + r.label);
-      const int f = models::md_integrator_named(r.name).f;
-      const auto res = models::run_dipole_field(models::dipole_field<double>{}, run_options(r, h_over_f[k] * f, b.table_T_ps, b.table_runs));
+    for (std::size_t i = 0; i < study.table[static_cast<std::size_t>(k)].size(); ++i) {
+      const auto& r = study.integrators[i];
+      const auto& res = study.table[static_cast<std::size_t>(k)][i];
       found.dH[r.label][static_cast<std::size_t>(k)] = res.dH.mean;
       md << "| " << sig(h_over_f[k]) << " | " << r.label << " | " << sig(res.dH.mean) << " ± " << sig(res.dH.error, 1);
       const auto p = paper.find(r.paper);
@@ -294,15 +191,10 @@ void table_one(section_writer& w, const budget& b, const std::vector<row>& rows,
 
 // --- accuracy against cost, failure --------------------------------------------------------------
 
-struct scan_point {
-  double h_over_f, error, cpu;
-  bool works;
-};
-
-void cost_charts(section_writer& w, const budget& b, const std::vector<row>& rows) {
-  const std::vector<double> grid = {1, 2, 4.2, 8, 11, 16, 21, 32, 45, 64};
-  constexpr double energy_limit = 10;   // % of ΔV
-  constexpr double tau_limit = 100;     // ps: a free flight in a gas (vZS section V.A)
+void cost_charts(section_writer& w, const runs::vzs_study_result& study, const runs::vzs_budget& b) {
+  const auto& grid = study.grid;
+  const double energy_limit = study.energy_limit;  // % of ΔV
+  const double tau_limit = study.tau_limit;        // ps: a free flight in a gas (vZS section V.A)
   const auto titled = [](const std::string& title, const std::string& x, const std::string& y) {
     chart c;
     c.title = title, c.x_label = x, c.y_label = y;
@@ -321,25 +213,14 @@ void cost_charts(section_writer& w, const budget& b, const std::vector<row>& row
   std::ostringstream failures;
   failures << "| integrator | largest working h/f, dipole (ΔH/ΔV ≤ 10 %, finite) | largest working h/f, free water (τ ≥ 100 ps) |\n"
            << "|:--|--:|--:|\n";
-  for (const auto& r : rows) {
-    w.progress("accuracy against cost, " + r.label);
-    const int f = models::md_integrator_named(r.name).f;
+  for (std::size_t i = 0; i < study.integrators.size(); ++i) {
+    const auto& r = study.integrators[i];
+    const auto& scan = study.scan[i];
     chart_series a, c, fa, fc;
     a.name = c.name = fa.name = fc.name = r.label;
-    double last_dipole = 0, last_free = 0;
-    bool dipole_ok = true, free_ok = true;
-    for (double x : grid) {
-      const auto d = models::run_dipole_field(models::dipole_field<double>{}, run_options(r, x * f, b.scan_T_ps, b.scan_runs));
-      const bool works = d.failed_runs == 0 && d.dH.mean <= energy_limit;
-      if (d.failed_runs == 0 && d.dH.mean > 0) a.x.push_back(x), a.y.push_back(d.dH.mean), c.x.push_back(d.cpu_s_per_ps), c.y.push_back(d.dH.mean);
-      dipole_ok = dipole_ok && works;
-      if (dipole_ok) last_dipole = x;
-      const auto fr = models::run_free_water(models::free_water<double>{}, run_options(r, x * f, std::max(b.scan_T_ps / 4, 4 * x * f / 1000), b.scan_runs));
-      const double rate = 1 / fr.tau_ps;
-      if (std::isfinite(rate)) fa.x.push_back(x), fa.y.push_back(rate), fc.x.push_back(fr.cpu_s_per_ps), fc.y.push_back(rate);
-      free_ok = free_ok && fr.finite && fr.tau_ps >= tau_limit;
-      if (free_ok) last_free = x;
-    }
+    a.x = scan.dipole_h, a.y = scan.dipole_error, c.x = scan.dipole_cpu, c.y = scan.dipole_error;
+    fa.x = scan.free_h, fa.y = scan.free_rate, fc.x = scan.free_cpu, fc.y = scan.free_rate;
+    const double last_dipole = scan.last_dipole, last_free = scan.last_free;
     dh_h.series.push_back(a), dh_cpu.series.push_back(c), fw_h.series.push_back(fa), fw_cpu.series.push_back(fc);
     failures << "| " << r.label << " | " << (last_dipole > 0 ? sig(last_dipole) + " fs" : "< 1 fs") << (last_dipole == grid.back() ? " (grid end)" : "")
              << " | " << (last_free > 0 ? sig(last_free) + " fs" : "< 1 fs") << (last_free == grid.back() ? " (grid end)" : "") << " |\n";
@@ -360,57 +241,8 @@ void cost_charts(section_writer& w, const budget& b, const std::vector<row>& row
 
 // --- MRDL's axis order: the leapfrog's remainder ------------------------------------------------
 
-// E[∏ G_i^{n_i}] for independent G_i ~ N(0, s_i): ∏ s_i^{n_i/2} (n_i − 1)!! (0 for an odd n_i).
-double gaussian_moment(const std::array<unsigned, 3>& n, const std::array<double, 3>& s) {
-  double m = 1;
-  for (std::size_t i = 0; i < 3; ++i) {
-    if (n[i] % 2) return 0;
-    for (unsigned k = 1; k < n[i]; k += 2) m *= k * s[i];
-  }
-  return m;
-}
-
-struct remainder_size {
-  double norm;         ///< Euclidean norm of the coefficients (LV's ‖H_R‖, body scaled to I3 = 1)
-  double fluctuation;  ///< canonical rms of H_R3 − ⟨H_R3⟩
-  double gradient;     ///< canonical rms of |∇_G H_R3|: the modified flow's angular-velocity error
-};
-
-// H_R3 of the table ABCBA2:perm (the rotor of MRDL or MRDL-reversed) for water scaled to I3 = 1, by
-// the BCH expansion at the table's own coefficients, and its size over the canonical momenta
-// (G_i ~ N(0, I_i), k_B T = 1: only ratios between the orders are used).
-remainder_size leapfrog_remainder(const std::string& perm) {
-  const auto unit = solver::scaled_to_unit_I3(lie::parse_moments(models::water::moments_ratio));
-  const std::array<cln::cl_RA, 3> w{cln::recip(unit.I[0]), cln::recip(unit.I[1]), cln::cl_RA(1)};
-  const auto table = *schemes::reference_scheme("ABCBA2:" + perm);
-  const auto layout = bch::layout_scheme("ABCBA", bch::splitting::abc, perm);
-  std::map<std::string, double> values;
-  for (std::size_t i = 0; i < layout.stages.size(); ++i) values[layout.stages[i].coefficient] = std::stod(table.stages[i].value);
-  const auto H3 = bch::compute_numeric_modified_hamiltonian(layout, w, values, 3).at(3);
-  const std::array<double, 3> s{cln::double_approx(unit.I[0]), cln::double_approx(unit.I[1]), 1.0};
-  remainder_size r{0, 0, 0};
-  double mean = 0, square = 0, gradient = 0;
-  for (const auto& [m, c] : H3.terms()) {
-    r.norm += c * c;
-    mean += c * gaussian_moment({m[0], m[1], m[2]}, s);
-    for (const auto& [m2, c2] : H3.terms()) {
-      square += c * c2 * gaussian_moment({m[0] + m2[0], m[1] + m2[1], m[2] + m2[2]}, s);
-      for (int k = 0; k < 3; ++k) {
-        if (m[k] == 0 || m2[k] == 0) continue;
-        std::array<unsigned, 3> n{m[0] + m2[0], m[1] + m2[1], m[2] + m2[2]};
-        n[static_cast<std::size_t>(k)] -= 2;
-        gradient += c * c2 * m[k] * m2[k] * gaussian_moment(n, s);
-      }
-    }
-  }
-  r.norm = std::sqrt(r.norm);
-  r.fluctuation = std::sqrt(std::max(0.0, square - mean * mean));
-  r.gradient = std::sqrt(gradient);
-  return r;
-}
-
-void axis_order_remainders(section_writer& w, const findings& found) {
-  const auto dlm = leapfrog_remainder("ABC"), reversed = leapfrog_remainder("CBA");
+void axis_order_remainders(section_writer& w, const runs::vzs_study_result& study, const findings& found) {
+  const auto &dlm = study.mrdl_remainder, &reversed = study.reversed_remainder;
   auto& md = w.md;
   md << "#### Why MRDL's axis order matters\n\n"
      << "The free rotor of MRDL is the leapfrog ABCBA2 over the three planar rotations; its modified Hamiltonian is "
@@ -440,37 +272,9 @@ void axis_order_remainders(section_writer& w, const findings& found) {
 
 // --- cost per molecule-step ----------------------------------------------------------------------
 
-// CPU ns per molecule-step on the dipole scene (64 molecules, h/f = 4.2 fs), the least of `rounds`
-// interleaved timings of `seconds` each, so that a load from elsewhere on the machine inflates none.
-std::vector<double> step_costs(section_writer& w, const std::vector<row>& rows, double seconds, int rounds) {
-  const models::dipole_field<double> scene;
-  constexpr int molecules = 64;
-  std::vector<double> best(rows.size(), std::numeric_limits<double>::infinity());
-  for (int round = 0; round < rounds; ++round)
-    for (std::size_t k = 0; k < rows.size(); ++k) {
-      w.progress("cost, " + rows[k].label);
-      const auto o = run_options(rows[k], 4.2, 1, 1);
-      const double h = 4.2 * models::md_integrator_named(rows[k].name).f;
-      best[k] = std::min(best[k], models::with_scene_integrator<double>(scene, o, [&](const auto& method) {
-        models::rigid_bodies_state<double> x;
-        for (int n = 0; n < molecules; ++n) x.bodies.push_back(scene.initial(1, static_cast<std::uint64_t>(n)).bodies[0]);
-        method.step(x, h);  // sizes the force vectors
-        long steps = 0;
-        const double c0 = models::thread_cpu_seconds();
-        double used = 0;
-        while (used < seconds) {
-          for (int i = 0; i < 100; ++i) method.step(x, h);
-          steps += 100;
-          used = models::thread_cpu_seconds() - c0;
-        }
-        return 1e9 * used / (static_cast<double>(steps) * molecules);
-      }));
-    }
-  return best;
-}
-
-void cost_table(section_writer& w, const std::vector<row>& rows, bool quick, findings& found) {
-  const std::vector<double> ns = step_costs(w, rows, quick ? 0.02 : 0.1, quick ? 2 : 5);
+void cost_table(section_writer& w, const runs::vzs_study_result& study, const runs::vzs_budget& b, findings& found) {
+  const auto& rows = study.integrators;
+  const std::vector<double>& ns = study.cost_ns;
   found.cost_ns = ns;
   const double mrdl = ns.front();  // rows.front() is MRDL
   auto& md = w.md;
@@ -478,11 +282,11 @@ void cost_table(section_writer& w, const std::vector<row>& rows, bool quick, fin
      << "CPU time per molecule-step on the dipole scene (64 molecules, h/f = 4.2 fs, double), every integrator "
         "measured in this one run of the report, on this machine ("
      << std::thread::hardware_concurrency()
-     << " hardware threads, shared with other work; the least of " << (quick ? 2 : 5)
+     << " hardware threads, shared with other work; the least of " << b.cost_rounds
      << " interleaved timings, stepping only). `bench/md_bench` measures the same with Google Benchmark.\n\n"
      << "| integrator | ns per molecule-step | × MRDL | ns per molecule per simulated fs |\n|:--|--:|--:|--:|\n";
   for (std::size_t k = 0; k < rows.size(); ++k) {
-    const int f = models::md_integrator_named(rows[k].name).f;
+    const int f = rows[k].f;
     md << "| " << rows[k].label << " | " << sig(ns[k], 3) << " | " << sig(ns[k] / mrdl, 3) << " | " << sig(ns[k] / (4.2 * f), 3) << " |\n";
   }
   auto cost_of = [&](const std::string& label) {
@@ -565,7 +369,7 @@ report_section vzs_section(const report_options& options) {
   s.title = "van Zon & Schofield: rigid bodies under torques";
   std::ostringstream md;
   section_writer w{options, s, md};
-  const budget b = budget_for(options.quick);
+  const runs::vzs_budget b = runs::vzs_budget_for(options.quick);
   md << "## " << s.title << "\n\n"
      << "vZS sections V.A–B regenerated. Units: LAMMPS `real` (Å, fs, g/mol, kcal/mol, e) with LAMMPS's constants. "
         "The molecule: Eisenberg & Kauzmann's water moments 1.0220, 1.9187, 2.9376 × 10⁻⁴⁰ g cm² = 0.61546, 1.15547, "
@@ -586,17 +390,14 @@ report_section vzs_section(const report_options& options) {
         "paper's MRDL to show what the axis order does. Budget: "
      << budget_text(options.quick) << "; `rotlie report --full` leaves this section as it is: the larger ensembles are a matter of "
         "`rotlie md --runs`.\n\n";
-  w.progress("solving the dedicated rotors for water");
-  const dedicated_rotors dedicated;
-  const auto rows = all_rows(dedicated);
+  const auto study = runs::vzs_study(b, [&](const std::string& line) { w.progress(line); });
   findings found;
-  tau_table(w, rows, b, found);
-  roundoff_table(w, b, found);
-  const std::vector<row> table_rows(rows.begin(), rows.begin() + 5);
-  table_one(w, b, table_rows, found);
-  axis_order_remainders(w, found);
-  cost_charts(w, b, rows);
-  cost_table(w, rows, options.quick, found);
+  tau_table(w, study, b, found);
+  roundoff_table(w, study, b, found);
+  table_one(w, study, b, found);
+  axis_order_remainders(w, study, found);
+  cost_charts(w, study, b);
+  cost_table(w, study, b, found);
   discrepancies(w, found);
   s.markdown = md.str();
   return s;

@@ -1,9 +1,9 @@
 #include "rotlie/runs/best_for_body.hpp"
 
 #include <algorithm>
-#include <ctime>
 #include <limits>
 
+#include "rotlie/models/cpu_time.hpp"
 #include "rotlie/bch/families.hpp"
 #include "rotlie/lie/stop_request.hpp"
 #include "rotlie/runs/user_input.hpp"
@@ -26,7 +26,6 @@ measured_family measure_family(const fixed_reduced_step_protocol& protocol, cons
   return m;
 }
 
-double process_cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
 }  // namespace
 
@@ -50,7 +49,7 @@ best_result best_for_body(const lie::moments_of_inertia& body, bool analytic_onl
   r.body = body;
   std::tie(r.s, r.t) = solver::triangle_coordinates(body);
   r.measured = !analytic_only;
-  const double start = process_cpu_seconds();
+  const double start = models::thread_cpu_seconds();
   const fixed_reduced_step_protocol protocol(body);
   const auto show = [&](const std::string& line) {
     lie::stop_point();  // between the phases, each a minute at most
@@ -71,7 +70,7 @@ best_result best_for_body(const lie::moments_of_inertia& body, bool analytic_onl
     show("best: measuring every reference scheme at every permutation");
     r.references = measure_references(protocol);
   }
-  r.cpu_seconds = process_cpu_seconds() - start;
+  r.cpu_seconds = models::thread_cpu_seconds() - start;
   // The measured reference of the gains: RS4 S5 McLachlan at its best measured permutation.
   for (const auto& x : r.references) {
     if (x.name.rfind(std::string(solver::map_reference_scheme) + ":", 0) == 0) r.rs4 = x;

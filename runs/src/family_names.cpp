@@ -39,6 +39,8 @@ std::string two_parameter_name(const solver::two_parameter_entry& e) {
   return std::string(two_parameter_family(e.split).name) + ":" + e.word + ":" + e.permutation;
 }
 
+int two_parameter_cost(const solver::two_parameter_entry& e) { return bch::family_cost(two_parameter_family(e.split)); }
+
 bch::map_method map_method_asked(const bch::family& f, int K, bool exact, bool fast) {
   if (fast && !bch::fast_checked(f)) {
     const auto checked = bch::family_names([](const bch::family& g) { return bch::fast_checked(g); }, " and ");

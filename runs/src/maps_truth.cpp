@@ -9,11 +9,10 @@
 #include <numeric>
 #include <stdexcept>
 
-#include <time.h>
-
 #include "rotlie/bch/modified_hamiltonian.hpp"
 #include "rotlie/bch/scheme_word.hpp"
 #include "rotlie/models/composition_stepper.hpp"
+#include "rotlie/models/cpu_time.hpp"
 #include "rotlie/models/integrate.hpp"
 #include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
@@ -50,11 +49,6 @@ std::vector<double> ranks(const std::vector<double>& x) {
   return r;
 }
 
-double process_cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 }  // namespace
 
@@ -64,16 +58,16 @@ double cpu_seconds_per_step(const schemes::scheme_table& table, const lie::momen
   s.G = {1, 1, 1};
   constexpr long chunk = 4096;
   const double h = 1.0 / 64;
-  // The fastest of several runs of process CPU time: other processes only ever slow a run down
+  // The fastest of several runs of this thread's CPU time: other processes only ever slow a run down
   // (cache, frequency), and errors at equal CPU time go as the 4th power of this number.
   double best = std::numeric_limits<double>::infinity();
   for (int repeat = 0; repeat < 5; ++repeat) {
-    const double start = process_cpu_seconds();
+    const double start = models::thread_cpu_seconds();
     long steps = 0;
     double elapsed = 0;
     do {
       steps += models::integrate(method, s, h, chunk);
-      elapsed = process_cpu_seconds() - start;
+      elapsed = models::thread_cpu_seconds() - start;
     } while (elapsed < 0.01);
     best = std::min(best, elapsed / static_cast<double>(steps));
   }

@@ -101,4 +101,18 @@ const solver::dedicated_solution& find_solution(const solver::family_result& r, 
   throw std::runtime_error("the solver found no " + scheme + " " + perm + " (" + std::to_string(label) + ")");
 }
 
+finest_fit fit_finest(std::vector<std::pair<double, double>> points, int order) {
+  std::sort(points.begin(), points.end());
+  if (points.size() < static_cast<std::size_t>(fit_points)) throw std::runtime_error("a curve of fewer than three points");
+  points.resize(fit_points);
+  finest_fit f;
+  std::vector<models::protocol_point> measured;  // coarse to fine, as the fit takes them
+  for (auto p = points.rbegin(); p != points.rend(); ++p) measured.push_back({p->first, p->first, p->second, 0});
+  for (const auto& [x, y] : points) f.constant += y / std::pow(x, order) / fit_points;
+  models::fit_rule rule;
+  rule.margin = 0;
+  f.slope = models::fitted_order(measured, rule);
+  return f;
+}
+
 }  // namespace rotlie::runs

@@ -5,12 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <ctime>
 #include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
 
+#include "rotlie/models/cpu_time.hpp"
 #include "rotlie/runs/exclusive_use.hpp"
 #include "rotlie/runs/output_file.hpp"
 #include "rotlie/runs/text_file.hpp"
@@ -22,7 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
 std::vector<std::string> split_list(const std::string& text) {
   std::vector<std::string> out;
@@ -177,7 +176,7 @@ sixth_search_result sixth_search(const sixth_search_request& q, const std::funct
   auto done = resumed_state(state, q);
   solver::scan_rule rule;
   rule.budget = q.starts;
-  const double cpu0 = cpu_seconds();
+  const double cpu0 = models::thread_cpu_seconds();
   std::size_t index = 0;
   for (const auto& a : q.systems) {
     ++index;
@@ -212,7 +211,7 @@ sixth_search_result sixth_search(const sixth_search_request& q, const std::funct
     }
     result.best.push_back(std::move(t));
   }
-  result.cpu_seconds = cpu_seconds() - cpu0;
+  result.cpu_seconds = models::thread_cpu_seconds() - cpu0;
   return result;
 }
 

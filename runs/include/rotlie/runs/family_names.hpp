@@ -25,6 +25,9 @@ const bch::family& two_parameter_family(bch::splitting split);
 /// A searched system of two free parameters as FAMILY:WORD:PERM (Q:ABACBABABCABA:ABC).
 std::string two_parameter_name(const solver::two_parameter_entry& e);
 
+/// Its cost C/C0 (its family's).
+int two_parameter_cost(const solver::two_parameter_entry& e);
+
 /// The path a map of the family at grid K takes: its fast path unless `exact`, the family has none,
 /// or K is coarser than the grids where the fast path was checked (family::fast_from_grid).
 /// Throws bad_input for `fast` where the fast path is not checked against the exact solver.

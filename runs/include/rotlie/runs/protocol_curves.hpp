@@ -4,6 +4,7 @@
 // double (double round-off would flatten the finest 4th-order points), and the CPU time per step
 // measured on the double stepper, the one a user would run.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rotlie/lie/rigid_body.hpp"
@@ -50,6 +51,14 @@ class protocol_runner {
 double ratio_at_equal_reduced_step(const scheme_curve& worse, const scheme_curve& better);
 /// The same at equal measured CPU time per unit of simulated time.
 double ratio_at_equal_cpu_time(const scheme_curve& worse, const scheme_curve& better);
+
+/// A curve's law error = constant (h/C)^order and its fitted slope (models::fitted_order), over its three
+/// finest points, as protocol_runner::run fits it: for curves read back from a report's files.
+struct finest_fit {
+  double constant = 0, slope = 0;
+};
+/// `points` are (h/C, error) in any order; throws std::runtime_error with fewer than three.
+finest_fit fit_finest(std::vector<std::pair<double, double>> points, int order);
 
 /// The solution named scheme/perm/label in a solver result; throws std::runtime_error if absent.
 const solver::dedicated_solution& find_solution(const solver::family_result& r, const std::string& scheme,

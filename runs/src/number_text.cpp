@@ -1,10 +1,12 @@
-#include "rotlie/reports/number_text.hpp"
+#include "rotlie/runs/number_text.hpp"
 
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 
-namespace rotlie::reports {
+#include "rotlie/lie/exact_number.hpp"
+
+namespace rotlie::runs {
 
 std::string fixed_text(double x, int decimals) {
   std::ostringstream o;
@@ -26,4 +28,6 @@ std::string significant_text(double x, int digits) {
   return o.str();
 }
 
-}  // namespace rotlie::reports
+std::string decimal_text(const cln::cl_RA& x, int digits) { return lie::to_decimal(x, digits); }
+
+}  // namespace rotlie::runs

@@ -9,7 +9,7 @@
 #include "rotlie/lie/lie_poisson_algebra.hpp"
 #include "rotlie/lie/stage_table.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 nlohmann::json dims_json(const std::vector<lie::graded_piece>& pieces);
 std::string dims_text(const std::vector<lie::graded_piece>& pieces);
@@ -20,4 +20,4 @@ std::string stages_text(const std::vector<lie::stage_block>& blocks);
 std::string stages_markdown(const std::vector<lie::stage_block>& blocks);
 std::string stages_latex(const std::vector<lie::stage_block>& blocks);
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

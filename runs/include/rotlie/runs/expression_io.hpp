@@ -9,7 +9,7 @@
 
 #include "rotlie/lie/monomial.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 enum class expression_style { text, latex };
 
@@ -20,4 +20,4 @@ std::string format_expression(const GiNaC::ex& e, const std::vector<GiNaC::symbo
 /// "G1^2*G2^2" or "G_1^{2} G_2^{2}".
 std::string format_monomial(const lie::monomial& m, expression_style style);
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

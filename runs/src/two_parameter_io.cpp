@@ -1,9 +1,9 @@
-#include "rotlie/reports/two_parameter_io.hpp"
+#include "rotlie/runs/two_parameter_io.hpp"
 
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/runs/family_names.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 nlohmann::ordered_json two_parameter_json(const solver::two_parameter_result& result, const std::string& family,
                                           const lie::moments_of_inertia& body, int digits, int starts) {
@@ -38,4 +38,4 @@ nlohmann::ordered_json two_parameter_json(const solver::two_parameter_result& re
   return j;
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

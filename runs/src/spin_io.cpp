@@ -1,8 +1,8 @@
-#include "rotlie/reports/spin_io.hpp"
+#include "rotlie/runs/spin_io.hpp"
 
 #include <cmath>
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 namespace {
 
 nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
@@ -47,4 +47,4 @@ nlohmann::json spin_json(const runs::spin_result& r) {
   return j;
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

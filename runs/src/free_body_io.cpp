@@ -1,8 +1,8 @@
-#include "rotlie/reports/free_body_io.hpp"
+#include "rotlie/runs/free_body_io.hpp"
 
 #include <cmath>
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 namespace {
 
 nlohmann::json point_json(const models::protocol_point& p, double cpu) {
@@ -30,4 +30,4 @@ nlohmann::json exact_json(const runs::exact_result& r) {
   return nlohmann::json{{"T", r.T}, {"G", {s.G[0], s.G[1], s.G[2]}}, {"Q", Q}, {"error_estimate", r.error_estimate}};
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

@@ -1,9 +1,9 @@
-#include "rotlie/reports/best_io.hpp"
+#include "rotlie/runs/best_io.hpp"
 
 #include "rotlie/runs/map_file.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 namespace {
 
 using json = nlohmann::ordered_json;
@@ -62,4 +62,4 @@ nlohmann::ordered_json best_json(const runs::best_result& r) {
   return j;
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

@@ -4,7 +4,7 @@
 
 #include "rotlie/runs/free_body_runs.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 /// {"scheme", "slope": null, "points": [{"h", "h_over_C", "error", "cpu_s", "reference_error"}]}
 nlohmann::json integrate_json(const runs::integrate_result& r);
@@ -15,4 +15,12 @@ nlohmann::json order_json(const runs::order_result& r);
 /// {"T", "G": [3], "Q": [[3] × 3], "error_estimate"}
 nlohmann::json exact_json(const runs::exact_result& r);
 
+}  // namespace rotlie::runs
+
+// The Python module (python/src) still spells these rotlie::reports::…, where they lived before; the
+// names stay reachable there until its call sites say runs::.
+namespace rotlie::reports {
+using runs::integrate_json;
+using runs::order_json;
+using runs::exact_json;
 }  // namespace rotlie::reports

@@ -6,7 +6,7 @@
 
 #include "rotlie/runs/sixth_search.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 /// {"inertia", "split", "systems", … hit statistics …, "cpu_seconds", "best": [tables]}
 nlohmann::ordered_json sixth_json(const runs::sixth_search_result& r, const lie::moments_of_inertia& body,
@@ -15,4 +15,4 @@ nlohmann::ordered_json sixth_json(const runs::sixth_search_result& r, const lie:
 /// The general 6th-order compositions: [{"name", "order", "stages", "cost", "source"}]
 nlohmann::ordered_json sixth_references_json();
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

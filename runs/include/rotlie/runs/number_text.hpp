@@ -1,9 +1,11 @@
 #pragma once
 // How the report and the CLI print a double: one function per format, so that a table keeps its
 // exact bytes when its code moves. Each is an std::ostream with the named flags, nothing more.
+#include <cln/rational.h>
+
 #include <string>
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 /// `decimals` digits after the point (std::fixed): fixed_text(3.14159, 2) is "3.14".
 std::string fixed_text(double x, int decimals);
@@ -18,4 +20,7 @@ std::string scientific_or_dash(double x, int decimals);
 /// trailing zeros dropped). digits = 6 is what `std::cout << x` prints.
 std::string significant_text(double x, int digits);
 
-}  // namespace rotlie::reports
+/// An exact number as `digits` decimals (lie::to_decimal): the coefficients of tables and solutions.
+std::string decimal_text(const cln::cl_RA& x, int digits);
+
+}  // namespace rotlie::runs

@@ -1,8 +1,8 @@
-#include "rotlie/reports/sixth_io.hpp"
+#include "rotlie/runs/sixth_io.hpp"
 
 #include "rotlie/schemes/reference_schemes.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 nlohmann::ordered_json sixth_json(const runs::sixth_search_result& r, const lie::moments_of_inertia& body,
                                   const std::string& split) {
@@ -48,4 +48,4 @@ nlohmann::ordered_json sixth_references_json() {
   return j;
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

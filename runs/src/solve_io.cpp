@@ -1,4 +1,4 @@
-#include "rotlie/reports/solve_io.hpp"
+#include "rotlie/runs/solve_io.hpp"
 
 #include <cln/rational_io.h>
 #include <cln/real.h>
@@ -8,7 +8,7 @@
 
 #include "rotlie/lie/exact_number.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 namespace {
 
 std::string text(const cln::cl_RA& x) {
@@ -93,4 +93,4 @@ std::string solve_text(const solver::family_result& r, const lie::moments_of_ine
   return out.str();
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

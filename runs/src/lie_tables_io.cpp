@@ -1,11 +1,11 @@
-#include "rotlie/reports/lie_tables_io.hpp"
+#include "rotlie/runs/lie_tables_io.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <map>
 #include <sstream>
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 namespace {
 
 // The paper knows dim L_k of the free rigid body only up to order 5 (section 2.4).
@@ -185,4 +185,4 @@ std::string stages_latex(const std::vector<lie::stage_block>& blocks) {
   return out.str();
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

@@ -4,10 +4,10 @@
 
 #include "rotlie/runs/spin_orbit_run.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 /// {"body", "moments", "e", "integrator", "scalar", "h", "T", "steps", "evaluations", "Q" (3 rows; columns the
 /// body axes A, B, C in the inertial frame), "omega_body" (units of n), "theta", "energy_start", "energy_end", "cpu_s"}
 nlohmann::json spin_json(const runs::spin_result& r);
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

@@ -1,4 +1,4 @@
-#include "rotlie/reports/remainder_io.hpp"
+#include "rotlie/runs/remainder_io.hpp"
 
 #include <cln/rational.h>
 #include <cln/real.h>
@@ -7,9 +7,9 @@
 
 #include "rotlie/lie/exact_number.hpp"
 
-#include "rotlie/reports/expression_io.hpp"
+#include "rotlie/runs/expression_io.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 namespace {
 
 std::string split_name(const bch::remainder_result& r) { return r.layout.split == bch::splitting::abc ? "ABC" : "RS"; }
@@ -88,4 +88,4 @@ std::string remainder_latex(const bch::remainder_result& r) {
   return out.str();
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

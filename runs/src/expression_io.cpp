@@ -1,11 +1,11 @@
-#include "rotlie/reports/expression_io.hpp"
+#include "rotlie/runs/expression_io.hpp"
 
 #include <algorithm>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 namespace {
 
 struct term {
@@ -127,4 +127,4 @@ std::string format_monomial(const lie::monomial& m, expression_style style) {
   return out.empty() ? "1" : out;
 }
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

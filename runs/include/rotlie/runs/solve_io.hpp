@@ -6,10 +6,10 @@
 
 #include "rotlie/solver/dedicated_schemes.hpp"
 
-namespace rotlie::reports {
+namespace rotlie::runs {
 
 nlohmann::json solve_json(const solver::family_result& r, const lie::moments_of_inertia& body, const std::string& family,
                           int digits);
 std::string solve_text(const solver::family_result& r, const lie::moments_of_inertia& body, int digits, std::size_t rows);
 
-}  // namespace rotlie::reports
+}  // namespace rotlie::runs

@@ -2,11 +2,11 @@
 // creation order, hashing), and reads as expected.
 #include <boost/test/unit_test.hpp>
 
-#include "rotlie/reports/expression_io.hpp"
+#include "rotlie/runs/expression_io.hpp"
 
 BOOST_AUTO_TEST_SUITE(expression_io_test)
 
-using namespace rotlie::reports;
+using namespace rotlie::runs;
 
 BOOST_AUTO_TEST_CASE(independent_of_symbol_creation_order) {
   std::string first;
