@@ -9,7 +9,7 @@
 
 #include "bindings.hpp"
 #include "interruption.hpp"
-#include "rotlie/reports/spin_io.hpp"
+#include "rotlie/runs/spin_io.hpp"
 #include "rotlie/runs/spin_orbit_run.hpp"
 #include "rotlie/runs/user_input.hpp"
 
@@ -80,7 +80,7 @@ spin_object spin(const py::object& body, const py::object& e, const std::string&
   auto out = std::make_shared<spin_object>();
   run_symbolic([q, out] {  // a rotor SCHEME:PERM:LABEL is solved symbolically
     out->result = runs::spin_run(runs::spin_setup_of(q));
-    out->json = reports::spin_json(out->result).dump();
+    out->json = runs::spin_json(out->result).dump();
   });
   for (const auto& w : out->result.check.warnings)
     if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 2) != 0) throw py::error_already_set();
