@@ -21,6 +21,7 @@
 #include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/runs/free_body_io.hpp"
 #include "rotlie/runs/body_names.hpp"
+#include "rotlie/schemes/message_number.hpp"
 #include "rotlie/runs/free_body_runs.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
 #include "rotlie/runs/user_input.hpp"
@@ -61,12 +62,6 @@ T number_in(const std::string& text) {
 /// How far an attitude may be from a rotation: float64 entries written out to about 10 digits.
 constexpr double max_rotation_defect = 1e-9;
 
-std::string short_text(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", x);
-  return text;
-}
-
 /// max |QᵀQ − I| of a row-major 3×3 matrix, or +∞ when det Q < 0 (a reflection).
 double rotation_defect(const double* q) {
   double worst = 0;
@@ -99,7 +94,7 @@ state_rows checked_rows(const rows& G0, const rows& Q0) {
     const double* g = r.G + 3 * row;
     const double length = std::hypot(g[0], g[1], g[2]);
     if (length != 0 && !(length >= max_momentum_inverse && length <= max_momentum))
-      throw runs::bad_input("G0: |G0| = " + short_text(length) + " (row " + std::to_string(row) +
+      throw runs::bad_input("G0: |G0| = " + schemes::message_number(length) + " (row " + std::to_string(row) +
                             ") is outside the range 1e-150 … 1e150");
   }
   for (py::ssize_t i = 0; i < 9 * r.n; ++i)
@@ -107,8 +102,8 @@ state_rows checked_rows(const rows& G0, const rows& Q0) {
   for (py::ssize_t row = 0; row < r.n; ++row) {
     const double off = rotation_defect(r.Q + 9 * row);
     if (!(off <= max_rotation_defect))
-      throw runs::bad_input("Q0 (row " + std::to_string(row) + ") is not a rotation: max |QᵀQ − I| = " + short_text(off) +
-                            (off <= max_rotation_defect ? "" : " > " + short_text(max_rotation_defect)) +
+      throw runs::bad_input("Q0 (row " + std::to_string(row) + ") is not a rotation: max |QᵀQ − I| = " + schemes::message_number(off) +
+                            (off <= max_rotation_defect ? "" : " > " + schemes::message_number(max_rotation_defect)) +
                             " or det Q < 0 (orthonormalise it, e.g. by its polar decomposition)");
   }
   return r;

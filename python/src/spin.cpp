@@ -40,6 +40,13 @@ std::string number_argument(const py::handle& value, const char* what) {
   type_error(std::string(what) + " must be a real number, a Fraction or its text, got " + std::string(py::str(value.get_type().attr("__name__"))));
 }
 
+// every=K: None (no trajectory) or an integer, never a float truncated to one.
+std::string every_argument(const py::handle& every) {
+  if (every.is_none()) return "0";
+  if (!py::isinstance<py::int_>(every) || py::isinstance<py::bool_>(every)) type_error("every must be an integer or None");
+  return py::str(every);
+}
+
 // A body as `--body` takes it: a name or "A,B,C" as text, a Body, or three moments.
 std::string body_argument(const py::handle& body) {
   if (py::isinstance<py::str>(body)) return py::str(body);
@@ -76,7 +83,7 @@ spin_object spin(const py::object& body, const py::object& e, const std::string&
                  const py::object& every) {
   runs::spin_request q{body_argument(body), number_argument(e, "e"), integrator, number_argument(h, "h"), number_argument(T, "T"),
                        number_argument(theta0, "theta0"), number_argument(omega0, "omega0"), number_argument(obliquity, "obliquity"),
-                       scalar, every.is_none() ? "0" : std::string(py::str(py::int_(every)))};
+                       scalar, every_argument(every)};
   auto out = std::make_shared<spin_object>();
   run_symbolic([q, out] {  // a rotor SCHEME:PERM:LABEL is solved symbolically
     out->result = runs::spin_run(runs::spin_setup_of(q));

@@ -10,8 +10,6 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
-#include <iomanip>
-#include <sstream>
 
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/runs/body_names.hpp"
@@ -19,6 +17,7 @@
 #include "rotlie/runs/numeric_inputs.hpp"
 #include "rotlie/runs/spin_orbit_stepping.hpp"
 #include "rotlie/runs/user_input.hpp"
+#include "rotlie/schemes/message_number.hpp"
 
 namespace rotlie::runs {
 namespace {
@@ -35,12 +34,6 @@ constexpr double tolerance_floor_eps = 5;
 constexpr double unstable_percent = 100;    // the conserved quantity moves as much as the potential does
 constexpr double round_off_turn_eps = 1000;  // a step that turns the body by less is lost in round-off
 constexpr double round_off_per_step = 10;    // what a step's roundings can add to a sum, in ε
-
-std::string short_text(double x) {
-  std::ostringstream s;
-  s << std::setprecision(6) << x;
-  return s.str();
-}
 
 template <class T>
 double epsilon_of() {
@@ -66,9 +59,9 @@ long whole_steps(const std::string& h_text, const std::string& T_text, double h,
   if (steps > max_steps || T / h > max_steps) throw bad_input("--T/--h is over the limit of 2e9 steps");
   if (!whole || steps < 1) {
     const double below = std::floor(T / h), above = std::ceil(T / h);
-    std::string choices = below >= 1 ? "--T " + short_text(below * h) + " or " : std::string();
-    choices += "--T " + short_text(above * h);
-    throw bad_input("--T " + one_line(T_text) + " is not a whole number of steps --h " + one_line(h_text) + " (T/h = " + short_text(T / h) +
+    std::string choices = below >= 1 ? "--T " + schemes::message_number(below * h) + " or " : std::string();
+    choices += "--T " + schemes::message_number(above * h);
+    throw bad_input("--T " + one_line(T_text) + " is not a whole number of steps --h " + one_line(h_text) + " (T/h = " + schemes::message_number(T / h) +
                     "): take " + choices + ", or a step that divides T");
   }
   return static_cast<long>(steps);
@@ -143,14 +136,14 @@ spin_check judged(const conservation_watch<T>& w, const spin_setup& s, const mod
                       2 * boost::math::constants::pi<double>() * s.h;
   c.round_off_floor = turn < round_off_turn_eps * eps && turn > 0;
   if (c.round_off_floor)
-    c.warnings.push_back("one step turns the body by " + short_text(turn / eps) +
+    c.warnings.push_back("one step turns the body by " + schemes::message_number(turn / eps) +
                          " ε only: the step's change is lost in round-off (take a larger step or a wider --scalar)");
   const double reach = std::max(1000.0, round_off_per_step * static_cast<double>(s.steps)) * eps * w.size();
   c.unstable = !c.round_off_floor && !(c.max_change <= reach) && !(c.change_percent < unstable_percent);
   if (c.unstable)
     c.warnings.push_back(std::string("the ") + (c.quantity == "jacobi" ? "Jacobi integral" : "extended-phase-space Hamiltonian") +
-                         " changed by " + short_text(c.max_change) + ", " + short_text(c.change_percent) +
-                         " % of the potential's own fluctuation (" + short_text(c.potential_fluctuation) +
+                         " changed by " + schemes::message_number(c.max_change) + ", " + schemes::message_number(c.change_percent) +
+                         " % of the potential's own fluctuation (" + schemes::message_number(c.potential_fluctuation) +
                          "): the step is beyond the integrator's stable or accurate range; the result cannot be trusted");
   return c;
 }
@@ -276,8 +269,8 @@ spin_method spin_method_named(const std::string& name, const spin_body& body) {
     m.tolerance = positive_number(rest.substr(1), "--integrator " + one_line(name) + ": the tolerance");
     const double floor = tolerance_floor_eps * epsilon_of<long double>();  // the widest scalar Odeint runs in
     if (m.tolerance > 1e-2 || m.tolerance < floor)
-      throw bad_input("--integrator " + one_line(name) + ": the tolerance must be within " + short_text(floor) +
-                      " … 1e-2 (5 ε of long double; in double the floor is " + short_text(tolerance_floor_eps * epsilon_of<double>()) + ")");
+      throw bad_input("--integrator " + one_line(name) + ": the tolerance must be within " + schemes::message_number(floor) +
+                      " … 1e-2 (5 ε of long double; in double the floor is " + schemes::message_number(tolerance_floor_eps * epsilon_of<double>()) + ")");
     return m;
   }
   return splitting_named(name, body);
@@ -300,7 +293,7 @@ spin_setup spin_setup_of(const spin_request& r) {
   s.obliquity = finite_number(r.obliquity, "--obliquity");
   s.every = integer_in_range(r.every, "--every", 0, std::numeric_limits<long>::max());
   if (s.every > 0 && s.steps / s.every > max_samples)
-    throw bad_input("--every " + one_line(r.every) + " keeps " + short_text(static_cast<double>(s.steps / s.every)) +
+    throw bad_input("--every " + one_line(r.every) + " keeps " + schemes::message_number(static_cast<double>(s.steps / s.every)) +
                     " samples of the trajectory, over the limit of 1e7: take a larger --every");
   s.method = spin_method_named(r.integrator, s.body);
   if (s.method.adaptive && s.scalar == "float128")
@@ -308,7 +301,7 @@ spin_setup spin_setup_of(const spin_request& r) {
   const double floor = tolerance_floor_eps * epsilon_of_scalar(s.scalar);
   if (s.method.adaptive && s.method.tolerance < floor)
     throw bad_input("--integrator " + one_line(r.integrator) + ": the tolerance is below what " + s.scalar + " can reach (5 ε = " +
-                    short_text(floor) + "); take a larger one" + (s.scalar == "double" ? " or --scalar long-double" : ""));
+                    schemes::message_number(floor) + "); take a larger one" + (s.scalar == "double" ? " or --scalar long-double" : ""));
   return s;
 }
 

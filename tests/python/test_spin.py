@@ -51,6 +51,8 @@ def test_keywords_are_typed_and_documented():
         rotlie.spin("Moon", 0.05, "SIER2", 1j, 1)
     with pytest.raises(TypeError):
         rotlie.spin("Moon", 0.05, "SIER2", "1/100", 1, nope=3)
+    with pytest.raises(TypeError, match="every must be an integer"):
+        rotlie.spin("Moon", 0.05, "SIER2", "1/100", 1, every=1.5)  # once truncated to 1
 
 
 def test_refusals_and_flags_are_the_command_lines():

@@ -15,12 +15,12 @@
 #include <boost/numeric/odeint.hpp>
 
 #include <array>
-#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
 #include "rotlie/models/scenes/spin_orbit.hpp"
+#include "rotlie/schemes/message_number.hpp"
 
 namespace rotlie::models {
 
@@ -91,7 +91,7 @@ class spin_odeint_stepper {
     int refused = 0;
     while (t < t_next) {
       if (++tried_ > budget_)
-        throw std::runtime_error("the adaptive run used its budget of " + short_text(budget_) + " steps by t = " + short_text(static_cast<double>(t)) +
+        throw std::runtime_error("the adaptive run used its budget of " + schemes::message_number(budget_) + " steps by t = " + schemes::message_number(static_cast<double>(t)) +
                                  ": the tolerance asks for more steps than the run can afford (raise it)");
       const bool last = dt_ >= t_next - t;
       T dt = last ? t_next - t : dt_;
@@ -106,12 +106,6 @@ class spin_odeint_stepper {
         if (++refused > 500) throw std::runtime_error("the adaptive Runge-Kutta step fell below what the tolerance allows");
       }
     }
-  }
-
-  static std::string short_text(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g", x);
-    return text;
   }
 
   const spin_orbit_tide<T>& tide_;
