@@ -27,6 +27,8 @@ struct report_command_options {
   std::string maps;      ///< folder of map-N.jsonl / map-P.jsonl to draw
 };
 int run_report_command(const report_command_options& options);
+/// --sections' help: every section's key, from the report's one list of sections.
+std::string report_sections_help();
 
 }  // namespace rotlie::app
 

@@ -155,14 +155,20 @@ subcommand add_solve(CLI::App& app, solve_options& solve) {
   return {solve_cmd, with_folder_checked(solve, run_solve)};
 }
 
+// What the free-body commands share: the body (required), the initial angular momentum and --json.
+template <class Options>
+void add_free_body_options(CLI::App* cmd, Options& o) {
+  cmd->add_option("--inertia", o.inertia, "I1,I2,I3 as exact numbers, or water, sphere")->required();
+  cmd->add_option("--G0", o.G0, "Initial body angular momentum g1,g2,g3 (default 1,1,1)");
+  cmd->add_flag("--json", o.json, "Machine-readable output on stdout");
+}
+
 subcommand add_integrate(CLI::App& app, integrate_options& integrate) {
   auto* integrate_cmd = app.add_subcommand("integrate", "Mean attitude error and CPU time of one run against the exact solution");
   integrate_cmd->add_option("--scheme", integrate.scheme, "Reference name (RS4-S5-McLachlan:CBA), SCHEME:PERM:LABEL (N2:BAC:2) or a scheme-table file")->required();
-  integrate_cmd->add_option("--inertia", integrate.inertia, "I1,I2,I3 as exact numbers, or water, sphere")->required();
+  add_free_body_options(integrate_cmd, integrate);
   integrate_cmd->add_option("--h", integrate.h, "Step, e.g. 1/64 or 0.01")->required();
   integrate_cmd->add_option("--T", integrate.T, "Total time (default 1), a whole number of steps");
-  integrate_cmd->add_option("--G0", integrate.G0, "Initial body angular momentum g1,g2,g3 (default 1,1,1)");
-  integrate_cmd->add_flag("--json", integrate.json, "Machine-readable output on stdout");
   integrate_cmd->add_flag("--force", integrate.force, force_help);
   return {integrate_cmd, with_scales_checked(integrate, run_integrate)};
 }
@@ -170,23 +176,19 @@ subcommand add_integrate(CLI::App& app, integrate_options& integrate) {
 subcommand add_order(CLI::App& app, order_options& order) {
   auto* order_cmd = app.add_subcommand("order", "Numeric order: errors at h = T/2^i and the fitted slope");
   order_cmd->add_option("--scheme", order.scheme, "Reference name, SCHEME:PERM:LABEL or a scheme-table file")->required();
-  order_cmd->add_option("--inertia", order.inertia, "I1,I2,I3 as exact numbers, or water, sphere")->required();
+  add_free_body_options(order_cmd, order);
   order_cmd->add_option("--scalar", order.scalar, "double, long-double or float128 (default double)");
   order_cmd->add_option("--min-level", order.min_level, "Coarsest step T/2^i (default i = 1)");
   order_cmd->add_option("--max-level", order.max_level, "Finest step T/2^i (default i = 10)");
   order_cmd->add_option("--T", order.T, "Total time (default 1)");
-  order_cmd->add_option("--G0", order.G0, "Initial body angular momentum (default 1,1,1)");
-  order_cmd->add_flag("--json", order.json, "Machine-readable output on stdout");
   order_cmd->add_flag("--force", order.force, force_help);
   return {order_cmd, with_scales_checked(order, run_order)};
 }
 
 subcommand add_exact(CLI::App& app, exact_options& exact) {
   auto* exact_cmd = app.add_subcommand("exact", "The exact free-body state (G, attitude Q) at time T");
-  exact_cmd->add_option("--inertia", exact.inertia, "I1,I2,I3 as exact numbers, or water, sphere")->required();
+  add_free_body_options(exact_cmd, exact);
   exact_cmd->add_option("--T", exact.T, "Time")->required();
-  exact_cmd->add_option("--G0", exact.G0, "Initial body angular momentum (default 1,1,1)");
-  exact_cmd->add_flag("--json", exact.json, "Machine-readable output on stdout");
   return {exact_cmd, with_scales_checked(exact, run_exact)};
 }
 
@@ -216,8 +218,7 @@ subcommand add_report(CLI::App& app, report_command_options& report) {
   auto* report_cmd = app.add_subcommand("report", "Regenerate every table and figure into one folder");
   report_cmd->add_option("--out", report.out, "Output folder (default: rotlie-report)");
   report_cmd->add_flag("--quick", report.quick, "Smaller sweeps, for a fast look");
-  report_cmd->add_option("--sections", report.sections,
-                         "Only these sections, comma-separated: lie-algebra, remainders, dedicated, accuracy, stability, exact-flow, vzs, liquid-water, lammps, maps, maps-truth, beyond, two-parameter, spin-orbit, audit");
+  report_cmd->add_option("--sections", report.sections, report_sections_help());
   report_cmd->add_flag("--full", report.full,
                        "The papers' full statistics: liquid water's nine 1-ps runs per point (about 30 min), maps over all bodies at "
                        "the paper's grid (--grid 200; hours for the P family)");

@@ -12,11 +12,23 @@
 namespace rotlie::app {
 namespace {
 
+// "a, b, c": every section's key in report order
+std::string known_sections() {
+  std::string keys;
+  for (const auto& k : reports::report_section_keys()) keys += (keys.empty() ? "" : ", ") + k;
+  return keys;
+}
+
+}  // namespace
+
+std::string report_sections_help() { return "Only these sections, comma-separated: " + known_sections(); }
+
+namespace {
+
 // "a,b" → {"a", "b"}, each a known section key.
 std::vector<std::string> section_list(const std::string& text) {
   std::vector<std::string> keys;
-  std::string known;
-  for (const auto& k : reports::report_section_keys()) known += (known.empty() ? "" : ", ") + k;
+  const std::string known = known_sections();
   std::size_t start = 0;
   while (start <= text.size()) {
     const std::size_t comma = std::min(text.find(',', start), text.size());

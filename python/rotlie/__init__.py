@@ -6,7 +6,8 @@ their measurements) and its numeric core, with NumPy arrays in and out:
 - ``Body``, ``scheme``, ``load_table``, ``Scheme.save`` and ``solve``: bodies and scheme tables, the
   dedicated schemes of a family solved for a body (Laskar & Vaillant), ranked by ||H_R5||;
 - ``exact_flow``, ``integrate`` and ``order``: the free rigid body, vectorised over N states;
-- ``remainder``, ``best``, ``map_line``, ``bch`` and ``md``: the command line's JSON as Python objects.
+- ``remainder``, ``best``, ``map_line``, ``bch``, ``md`` and ``spin``: the command line's runs with typed
+  results (fields as attributes, arrays as NumPy arrays, ``to_dict()`` the command's JSON).
 
 Bad arguments raise ``ValueError`` and a failed run ``RuntimeError``, with the command line's
 one-line message; long calls release the GIL and Ctrl-C interrupts them; nothing is printed.
@@ -22,11 +23,13 @@ import numpy as np
 from . import _rotlie
 from ._arguments import index_argument, real_array
 from ._bodies import Body, body_text, number_text
+from ._results import BestResult, MapLine, MdResult, MdTrajectory, OrderResult, Result
 from ._rotlie import Scheme
 
 __all__ = [
     "Body", "Scheme", "scheme", "load_table", "solve", "exact_flow", "integrate", "order",
     "remainder", "Remainder", "best", "map_line", "bch", "md", "spin", "SpinResult", "SpinTrajectory",
+    "Result", "MdResult", "MdTrajectory", "OrderResult", "BestResult", "MapLine",
 ]
 __version__ = "0.1.0"
 
@@ -144,18 +147,19 @@ def _vector_text(v, what):
 
 
 def order(scheme, body, G0=(1, 1, 1), T=1, min_level: int = 1, max_level: int = 10, scalar: str = "double",
-          force: bool = False) -> dict:
+          force: bool = False) -> OrderResult:
     """The measured order of ``scheme`` for ``body`` (LV section 4.1), as ``rotlie order --json``.
 
     Steps h = T/2^i for i = ``min_level`` … ``max_level`` from (identity, G0), the mean attitude error
-    against the exact flow, and the fitted slope (``None`` when no fit). Returns the command's JSON:
-    ``{"scheme", "scalar", "declared_order", "points": [...], "slope"}``.
+    against the exact flow, and the fitted slope (``None`` when no fit). Returns an OrderResult: the
+    command's JSON fields ``scheme``, ``scalar``, ``declared_order``, ``points``, ``slope`` as attributes,
+    and ``h``, ``error`` as arrays.
     """
     text = body_text(body)
     if not isinstance(scheme, Scheme):
         scheme = _rotlie.scheme(os.fspath(scheme), text, bool(force))
-    return json.loads(_rotlie.order(scheme, text, _vector_text(G0, "G0"), number_text(T, "--T"),
-                                    index_argument(min_level, "min_level"), index_argument(max_level, "max_level"), str(scalar), bool(force)))
+    return OrderResult(json.loads(_rotlie.order(scheme, text, _vector_text(G0, "G0"), number_text(T, "--T"),
+                                    index_argument(min_level, "min_level"), index_argument(max_level, "max_level"), str(scalar), bool(force))))
 
 
 from ._remainder import Remainder, remainder  # noqa: E402

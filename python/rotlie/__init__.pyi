@@ -1,6 +1,7 @@
 # Type stub of the rotlie package (the extension rotlie._rotlie and the Python layer).
 from fractions import Fraction
 from os import PathLike
+from collections.abc import Iterator, Mapping
 from typing import Any, Literal, Sequence, TypeAlias, overload
 
 import numpy as np
@@ -67,7 +68,59 @@ def integrate(scheme: Scheme | str, body: BodyLike, G0: ArrayLike, Q0: ArrayLike
               steps: int = ..., scalar: Scalar = "double", force: bool = False
               ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
 def order(scheme: Scheme | str, body: BodyLike, G0: Sequence[Number] | str = (1, 1, 1), T: Number = 1, min_level: int = 1,
-          max_level: int = 10, scalar: Scalar = "double", force: bool = False) -> dict[str, Any]: ...
+          max_level: int = 10, scalar: Scalar = "double", force: bool = False) -> OrderResult: ...
+
+class Result(Mapping[str, Any]):
+    fields: tuple[str, ...]
+    def __getattr__(self, name: str) -> Any: ...
+    def __getitem__(self, key: str) -> Any: ...
+    def __iter__(self) -> Iterator[str]: ...
+    def __len__(self) -> int: ...
+    def to_dict(self) -> dict[str, Any]: ...
+
+class MdTrajectory:
+    every: int
+    t_ps: npt.NDArray[np.float64]
+    Q: npt.NDArray[np.float64]
+    G: npt.NDArray[np.float64]
+    energy: npt.NDArray[np.float64]
+    potential: npt.NDArray[np.float64]
+
+class MdResult(Result):
+    scene: str
+    integrator: str
+    h_fs: float
+    f: int
+    runs: int
+    unstable: bool
+    round_off_floor: bool
+    @property
+    def trajectory(self) -> MdTrajectory | None: ...
+
+class OrderResult(Result):
+    scheme: str
+    scalar: str
+    declared_order: int
+    points: list[dict[str, float]]
+    slope: float | None
+    @property
+    def h(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def error(self) -> npt.NDArray[np.float64]: ...
+
+class BestResult(Result):
+    inertia: list[str]
+    N: dict[str, Any]
+    R: dict[str, Any]
+    P: dict[str, Any]
+    reference: dict[str, Any]
+    recommended: str
+
+class MapLine(Result):
+    s: str
+    t: str
+    best: str
+    remainder: float
 
 class Remainder:
     json: dict[str, Any]
@@ -79,10 +132,12 @@ class Remainder:
 
 def remainder(scheme_or_word: Scheme | str, order: int = 5, body: BodyLike | None = None, perm: str | None = None,
               coeffs: dict[str, Number] | None = None, split: str | None = None) -> Remainder: ...
-def best(body: BodyLike, analytic_only: bool = False) -> dict[str, Any]: ...
-def map_line(family: str, s: Number, t: Number, grid: int, exact: bool = False) -> dict[str, Any]: ...
+def best(body: BodyLike, analytic_only: bool = False) -> BestResult: ...
+def map_line(family: str, s: Number, t: Number, grid: int, exact: bool = False) -> MapLine: ...
 def bch(series: str, degree: int) -> list[tuple[str, Fraction]]: ...
-def md(scene: str, integrator: str, h: Number, T: Number | None = None, **options: Any) -> dict[str, Any]: ...
+def md(scene: str, integrator: str, h: Number, T: Number | None = None, *, runs: int | None = None, seed: int | None = None,
+       scalar: Scalar | None = None, dipole: Number | None = None, field: Number | None = None, molecules: int | None = None,
+       threads: int | None = None, state: str | PathLike[str] | None = None, every: int | None = None) -> MdResult: ...
 
 class SpinTrajectory:
     every: int

@@ -1,19 +1,24 @@
-"""best, map_line, bch and md: the command line's JSON as Python objects."""
+"""best, map_line, bch and md: the command line's runs with typed results (python/rotlie/_results.py)."""
 from __future__ import annotations
 
 import json
 from fractions import Fraction
 
+import os
+
 from ._arguments import index_argument
 from . import _rotlie
 from ._bodies import body_text, number_text
+from ._results import BestResult, MapLine, MdResult
+
+Number = str | Fraction | int | float  # a number as the command line reads it (see number_text)
 
 
-def best(body, analytic_only: bool = False) -> dict:
+def best(body, analytic_only: bool = False) -> BestResult:
     """The best integrator for ``body`` (LV sections 4–5), as ``rotlie best --json``: the best N, R and P
     by ||H_R5||, the reference, the gains at equal cost and, unless ``analytic_only``, the measured
     column (the LV section 4.1 protocol run for the candidates). A symmetric top raises ValueError."""
-    return json.loads(_rotlie.best(body_text(body), bool(analytic_only)))
+    return BestResult(json.loads(_rotlie.best(body_text(body), bool(analytic_only))))
 
 
 def bch(series: str, degree: int) -> list[tuple[str, Fraction]]:
@@ -30,7 +35,7 @@ def _grid_index(value, grid: int, what: str) -> int:
     return int(x)
 
 
-def map_line(family: str, s, t, grid: int, exact: bool = False) -> dict:
+def map_line(family: str, s, t, grid: int, exact: bool = False) -> MapLine:
     """One body line of ``rotlie map --family FAMILY --grid GRID`` (LV section 5): the body at triangle
     coordinates ``s``, ``t`` (multiples of 1/grid, e.g. ``Fraction(3, 20)``), by the path the map takes
     for the family (its row computed as the map does, so the line is the map file's), or by the exact
@@ -40,27 +45,39 @@ def map_line(family: str, s, t, grid: int, exact: bool = False) -> dict:
     grid = index_argument(grid, "grid")
     if grid < 2:
         raise ValueError(f"--grid must be at least 2, got {grid}")
-    return json.loads(_rotlie.map_line(str(family), _grid_index(s, grid, "s"), _grid_index(t, grid, "t"), grid,
-                                          bool(exact)))
+    return MapLine(json.loads(_rotlie.map_line(str(family), _grid_index(s, grid, "s"), _grid_index(t, grid, "t"), grid,
+                                                  bool(exact))))
 
 
-def md(scene: str, integrator: str, h, T=None, **options) -> dict:
-    """A scene of ``rotlie md`` (``free-water``, ``dipole-field``, ``liquid-water``) as ``rotlie md --json``.
+def md(scene: str, integrator: str, h: Number, T: Number | None = None, *, runs: int | None = None, seed: int | None = None,
+       scalar: str | None = None, dipole: Number | None = None, field: Number | None = None, molecules: int | None = None,
+       threads: int | None = None, state: str | os.PathLike | None = None, every: int | None = None) -> MdResult:
+    """A scene of ``rotlie md`` (``free-water``, ``dipole-field``, ``liquid-water``), as ``rotlie md --json``.
 
-    ``h`` is the step in fs, ``T`` the time per run in ps (the scene's default when None). Options are the
-    command line's without the dashes, each scene its own: ``runs``, ``seed``, ``scalar`` (double,
-    long-double, float128), ``dipole`` (D) and ``field`` (MV/m) for the dipole scene; ``molecules``,
-    ``threads`` and ``state`` (a file) for liquid water. An option of another scene raises ValueError, as
-    the command line refuses it; the run's warnings (a step beyond the stable range, round-off) are
-    UserWarnings and are flagged in the result."""
-    scenes = _rotlie.md_scenes()
-    known = sorted({name[2:] for opts in scenes.values() for name in opts})
-    unknown = set(options) - set(known)
-    if unknown:
-        raise TypeError(f"md() got unknown options {sorted(unknown)} (known: {known})")
-    given = {} if T is None else {"--T": number_text(T, "--T")}
-    for key, value in options.items():
+    ``h`` is the step in fs, ``T`` the time per run in ps; every keyword left None takes the scene's
+    default. ``runs``, ``seed``: the ensemble; ``scalar``: double, long-double or float128 (the ensemble
+    scenes); ``dipole`` (D) and ``field`` (MV/m): the dipole scene; ``molecules``, ``threads`` and
+    ``state`` (a file): liquid water; ``every``: the trajectory every K steps (``MdResult.trajectory``:
+    t_ps, Q, G, energy, potential as arrays). A keyword of another scene raises ValueError, as the
+    command line refuses it; the run's warnings (a step beyond the stable range, round-off) are
+    UserWarnings and are flagged in the result (``unstable``, ``round_off_floor``)."""
+    given = {"T": T, "runs": runs, "seed": seed, "scalar": scalar, "dipole": dipole, "field": field,
+             "molecules": molecules, "threads": threads, "state": state, "every": every}
+    options = {}
+    for key, value in given.items():
         if value is None:
             continue
-        given["--" + key] = value if key in ("scalar", "state") else number_text(value, "--" + key)
-    return json.loads(_rotlie.md(str(scene), str(integrator), number_text(h, "--h"), {k: str(v) for k, v in given.items()}))
+        if key in ("runs", "seed", "molecules", "threads", "every"):
+            options["--" + key] = str(index_argument(value, key))
+        elif key == "scalar":
+            options["--scalar"] = str(value)
+        elif key == "state":
+            options["--state"] = os.fspath(value)
+        else:
+            options["--" + key] = number_text(value, "--" + key)
+    return MdResult(json.loads(_rotlie.md(str(scene), str(integrator), number_text(h, "--h"), options)))
+
+
+def md_keywords() -> set[str]:
+    """The keywords md() takes beyond scene, integrator and h: every option of every scene."""
+    return {name[2:] for options in _rotlie.md_scenes().values() for name in options}

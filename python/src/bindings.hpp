@@ -17,13 +17,12 @@ struct scheme_object {
   std::string stage_name_of(std::size_t i) const { return table.stages.at(i).name; }
 };
 
-void bind_errors(pybind11::module_& m);
-void bind_bodies(pybind11::module_& m);
-void bind_schemes(pybind11::module_& m);
-void bind_flows(pybind11::module_& m);
-void bind_json_commands(pybind11::module_& m);
-void bind_md(pybind11::module_& m);
-void bind_remainder(pybind11::module_& m);
-void bind_spin(pybind11::module_& m);
+// Every part of the module, in binding order: python/src/NAME.cpp defines bind_NAME (scheme_objects.cpp
+// binds `schemes`). A new Python call is its file and its name on this line.
+#define ROTLIE_PYTHON_PARTS(X) X(errors) X(bodies) X(schemes) X(flows) X(json_commands) X(md) X(remainder) X(spin)
+
+#define ROTLIE_PYTHON_DECLARE_PART(name) void bind_##name(pybind11::module_& m);
+ROTLIE_PYTHON_PARTS(ROTLIE_PYTHON_DECLARE_PART)
+#undef ROTLIE_PYTHON_DECLARE_PART
 
 }  // namespace rotlie::python

@@ -214,7 +214,7 @@ std::string order(const scheme_object& scheme, const std::string& body, const st
   auto out = std::make_shared<std::string>();
   run_symbolic([table = scheme.table, inertia, total, g0, lo, hi, scalar, out] {
     const auto r = runs::order_run({table, inertia}, g0, total, static_cast<int>(lo), static_cast<int>(hi), scalar);
-    *out = reports::order_json(r).dump();
+    *out = runs::order_json(r).dump();
   });
   return *out;
 }

@@ -20,7 +20,7 @@ namespace {
 
 std::string best(const std::string& body, bool analytic_only) {
   auto out = std::make_shared<std::string>();
-  run_symbolic([=] { *out = reports::best_json(runs::best_for_body(runs::best_body(body), analytic_only)).dump(); });
+  run_symbolic([=] { *out = runs::best_json(runs::best_for_body(runs::best_body(body), analytic_only)).dump(); });
   return *out;
 }
 

@@ -3,12 +3,7 @@
 
 PYBIND11_MODULE(_rotlie, m) {
   m.doc() = "rotlie's library floor and numeric core (use the package rotlie, not this module)";
-  rotlie::python::bind_errors(m);
-  rotlie::python::bind_bodies(m);
-  rotlie::python::bind_schemes(m);
-  rotlie::python::bind_flows(m);
-  rotlie::python::bind_json_commands(m);
-  rotlie::python::bind_md(m);
-  rotlie::python::bind_remainder(m);
-  rotlie::python::bind_spin(m);
+#define ROTLIE_PYTHON_BIND_PART(name) rotlie::python::bind_##name(m);
+  ROTLIE_PYTHON_PARTS(ROTLIE_PYTHON_BIND_PART)
+#undef ROTLIE_PYTHON_BIND_PART
 }

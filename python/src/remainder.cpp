@@ -23,7 +23,7 @@ std::pair<std::string, std::string> remainder(const std::string& scheme, long or
   auto out = std::make_shared<std::pair<std::string, std::string>>();
   run_symbolic([=] {
     const auto result = runs::remainder_run({scheme, split, perm, std::to_string(order), body, coeffs});
-    *out = {reports::remainder_json(result).dump(), reports::remainder_latex(result)};
+    *out = {runs::remainder_json(result).dump(), runs::remainder_latex(result)};
   });
   return *out;
 }

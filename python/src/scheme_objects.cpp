@@ -20,6 +20,7 @@
 #include "rotlie/runs/output_file.hpp"
 #include "rotlie/runs/scheme_names.hpp"
 #include "rotlie/runs/text_file.hpp"
+#include "rotlie/runs/solve_for_body.hpp"
 #include "rotlie/runs/two_parameter_solve.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
@@ -30,8 +31,6 @@ namespace rotlie::python {
 namespace {
 
 namespace py = pybind11;
-
-constexpr long max_digits = 300;  // as `rotlie solve --digits`
 
 // Warnings collected off the GIL, issued as Python UserWarnings afterwards.
 struct warnings {
@@ -110,25 +109,11 @@ std::vector<scheme_object> solve(const std::string& body, const std::string& fam
     }
     if (!starts.empty() || !seed.empty())
       throw runs::bad_input("--starts and --seed apply to the families of two free parameters (Q, QRS), not " + family);
-    const auto members = runs::members_asked(f, scheme);
-    const auto perms = runs::permutations_named(perm);
-    const auto moments = runs::required_body(body);
-    runs::integer_in_range(std::to_string(digits), "--digits", 10, max_digits);
-    const auto result = solver::solve_dedicated(moments, members, perms, static_cast<int>(digits));
-    // as `rotlie solve`: a degenerate system is an error when it is all that was asked, else a warning
-    const auto degenerate = std::count_if(result.systems.begin(), result.systems.end(),
-                                          [](const solver::system_report& r) { return r.degenerate; });
-    for (const auto& r : result.systems)
-      if (r.degenerate && degenerate < static_cast<long>(result.systems.size()))
-        sink->lines.push_back(r.scheme + " " + r.permutation + " is undefined for this body: " + r.note);
-    for (const auto& r : result.systems)
-      if (r.uncertified > 0) sink->lines.push_back(r.scheme + " " + r.permutation + ": " + r.note);
-    if (degenerate == static_cast<long>(result.systems.size()) && !result.systems.empty()) {
-      const auto& r = result.systems.front();
-      throw runs::bad_input(r.scheme + " " + r.permutation +
-                            (result.systems.size() > 1 ? " (and every other system asked for)" : "") +
-                            " is undefined for this body: " + r.note);
-    }
+    runs::integer_in_range(std::to_string(digits), "--digits", 10, runs::max_solve_digits);  // before the narrowing
+    const auto solved = runs::solve_for_body({family, scheme, perm, body, static_cast<int>(digits)});
+    sink->lines.insert(sink->lines.end(), solved.warnings.begin(), solved.warnings.end());
+    const auto& result = solved.result;
+    const auto& moments = solved.body;
     for (const auto& s : result.solutions)
       out->push_back({solver::scheme_table_of(s, moments, static_cast<int>(digits)), s.analytic_remainder});
   });

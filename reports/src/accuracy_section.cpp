@@ -11,6 +11,8 @@
 #include "rotlie/reports/lv_paper_tables.hpp"
 #include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/report.hpp"
+#include "rotlie/reports/section_writer.hpp"
+#include "sections.hpp"
 #include "rotlie/runs/accuracy_curves.hpp"
 
 namespace rotlie::reports {
@@ -42,22 +44,13 @@ chart accuracy_chart(const std::string& title, const std::vector<scheme_curve>& 
   return c;
 }
 
-struct figure_writer {
-  const report_options& options;
-  report_section& section;
-  std::ostringstream& md;
-  void operator()(const std::string& file, const chart& c, const std::string& caption) {
-    const auto f = write_chart(options.out_dir, file, c);
-    section.files.insert(section.files.end(), f.written.begin(), f.written.end());
-    md << chart_markdown(f, file, caption);
-  }
-  void pair(const std::string& file, const std::string& title, const std::vector<scheme_curve>& curves,
-            const std::string& caption) {
-    (*this)(file, accuracy_chart(title, curves, axis::reduced_step), caption + " Against the reduced step h/C.");
-    (*this)(file + "_cpu", accuracy_chart(title + " (against CPU time)", curves, axis::cpu),
-            caption + " Against measured CPU time (accuracy against speed).");
-  }
-};
+// A figure against h/C and its twin against measured CPU time.
+void figure_pair(section_writer& w, const std::string& file, const std::string& title, const std::vector<scheme_curve>& curves,
+                 const std::string& caption) {
+  w.figure(file, accuracy_chart(title, curves, axis::reduced_step), caption + " Against the reduced step h/C.");
+  w.figure(file + "_cpu", accuracy_chart(title + " (against CPU time)", curves, axis::cpu),
+           caption + " Against measured CPU time (accuracy against speed).");
+}
 
 void curve_table(std::ostringstream& md, const std::vector<scheme_curve>& curves, const scheme_curve& anchor) {
   md << "| scheme | C/C0 | fitted order | error/(h/C)^p | × " << anchor.name << " (equal h/C) | ns per step | × "
@@ -84,7 +77,7 @@ report_section accuracy_section(const report_options& options) {
   report_section s;
   s.title = "Accuracy against cost (LV section 4)";
   std::ostringstream md;
-  figure_writer figure{options, s, md};
+  section_writer figure{options, s, md, "Accuracy"};
   const int max_level = options.quick ? 8 : 10;
   md << "## " << s.title << "\n\n"
      << "Protocol of LV section 4.1: G(0) = (1, 1, 1), identity attitude, T = 1, h = 2^-i for i = 1 … " << max_level
@@ -101,7 +94,7 @@ report_section accuracy_section(const report_options& options) {
   const std::size_t n_count = curves.sphere_solutions.size();
 
   md << "### Spherical top\n\n";
-  figure.pair("fig1_sphere", "Fig. 1: spherical top, the N integrators of Table 2, leapfrog and Yoshida", sphere_curves,
+  figure_pair(figure, "fig1_sphere", "Fig. 1: spherical top, the N integrators of Table 2, leapfrog and Yoshida", sphere_curves,
               "Fig. 1 (spherical top).");
   // Table 3: numeric and analytic remainders normalised by N5 (2), next to the paper's.
   double n5_analytic = 0;
@@ -133,7 +126,7 @@ report_section accuracy_section(const report_options& options) {
   }
   md << "\n";
   fig2.series = {ours, paper};
-  figure("fig2_sphere_remainders", fig2, "Fig. 2 (analytic against numeric remainder, spherical top).");
+  figure.figure("fig2_sphere_remainders", fig2, "Fig. 2 (analytic against numeric remainder, spherical top).");
   md << "All " << n_count << " N solutions, leapfrog and Yoshida, with the fitted order:\n\n";
   curve_table(md, sphere_curves, *n5_2);
 
@@ -143,14 +136,14 @@ report_section accuracy_section(const report_options& options) {
   const auto& fig5 = curves.fig5;
   const scheme_curve& n2 = curve_named(fig5, "N2 BAC (2)");
   md << "### Water molecule\n\n";
-  figure.pair("fig3_water", "Fig. 3: water, the N integrators of Table 4, leapfrog and Yoshida (best permutations)", fig3,
+  figure_pair(figure, "fig3_water", "Fig. 3: water, the N integrators of Table 4, leapfrog and Yoshida (best permutations)", fig3,
               "Fig. 3 (water).");
   std::vector<scheme_curve> fig4 = {n2};
   for (const auto& r : references)
     if (r.order == 4) fig4.push_back(r);
-  figure.pair("fig4_water_reference", "Fig. 4: water, N2 BAC (2) and the 4th-order reference schemes (best permutations)",
+  figure_pair(figure, "fig4_water_reference", "Fig. 4: water, N2 BAC (2) and the 4th-order reference schemes (best permutations)",
               fig4, "Fig. 4 (water).");
-  figure.pair("fig5_water_dedicated", "Fig. 5: water, N2 BAC (2), P1 BAC (5), R ABC (4) and RS4 S5 McLachlan CBA", fig5,
+  figure_pair(figure, "fig5_water_dedicated", "Fig. 5: water, N2 BAC (2), P1 BAC (5), R ABC (4) and RS4 S5 McLachlan CBA", fig5,
               "Fig. 5 (water).");
 
   md << "Every water curve, against N2 BAC (2) (reference schemes at the permutation with the smallest error):\n\n";

@@ -11,6 +11,7 @@
 #include "rotlie/reports/audit_table.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
+#include "sections.hpp"
 #include "rotlie/runs/lv_audit_study.hpp"
 #include "rotlie/runs/number_text.hpp"
 

@@ -10,6 +10,8 @@
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
+#include "rotlie/reports/section_writer.hpp"
+#include "sections.hpp"
 #include "rotlie/runs/number_text.hpp"
 #include "rotlie/runs/sixth_order_study.hpp"
 
@@ -27,21 +29,7 @@ namespace {
 constexpr int digits = runs::sixth_order_digits;
 constexpr int default_starts = runs::sixth_order_default_starts, full_starts = runs::sixth_order_full_starts;
 
-struct section_state {
-  const report_options& options;
-  report_section& section;
-  std::ostringstream& md;
-  void progress(const std::string& line) const {
-    if (options.progress) options.progress("Beyond the paper: " + line);
-  }
-  void figure(const std::string& file, const chart& c, const std::string& caption) {
-    const auto f = write_chart(options.out_dir, file, c);
-    section.files.insert(section.files.end(), f.written.begin(), f.written.end());
-    md << chart_markdown(f, file, caption);
-  }
-};
-
-void search_text(section_state& w, const runs::sixth_order_study_result& study) {
+void search_text(section_writer& w, const runs::sixth_order_study_result& study) {
   const auto& h = study.statistics;
   const double seconds = study.search_seconds;
   const auto& skipped = study.skipped;
@@ -77,7 +65,7 @@ void search_text(section_state& w, const runs::sixth_order_study_result& study) 
   }
 }
 
-void tables_text(section_state& w, const std::vector<runs::sixth_order_found>& found) {
+void tables_text(section_writer& w, const std::vector<runs::sixth_order_found>& found) {
   auto& md = w.md;
   md << "### The dedicated 6th-order schemes found (best ‖H_R7‖ first)\n\n"
      << "‖H_R7‖: the Euclidean norm of H_R7's coefficients on Theorem 1's monomials, body scaled to I3 = 1. "
@@ -98,7 +86,7 @@ void tables_text(section_state& w, const std::vector<runs::sixth_order_found>& f
 }
 
 // Isolated 6th-order solutions for the spherical top: polished roots with a regular Jacobian.
-void sphere_text(section_state& w, const runs::sixth_order_study_result& study) {
+void sphere_text(section_writer& w, const runs::sixth_order_study_result& study) {
   auto& md = w.md;
   md << "### The spherical top\n\n"
      << "Permutation ABC only (the permutations of the sphere are the same body). Each root below polishes to "
@@ -124,7 +112,7 @@ report_section beyond_section(const report_options& options) {
   report_section section;
   section.title = "Beyond the paper: dedicated 6th-order schemes";
   std::ostringstream md;
-  section_state w{options, section, md};
+  section_writer w{options, section, md, "Beyond the paper"};
   md << "## " << section.title << "\n\n"
      << "LV end with \"it is also possible to construct 6th-order integrators but the system of equations becomes more "
         "difficult to solve\". This section solves it numerically for water and compares the schemes with the general "

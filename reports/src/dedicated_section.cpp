@@ -6,6 +6,7 @@
 
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
+#include "sections.hpp"
 #include "rotlie/runs/dedicated_study.hpp"
 #include "rotlie/runs/number_text.hpp"
 #include "rotlie/runs/solve_io.hpp"

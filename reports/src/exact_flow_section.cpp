@@ -9,6 +9,7 @@
 
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/report.hpp"
+#include "sections.hpp"
 #include "rotlie/runs/exact_flow_study.hpp"
 #include "rotlie/runs/number_text.hpp"
 

@@ -4,6 +4,7 @@
 
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
+#include "sections.hpp"
 #include "rotlie/runs/lie_algebra_study.hpp"
 #include "rotlie/runs/lie_tables_io.hpp"
 

@@ -13,6 +13,7 @@
 
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
+#include "sections.hpp"
 #include "rotlie/reports/triangle_contour.hpp"
 #include "rotlie/runs/family_names.hpp"
 #include "rotlie/runs/map_check.hpp"
@@ -212,14 +213,8 @@ std::string ratio_chart(const report_options& options, const family_map& m, cons
 // Fig. 6: the set E of eq. (77) in the (I1, I2) plane, its symmetric tops and flat bodies, the
 // triangle ESA, and the six images of water (one per permutation).
 std::string bodies_chart(const report_options& options, std::vector<std::filesystem::path>& files) {
-  chart c;
-  c.title = "The set of rigid bodies (I1, I2, 1), eq. (77), and the six images of water";
-  c.x_label = "I1";
-  c.y_label = "I2";
-  c.log_x = c.log_y = false;
-  c.equal_axes = true;
-  c.x_range = std::pair(0.0, 3.0);
-  c.y_range = std::pair(0.0, 3.0);
+  chart c = moments_plane_chart("The set of rigid bodies (I1, I2, 1), eq. (77), and the six images of water", "I1", "I2", {0.0, 3.0},
+                                {0.0, 3.0});
   const auto line = [](const std::string& name, const std::string& colour, std::vector<double> x, std::vector<double> y) {
     chart_series s;
     s.name = name;

@@ -10,6 +10,7 @@
 #include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
+#include "sections.hpp"
 #include "rotlie/reports/triangle_contour.hpp"
 #include "rotlie/runs/maps_truth.hpp"
 #include "rotlie/runs/maps_truth_csv.hpp"

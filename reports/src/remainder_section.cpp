@@ -6,6 +6,7 @@
 
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
+#include "sections.hpp"
 #include "rotlie/runs/expression_io.hpp"
 #include "rotlie/runs/remainder_study.hpp"
 

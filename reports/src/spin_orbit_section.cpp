@@ -14,6 +14,7 @@
 #include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
+#include "sections.hpp"
 #include "rotlie/runs/spin_orbit_cost.hpp"
 #include "rotlie/runs/spin_orbit_drift.hpp"
 #include "rotlie/runs/spin_orbit_science.hpp"

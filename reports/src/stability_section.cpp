@@ -4,6 +4,7 @@
 
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/report.hpp"
+#include "sections.hpp"
 #include "rotlie/runs/number_text.hpp"
 #include "rotlie/runs/stability_study.hpp"
 

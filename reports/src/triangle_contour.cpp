@@ -5,17 +5,20 @@
 
 namespace rotlie::reports {
 
-chart triangle_chart(const std::string& title) {
+chart moments_plane_chart(const std::string& title, const std::string& x_label, const std::string& y_label,
+                          std::pair<double, double> x_range, std::pair<double, double> y_range) {
   chart c;
   c.title = title;
-  c.x_label = "I1 / I3";
-  c.y_label = "I2 / I3";
+  c.x_label = x_label;
+  c.y_label = y_label;
   c.log_x = c.log_y = false;
   c.equal_axes = true;
-  c.x_range = std::pair(0.0, 1.0);
-  c.y_range = std::pair(0.48, 1.02);
+  c.x_range = x_range;
+  c.y_range = y_range;
   return c;
 }
+
+chart triangle_chart(const std::string& title) { return moments_plane_chart(title, "I1 / I3", "I2 / I3", {0.0, 1.0}, {0.48, 1.02}); }
 
 chart_series zero_contour(const std::map<std::pair<int, int>, double>& level, int K, const std::string& name) {
   const auto body_at = [](double s, double t) {  // issue 14's grid: I2 = 1/2 + s/2, I1 = (1 − I2) + t (2 I2 − 1)

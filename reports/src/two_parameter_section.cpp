@@ -12,6 +12,7 @@
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/report.hpp"
+#include "sections.hpp"
 #include "rotlie/runs/two_parameter_study.hpp"
 
 namespace rotlie::reports {

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "rotlie/reports/chart.hpp"
+#include "rotlie/reports/section_writer.hpp"
 #include "rotlie/runs/number_text.hpp"
 #include "rotlie/runs/vzs_study.hpp"
 
@@ -43,20 +44,6 @@ std::string duration(double ps, double error_ps = std::nan("")) {
       return sig(ps / scale) + (std::isfinite(error_ps) ? " ± " + sig(error_ps / scale, 1) : "") + " " + name;
   return "";
 }
-
-struct section_writer {
-  const report_options& options;
-  report_section& section;
-  std::ostringstream& md;
-  void progress(const std::string& line) const {
-    if (options.progress) options.progress("van Zon & Schofield: " + line);
-  }
-  void figure(const std::string& file, const chart& c, const std::string& caption) {
-    const auto f = write_chart(options.out_dir, file, c);
-    section.files.insert(section.files.end(), f.written.begin(), f.written.end());
-    md << chart_markdown(f, file, caption);
-  }
-};
 
 // What the tables measured, for the text that explains them (no number of ours is written by hand).
 struct findings {
@@ -368,7 +355,7 @@ report_section vzs_section(const report_options& options) {
   report_section s;
   s.title = "van Zon & Schofield: rigid bodies under torques";
   std::ostringstream md;
-  section_writer w{options, s, md};
+  section_writer w{options, s, md, "van Zon & Schofield"};
   const runs::vzs_budget b = runs::vzs_budget_for(options.quick);
   md << "## " << s.title << "\n\n"
      << "vZS sections V.A–B regenerated. Units: LAMMPS `real` (Å, fs, g/mol, kcal/mol, e) with LAMMPS's constants. "

@@ -2,7 +2,9 @@
 
 #include <boost/multiprecision/float128.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "rotlie/lie/rigid_body.hpp"
@@ -122,6 +124,17 @@ exact_result exact_run(const lie::moments_of_inertia& body, const models::vec3<d
   check_time_limit(exact, T);
   const auto e = exact.evaluate(T);
   return {T, e.state, static_cast<double>(e.error_estimate)};
+}
+
+double cpu_seconds_per_step(const schemes::scheme_table& table, const models::vec3<double>& I, const step_timing& how) {
+  const auto method = models::free_body_method(table, I);
+  models::body_state<double> s;
+  s.G = {1, 1, 1};
+  constexpr double h = 1.0 / 64;
+  double best = std::numeric_limits<double>::infinity();
+  for (int repeat = 0; repeat < how.repeats; ++repeat)
+    best = std::min(best, models::cpu_seconds_per_unit_time(method, s, h, how.min_seconds) * h);
+  return best;
 }
 
 }  // namespace rotlie::runs

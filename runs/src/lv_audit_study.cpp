@@ -18,6 +18,7 @@
 #include "rotlie/models/cpu_time.hpp"
 #include "rotlie/models/integrate.hpp"
 #include "rotlie/models/moments_from_text.hpp"
+#include "rotlie/runs/free_body_runs.hpp"
 #include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/runs/scheme_names.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
@@ -26,28 +27,6 @@
 
 namespace rotlie::runs {
 namespace {
-
-// This thread's CPU time per step of a table on the double stepper from G(0) = (1, 1, 1) at h = 1/64:
-// the fastest of three runs of at least 0.05 s each.
-double cpu_per_step(const schemes::scheme_table& t, const models::vec3<double>& I) {
-  const auto method = models::free_body_method(t, I);
-  double best = std::numeric_limits<double>::infinity();
-  for (int repeat = 0; repeat < 3; ++repeat) {
-    models::body_state<double> s;
-    s.G = {1, 1, 1};
-    long steps = 0;
-    const double start = models::thread_cpu_seconds();
-    double cpu = 0;
-    do {
-      steps += models::integrate(method, s, 1.0 / 64, 1024);
-      cpu = models::thread_cpu_seconds() - start;
-    } while (cpu < 0.05);
-    volatile double sink = s.G[0];
-    (void)sink;
-    best = std::min(best, cpu / static_cast<double>(steps));
-  }
-  return best;
-}
 
 // LV 4.1: for small angles the R^9 attitude error is √3 × the quadratic mean of the angular errors
 // of the three principal axes; on small rotations (Rodrigues' formula) about a few axes.
@@ -154,7 +133,7 @@ lv_audit_study_result lv_audit_study(const lv_audit_options& options) {
   n2.name = "N2 BAC (2)", r4.name = "R ABC (4)", p1.name = "P1 BAC (5)";
   const auto I = models::moments_from_text<double>(lie::inertia_text(water));
   for (const auto& t : {n2, r4, p1, *schemes::reference_scheme("RS4-S5-McLachlan:CBA")})
-    out.seconds_per_rotation.emplace_back(t.name, cpu_per_step(t, I) / schemes::cost_in_rotations(t));
+    out.seconds_per_rotation.emplace_back(t.name, cpu_seconds_per_step(t, I, {3, 0.05}) / schemes::cost_in_rotations(t));
 
   // LV 4.3: Fassò's and Hairer-Vilmart's (0.345, 0.653, 1), and water.
   try {

@@ -15,6 +15,7 @@
 #include "rotlie/models/cpu_time.hpp"
 #include "rotlie/models/integrate.hpp"
 #include "rotlie/models/moments_from_text.hpp"
+#include "rotlie/runs/free_body_runs.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 #include "rotlie/solver/body_grid.hpp"
 #include "rotlie/solver/body_map.hpp"
@@ -52,28 +53,9 @@ std::vector<double> ranks(const std::vector<double>& x) {
 
 }  // namespace
 
+// The fastest of several runs: errors at equal CPU time go as the 4th power of this number.
 double cpu_seconds_per_step(const schemes::scheme_table& table, const lie::moments_of_inertia& body) {
-  const auto method = models::free_body_method(table, models::moments_from_text<double>(lie::inertia_text(body)));
-  models::body_state<double> s;
-  s.G = {1, 1, 1};
-  constexpr long chunk = 4096;
-  const double h = 1.0 / 64;
-  // The fastest of several runs of this thread's CPU time: other processes only ever slow a run down
-  // (cache, frequency), and errors at equal CPU time go as the 4th power of this number.
-  double best = std::numeric_limits<double>::infinity();
-  for (int repeat = 0; repeat < 5; ++repeat) {
-    const double start = models::thread_cpu_seconds();
-    long steps = 0;
-    double elapsed = 0;
-    do {
-      steps += models::integrate(method, s, h, chunk);
-      elapsed = models::thread_cpu_seconds() - start;
-    } while (elapsed < 0.01);
-    best = std::min(best, elapsed / static_cast<double>(steps));
-  }
-  volatile double sink = s.G[0];
-  (void)sink;
-  return best;
+  return runs::cpu_seconds_per_step(table, models::moments_from_text<double>(lie::inertia_text(body)), {5, 0.01});
 }
 
 std::vector<models::remainder_term> remainder_terms(const solver::dedicated_solution& s,

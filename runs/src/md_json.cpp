@@ -33,6 +33,15 @@ void add_flags(nlohmann::json& j, const md_verdict& v) {
   j["round_off_floor"] = v.round_off_floor;
 }
 
+// {"every", "t_ps", "Q" (3×3 each), "G", "energy", "potential"} when a trajectory was asked for
+void add_trajectory(nlohmann::json& j, const models::md_trajectory& tr) {
+  if (tr.every <= 0) return;
+  nlohmann::json Qs = nlohmann::json::array(), Gs = nlohmann::json::array();
+  for (const auto& Q : tr.Q) Qs.push_back({{Q[0], Q[1], Q[2]}, {Q[3], Q[4], Q[5]}, {Q[6], Q[7], Q[8]}});
+  for (const auto& G : tr.G) Gs.push_back({G[0], G[1], G[2]});
+  j["trajectory"] = {{"every", tr.every}, {"t_ps", tr.t_ps}, {"Q", Qs}, {"G", Gs}, {"energy", tr.energy}, {"potential", tr.potential}};
+}
+
 std::string text(double x) {
   std::ostringstream s;
   s << x;
@@ -119,6 +128,7 @@ nlohmann::json free_water_json(const md_run_header& h, const models::free_water_
   j["cpu_s_per_ps"] = r.cpu_s_per_ps;
   j["samples"] = samples;
   add_flags(j, verdict_of(r));
+  add_trajectory(j, r.trajectory);
   return j;
 }
 
@@ -133,6 +143,7 @@ nlohmann::json dipole_field_json(const md_run_header& h, const models::dipole_fi
   j["undefined_runs"] = r.undefined_runs;
   j["cpu_s_per_ps"] = r.cpu_s_per_ps;
   add_flags(j, verdict_of(r));
+  add_trajectory(j, r.trajectory);
   return j;
 }
 
@@ -150,6 +161,7 @@ nlohmann::json liquid_water_json(const models::liquid_water_run_result& r) {
                         {"cpu_ms_per_step", r.cpu_ms_per_step},
                         {"momentum_drift", r.momentum_drift}};
   add_flags(j, verdict_of(r));
+  add_trajectory(j, r.trajectory);
   return j;
 }
 

@@ -13,6 +13,7 @@
 #include "rotlie/models/cpu_time.hpp"
 #include "rotlie/models/error_protocol.hpp"
 #include "rotlie/models/moments_from_text.hpp"
+#include "rotlie/runs/free_body_runs.hpp"
 #include "rotlie/runs/scheme_names.hpp"
 #include "rotlie/schemes/quad.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
@@ -42,25 +43,8 @@ constexpr int min_level = 2, max_level = 8;  // the protocol's h = 2^-i (long do
 // may be shared), the fastest of several runs of at least 10 ms at h = 1/64; the curve's CPU column
 // follows (t_step / h per unit of simulated time).
 void time_steps(scheme_curve& c, const schemes::scheme_table& t, const lie::moments_of_inertia& body) {
-  const auto method = models::free_body_method(t, models::moments_from_text<double>(lie::inertia_text(body)));
-  const double h = 1.0 / 64;
-  double best = std::numeric_limits<double>::infinity();
-  for (int repeat = 0; repeat < 9; ++repeat) {
-    models::body_state<double> s;
-    s.G = {1, 1, 1};
-    long steps = 0;
-    const double t0 = models::thread_cpu_seconds();
-    double elapsed = 0;
-    do {
-      steps += models::integrate(method, s, h, 256);
-      elapsed = models::thread_cpu_seconds() - t0;
-    } while (elapsed < 0.01);
-    volatile double sink = s.G[0];
-    (void)sink;
-    best = std::min(best, elapsed / static_cast<double>(steps));
-  }
-  c.seconds_per_step = best;
-  for (auto& p : c.points) p.cpu_seconds = best / p.h;
+  c.seconds_per_step = cpu_seconds_per_step(t, models::moments_from_text<double>(lie::inertia_text(body)), {9, 0.01});
+  for (auto& p : c.points) p.cpu_seconds = c.seconds_per_step / p.h;
 }
 
 // The fitted slope of the mean attitude error in float128 (G0 = (1, 1, 1), T = 1, h = 1/16 … 1/256).

@@ -1,7 +1,10 @@
-"""best, bch and map_line: the command line's JSON as Python objects, the same numbers."""
+"""best, bch, map_line, order and md: typed results holding the command line's JSON, the same numbers."""
+import inspect
+import pydoc
 import json
 from fractions import Fraction
 
+import numpy as np
 import pytest
 
 import rotlie
@@ -29,7 +32,8 @@ def test_best_as_the_command_line():
     e = cli("best", "--inertia", "water", "--analytic-only", "--json")
     timing = {"cpu_seconds", "seconds"}
     assert {k: v for k, v in r.items() if k not in timing} == {k: v for k, v in e.items() if k not in timing}
-    assert r["N"]["best"] == "N2:BAC:2"  # LV section 4.3: the best N integrator for water
+    assert isinstance(r, rotlie.BestResult) and r.to_dict() == dict(r)
+    assert r.N["best"] == r["N"]["best"] == "N2:BAC:2"  # LV section 4.3: the best N integrator for water
     with pytest.raises(ValueError):
         rotlie.best("1,1,1")  # a symmetric top is outside the maps
 
@@ -39,7 +43,8 @@ def test_map_line_as_the_command_line(tmp_path):
     lines = [json.loads(line) for line in (tmp_path / "map-N.jsonl").read_text().splitlines()[1:]]
     for s, t in [(Fraction(1, 4), Fraction(1, 2)), (Fraction(3, 4), Fraction(0))]:
         expected = next(line for line in lines if line["s"] == str(s) and line["t"] == str(t))
-        assert rotlie.map_line("N", s, t, 4) == expected
+        line = rotlie.map_line("N", s, t, 4)
+        assert line == expected and line.to_dict() == expected and line.best == expected["best"]
     with pytest.raises(ValueError):
         rotlie.map_line("N", Fraction(1, 3), 0, 4)  # not a grid point
     with pytest.raises(ValueError):
@@ -104,3 +109,39 @@ def test_remainder_symbolic_in_sympy():
     assert set(h3) == set(at_water)
     assert all(sympy.simplify(c.subs(values) - sympy.Rational(at_water[m])) == 0 for m, c in h3.items())
     assert r.hamiltonian(3) != 0
+
+
+def test_md_trajectory_as_the_command_line():
+    """md(..., every=K): the first run's samples as arrays, equal to `rotlie md --every K --json`'s."""
+    for scene, integrator, h, extra in [("free-water", "MRDL", 8, ["--T", "0.2"]), ("dipole-field", "SIER4", 16.8, ["--T", "0.5"])]:
+        r = rotlie.md(scene, integrator, h, T=extra[1], runs=2, every=5)
+        e = cli("md", "--scene", scene, "--integrator", integrator, "--h", str(h), "--runs", "2", "--every", "5", *extra, "--json")
+        assert isinstance(r, rotlie.MdResult) and r.scene == scene and r.unstable is False
+        tr, te = r.trajectory, e["trajectory"]
+        steps = e["steps"]
+        assert tr.every == 5 and len(tr.t_ps) == steps // 5 + 1
+        assert np.array_equal(tr.t_ps, te["t_ps"]) and np.array_equal(tr.Q, np.array(te["Q"]))
+        assert np.array_equal(tr.G, np.array(te["G"])) and np.array_equal(tr.energy, te["energy"])
+        assert tr.Q.shape == (len(tr.t_ps), 3, 3) and tr.G.shape == (len(tr.t_ps), 3)
+        # each sampled attitude is a rotation, and the energy is conserved to the integrator's accuracy
+        for Q in tr.Q:
+            assert np.allclose(Q.T @ Q, np.eye(3), atol=1e-12)
+        assert np.ptp(tr.energy) < 1e-3 * max(1.0, abs(tr.energy[0]))
+    assert rotlie.md("free-water", "MRDL", 8, T=0.1, runs=1).trajectory is None
+
+
+def test_md_keywords_are_typed_and_are_the_scenes_options():
+    sig = inspect.signature(rotlie.md)
+    keywords = {n for n, p in sig.parameters.items() if p.kind is inspect.Parameter.KEYWORD_ONLY} | {"T"}
+    assert keywords == rotlie._commands.md_keywords()  # a new scene option needs its keyword here
+    assert all(p.annotation is not inspect.Parameter.empty for n, p in sig.parameters.items())
+    assert str(sig.parameters["every"].annotation) == "int | None" and sig.parameters["every"].default is None
+    assert "runs: 'int | None' = None" in pydoc.render_doc(rotlie.md)  # what help(rotlie.md) shows
+    with pytest.raises(TypeError):
+        rotlie.md("free-water", "SIER2", 8, runs=1.5)
+
+
+def test_order_is_typed():
+    r = rotlie.order("ABCBA2", WATER, max_level=4)
+    assert isinstance(r, rotlie.OrderResult) and r.declared_order == 2
+    assert np.array_equal(r.h, [p["h"] for p in r.points]) and r.error.shape == (4,)

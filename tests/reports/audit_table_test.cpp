@@ -178,7 +178,7 @@ BOOST_AUTO_TEST_CASE(the_section_alone_writes_its_table_cheaply) {
   o.out_dir = dir;
   o.sections = {"audit"};
   const std::clock_t start = std::clock();
-  const auto s = audit_section(o);
+  const auto s = write_section("audit", o);
   const double cpu = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
   BOOST_TEST_MESSAGE("audit section alone: " << cpu << " s CPU");  // its budget is measured by the report, not asserted here
   const auto csv = read_csv(dir / "audit" / "audit.csv");
@@ -213,7 +213,7 @@ BOOST_AUTO_TEST_CASE(the_p_choice_row_solves_and_measures_the_listed_systems) {
   o.out_dir = dir;
   o.sections = {"dedicated", "audit"};
   const std::clock_t start = std::clock();
-  audit_section(o);
+  write_section("audit", o);
   const double cpu = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
   BOOST_TEST_MESSAGE("audit section with the P systems: " << cpu << " s CPU");
   const auto csv = read_csv(dir / "audit" / "audit.csv");

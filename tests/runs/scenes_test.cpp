@@ -4,7 +4,11 @@
 
 #include <set>
 
+#include <boost/multiprecision/float128.hpp>
+
+#include "rotlie/models/exact_free_body.hpp"
 #include "rotlie/models/experiments/dipole_field_experiment.hpp"
+#include "rotlie/models/scenes/free_water.hpp"
 #include "rotlie/runs/scenes.hpp"
 #include "rotlie/runs/user_input.hpp"
 
@@ -72,6 +76,41 @@ BOOST_AUTO_TEST_CASE(a_run_through_the_registry_equals_the_models_own_call) {
   BOOST_TEST(result.json.at("scene").get<std::string>() == "dipole-field");
   BOOST_TEST(result.warnings.empty());
   BOOST_TEST(result.text.find("dipole in a field, SIER2") == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(a_trajectory_every_k_steps_follows_the_exact_free_motion) {
+  // free water with SIER2's exact rotor: every sample of the first run lies on the exact free flow from
+  // the first sample (a second method: exact_free_body in float128), and the energy is constant
+  using quad = boost::multiprecision::float128;
+  runs::scene_request r{"free-water", "SIER2", "8", {{"--runs", "2"}, {"--T", "1"}, {"--every", "25"}}, {}};
+  const auto json = runs::run_scene(r).json;
+  const auto& tr = json.at("trajectory");
+  BOOST_TEST(tr.at("every").get<long>() == 25);
+  const auto& t = tr.at("t_ps");
+  BOOST_TEST(t.size() == 125u / 25 + 1);  // 125 steps of 8 fs, the start included
+  BOOST_TEST(t[0].get<double>() == 0.0);
+  BOOST_TEST(t[1].get<double>() == 0.2);  // 25 × 8 fs
+  const models::vec3<quad> I{quad(models::water::moments<double>()[0]), quad(models::water::moments<double>()[1]),
+                             quad(models::water::moments<double>()[2])};
+  models::body_state<quad> start;
+  for (std::size_t i = 0; i < 9; ++i) start.Q.a[i] = quad(tr.at("Q")[0][i / 3][i % 3].get<double>());
+  for (std::size_t i = 0; i < 3; ++i) start.G[i] = quad(tr.at("G")[0][i].get<double>());
+  const models::exact_free_body<quad> exact(I, start);
+  double worst = 0, energy_change = 0;
+  for (std::size_t k = 1; k < t.size(); ++k) {
+    const auto e = exact.evaluate(quad(1000 * t[k].get<double>()));
+    for (std::size_t i = 0; i < 9; ++i)
+      worst = std::max(worst, std::abs(tr.at("Q")[k][i / 3][i % 3].get<double>() - static_cast<double>(e.state.Q.a[i])));
+    energy_change = std::max(energy_change, std::abs(tr.at("energy")[k].get<double>() - tr.at("energy")[0].get<double>()));
+  }
+  BOOST_TEST(worst < 1e-12, "largest attitude difference " << worst);
+  BOOST_TEST(energy_change < 1e-12 * std::abs(tr.at("energy")[0].get<double>()));
+  BOOST_TEST(tr.at("potential")[3].get<double>() == 0.0);  // no forces in free water
+  // without --every there is no trajectory; one that would keep too many samples is refused
+  BOOST_TEST(!runs::run_scene({"free-water", "SIER2", "8", {{"--runs", "1"}, {"--T", "1"}}, {}}).json.contains("trajectory"));
+  BOOST_CHECK_THROW(runs::run_scene({"free-water", "SIER2", "1e-3", {{"--runs", "1"}, {"--T", "20"}, {"--every", "1"}}, {}}),
+                    runs::bad_input);
+  BOOST_CHECK_THROW(runs::run_scene({"free-water", "SIER2", "8", {{"--every", "-1"}}, {}}), runs::bad_input);
 }
 
 BOOST_AUTO_TEST_CASE(a_tau_that_is_not_defined_is_null_with_a_warning) {

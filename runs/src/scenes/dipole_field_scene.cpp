@@ -26,12 +26,9 @@ scene_result run_in(const dipole_run& e) {
   scene_result out;
   out.json = dipole_field_json(e.header(), result, std::stod(e.dipole), std::stod(e.field));
   std::ostringstream text;
-  text << "dipole in a field, " << e.integrator.name << " (f = " << result.f << "), h = " << e.run.h_fs << " fs (h/f = "
-       << e.run.h_fs / result.f << " fs), " << e.run.runs << " runs of " << result.steps << " steps (" << e.run.T_ps
-       << " ps), seed " << e.run.seed << ", " << e.scalar << "\n  dH/dV = " << mean_error_text(result.dH.mean, result.dH.error)
-       << " %\n  dLz/<Lz> = " << mean_error_text(result.dLz.mean, result.dLz.error) << "\n  CPU " << result.cpu_s_per_ps
-       << " s per simulated ps\n";
-  out.text = text.str();
+  text << "  dH/dV = " << mean_error_text(result.dH.mean, result.dH.error) << " %\n  dLz/<Lz> = "
+       << mean_error_text(result.dLz.mean, result.dLz.error) << "\n  CPU " << result.cpu_s_per_ps << " s per simulated ps\n";
+  out.text = run_summary(e, "dipole in a field", result.f, result.steps) + text.str();
   out.warnings = verdict_of(result).warnings;
   return out;
 }

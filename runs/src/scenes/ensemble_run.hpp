@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "rotlie/models/experiments/md_experiment.hpp"
@@ -51,8 +52,17 @@ inline void read_ensemble_run(const scene_request& r, const std::string& body_te
   if (steps * static_cast<double>(e.run.runs) > max_total_steps)
     throw bad_input("--runs × --T/--h = " + shortest(steps * static_cast<double>(e.run.runs)) + " steps is over the limit of " +
                     shortest(max_total_steps));
+  e.run.every = trajectory_every(r, steps);
   if (r.progress)
     e.run.progress = [&p = r.progress](long done, long runs) { p("run " + std::to_string(done) + " of " + std::to_string(runs)); };
+}
+
+/// The summary's first line: "WHAT, INTEGRATOR (f = F), h = H fs (h/f = H/F fs), R runs of S steps (T ps), seed N, SCALAR".
+inline std::string run_summary(const ensemble_run& e, const std::string& what, int f, long steps) {
+  std::ostringstream text;
+  text << what << ", " << e.integrator.name << " (f = " << f << "), h = " << e.run.h_fs << " fs (h/f = " << e.run.h_fs / f << " fs), "
+       << e.run.runs << " runs of " << steps << " steps (" << e.run.T_ps << " ps), seed " << e.run.seed << ", " << e.scalar << "\n";
+  return text.str();
 }
 
 /// f(T{}) in the scalar T that e.scalar names; a value the models refuse (a table that does not fit the
@@ -71,7 +81,8 @@ inline std::vector<scene_option> ensemble_options(double default_T_ps, long defa
   return {{"--T", shortest(default_T_ps), "Simulated time per run in ps, rounded to whole steps"},
           {"--runs", std::to_string(default_runs), "Ensemble size"},
           {"--seed", "1", "Seed of the canonical initial conditions (the same seed, the same numbers)"},
-          {"--scalar", "double", "double, long-double or float128"}};
+          {"--scalar", "double", "double, long-double or float128"},
+          every_option()};
 }
 
 }  // namespace rotlie::runs::scene_support

@@ -18,12 +18,10 @@ scene_result run_in(const ensemble_run& e) {
   scene_result out;
   out.json = free_water_json(e.header(), result);
   std::ostringstream text;
-  text << "free water, " << e.integrator.name << " (f = " << result.f << "), h = " << e.run.h_fs << " fs, " << e.run.runs
-       << " runs of " << result.steps << " steps (" << e.run.T_ps << " ps), seed " << e.run.seed << ", " << e.scalar
-       << "\n  tau = " << mean_error_text(result.tau_ps, result.tau_error_ps) << " ps (delta = t/(10 tau) fitted over "
+  text << "  tau = " << mean_error_text(result.tau_ps, result.tau_error_ps) << " ps (delta = t/(10 tau) fitted over "
        << result.fitted_samples << " of " << result.t_ps.size() << " samples)\n  delta(T) = " << result.delta.back()
        << " (exact reference: " << result.reference_delta.back() << ")\n  CPU " << result.cpu_s_per_ps << " s per simulated ps\n";
-  out.text = text.str();
+  out.text = run_summary(e, "free water", result.f, result.steps) + text.str();
   out.warnings = verdict_of(result).warnings;
   return out;
 }

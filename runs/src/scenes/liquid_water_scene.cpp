@@ -41,6 +41,7 @@ scene_result run(const scene_request& request) {
   o.state_file = option(request, "--state");
   if (o.T_ps * 1000 / o.h_fs < 10) throw bad_input("--T must span at least 10 steps of --h (the fluctuations are rms over a run)");
   if (o.T_ps * 1000 / o.h_fs * o.runs > 1e9) throw bad_input("--T / --h × --runs exceeds 10⁹ steps");
+  o.every = trajectory_every(request, std::round(o.T_ps * 1000 / o.h_fs) * o.runs);
   as_bad_input([&] { models::check_liquid_water_options(o); });  // a box below twice the cutoff
   // --state: checked and its folder locked before the equilibration, so that a state that cannot be
   // written, or a second run on the same folder, costs nothing
@@ -95,7 +96,8 @@ scene liquid_water_scene() {
            {"--runs", "9", "Ensemble size"},
            {"--molecules", "512", "Molecules in the box (at least 365)"},
            {"--threads", "2", "Threads of the force loop (results do not depend on it)"},
-           {"--state", "", "A state file, read if it exists, else the equilibrated start is written there"}},
+           {"--state", "", "A state file, read if it exists, else the equilibrated start is written there"},
+           every_option()},
           run};
 }
 

@@ -2,9 +2,12 @@
 // What the scene entries share: reading an option of a request, the shortest decimal of a number,
 // and models' refusals as bad input. The integrator is resolved by runs/md_methods.hpp.
 #include <charconv>
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 
+#include "rotlie/models/md_trajectory.hpp"
 #include "rotlie/runs/body_names.hpp"
 #include "rotlie/runs/md_methods.hpp"
 #include "rotlie/runs/scenes.hpp"
@@ -21,6 +24,20 @@ inline std::string shortest(double x) {
   char buf[32];
   const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
   return std::string(buf, ec == std::errc() ? end : buf);
+}
+
+/// --every K, the trajectory every K steps (every scene takes it).
+inline scene_option every_option() {
+  return {"--every", "0", "With --json: the trajectory every K steps from the start (t_ps, Q, G, energy, potential); 0 for none"};
+}
+
+/// --every of a run of `steps` steps: 0 or a whole number of steps, at most max_trajectory_samples samples.
+inline long trajectory_every(const scene_request& r, double steps) {
+  const long every = integer_in_range(option(r, "--every"), "--every", 0, std::numeric_limits<long>::max());
+  if (every > 0 && steps / static_cast<double>(every) + 1 > models::max_trajectory_samples)
+    throw bad_input("--every " + std::to_string(every) + " keeps " + shortest(std::floor(steps / static_cast<double>(every)) + 1) +
+                    " samples, over the limit of " + shortest(models::max_trajectory_samples) + ": take a larger --every");
+  return every;
 }
 
 /// Runs f; a std::invalid_argument from the models (a value they refuse) becomes bad_input.

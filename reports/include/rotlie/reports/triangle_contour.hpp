@@ -9,6 +9,10 @@
 
 namespace rotlie::reports {
 
+/// An empty chart of bodies in a plane of moments: linear, equal axes, the given ranges.
+chart moments_plane_chart(const std::string& title, const std::string& x_label, const std::string& y_label,
+                          std::pair<double, double> x_range, std::pair<double, double> y_range);
+
 /// An empty chart over the triangle: I1/I3 across, I2/I3 up, equal axes.
 chart triangle_chart(const std::string& title);
 

@@ -11,9 +11,3 @@ namespace rotlie::runs {
 nlohmann::ordered_json best_json(const runs::best_result& r);
 
 }  // namespace rotlie::runs
-
-// The Python module (python/src) still spells these rotlie::reports::…, where they lived before; the
-// names stay reachable there until its call sites say runs::.
-namespace rotlie::reports {
-using runs::best_json;
-}  // namespace rotlie::reports

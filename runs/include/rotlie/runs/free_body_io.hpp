@@ -16,11 +16,3 @@ nlohmann::json order_json(const runs::order_result& r);
 nlohmann::json exact_json(const runs::exact_result& r);
 
 }  // namespace rotlie::runs
-
-// The Python module (python/src) still spells these rotlie::reports::…, where they lived before; the
-// names stay reachable there until its call sites say runs::.
-namespace rotlie::reports {
-using runs::integrate_json;
-using runs::order_json;
-using runs::exact_json;
-}  // namespace rotlie::reports

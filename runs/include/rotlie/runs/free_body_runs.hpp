@@ -23,6 +23,17 @@ struct free_body_input {
 free_body_input free_body_of(const std::string& scheme, const std::string& inertia, foreign_table policy,
                              const warning_sink& warn = {});
 
+/// How a step is timed: the fastest of `repeats` runs from G(0) = (1, 1, 1) at h = 1/64, each of at least
+/// `min_seconds` of this thread's CPU (models::cpu_seconds_per_unit_time; other processes only ever slow a
+/// run down: cache, frequency).
+struct step_timing {
+  int repeats = 5;
+  double min_seconds = 0.01;
+};
+
+/// This thread's CPU seconds per step of `table` on the double stepper for the body of moments I.
+double cpu_seconds_per_step(const schemes::scheme_table& table, const models::vec3<double>& I, const step_timing& how = {});
+
 /// T/h as a whole number of steps (at most 10^8). Throws bad_input.
 long step_count(double total, double h);
 

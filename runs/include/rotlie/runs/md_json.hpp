@@ -35,6 +35,10 @@ struct md_run_header {
   std::uint64_t seed = 0;
 };
 
+/// Each scene's JSON also has "trajectory" when one was asked for (--every K): {"every", "t_ps", "Q" (body 0's
+/// attitude, 3×3), "G" (its body-frame angular momentum), "energy", "potential"}, every K steps from the start
+/// (the ensembles' first run; liquid water's runs one after another, molecule 0).
+
 /// {header…, "tau_ps", "tau_error_ps", "fitted_samples", "cpu_s_per_ps", "samples": [{"t_ps", "delta", "reference_delta"}],
 /// "unstable", "round_off_floor"}; an error that is unknown (one run) is null
 nlohmann::json free_water_json(const md_run_header& h, const models::free_water_result& r);

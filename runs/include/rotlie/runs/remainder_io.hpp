@@ -14,11 +14,3 @@ std::string remainder_text(const bch::remainder_result& r);
 std::string remainder_latex(const bch::remainder_result& r);
 
 }  // namespace rotlie::runs
-
-// The Python module (python/src) still spells these rotlie::reports::…, where they lived before; the
-// names stay reachable there until its call sites say runs::.
-namespace rotlie::reports {
-using runs::remainder_json;
-using runs::remainder_text;
-using runs::remainder_latex;
-}  // namespace rotlie::reports

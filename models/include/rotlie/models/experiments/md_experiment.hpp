@@ -13,6 +13,7 @@
 #include "rotlie/models/cpu_time.hpp"
 #include "rotlie/models/integrate.hpp"
 #include "rotlie/models/md_integrators.hpp"
+#include "rotlie/models/md_trajectory.hpp"
 
 namespace rotlie::models {
 
@@ -24,6 +25,7 @@ struct md_run_options {
   double T_ps = 0;                                  ///< simulated time per run
   long runs = 1;                                    ///< ensemble size
   std::uint64_t seed = 1;
+  long every = 0;  ///< > 0: the first run's trajectory every `every` steps (md_ensemble_cost::trajectory)
   std::function<void(long done, long runs)> progress;  ///< after each run, may be empty
 };
 
@@ -72,6 +74,7 @@ struct md_ensemble_cost {
   long steps = 0;           ///< per run
   double cpu_s_per_ps = 0;  ///< stepping only
   double round_off = 0;     ///< the unit round-off ε of the scalar the runs used
+  md_trajectory trajectory;  ///< the first run's, body 0, when md_run_options::every > 0
 };
 
 /// The ensemble loop of the experiments: f and steps into `cost`, then each run from
@@ -86,12 +89,26 @@ void run_ensemble(const Scene& scene, const md_run_options& o, const Method& met
   cost.round_off = static_cast<double>(std::numeric_limits<T>::epsilon());
   const T h = T(o.h_fs);
   double cpu = 0;
+  long run = 0;
+  cost.trajectory = {};
+  cost.trajectory.every = o.every;
+  // the first run's samples, its start included (taken after the run's own preparation, e.g. its forces)
+  auto sample = [&](long k, const T&, const rigid_bodies_state<T>& s) {
+    if (k % o.every == 0)
+      cost.trajectory.record(o.h_fs * static_cast<double>(k) / 1000, s.bodies[0], method.system().kinetic_energy(s) + s.potential, s.potential);
+    return true;
+  };
   auto step = [&](rigid_bodies_state<T>& x, auto&... observers) {
+    const bool sampled = run == 0 && o.every > 0;
+    if (sampled) sample(0, T(0), x);
     const double c0 = thread_cpu_seconds();
-    integrate(method, x, h, steps, observers...);
+    if (sampled)
+      integrate(method, x, h, steps, observers..., sample);
+    else
+      integrate(method, x, h, steps, observers...);
     cpu += thread_cpu_seconds() - c0;
   };
-  for (long run = 0; run < o.runs; ++run) {
+  for (run = 0; run < o.runs; ++run) {
     auto x = scene.initial(o.seed, static_cast<std::uint64_t>(run));
     if (!one_run(x, step)) break;
     if (o.progress) o.progress(run + 1, o.runs);

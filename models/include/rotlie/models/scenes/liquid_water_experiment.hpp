@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "rotlie/models/md_integrators.hpp"
+#include "rotlie/models/md_trajectory.hpp"
 #include "rotlie/models/scenes/liquid_water.hpp"
 #include "rotlie/models/scenes/water_observables.hpp"
 #include "rotlie/models/scenes/water_setup.hpp"
@@ -32,6 +33,7 @@ struct liquid_water_run_options {
   int runs = 9;
   long molecules = 512;
   int threads = 1;
+  long every = 0;           ///< > 0: the trajectory every `every` steps from the start (result.trajectory)
   std::string state_file;   ///< read if it exists; else the equilibrated start is written there
   /// Writes a file whole (path, text); empty: write_water_state's own temporary and rename.
   std::function<void(const std::string&, const std::string&)> write_file;
@@ -62,6 +64,7 @@ struct liquid_water_run_result {
   /// Per run: ΔE (kcal/mol) and the largest |K| + |V| it was computed from, whose round-off bounds what ΔE
   /// can resolve (judged by runs::verdict_of: a state far too hot leaves ΔE/ΔV measuring round-off).
   std::vector<double> dE, energy_size;
+  md_trajectory trajectory;  ///< molecule 0 and the energies, the runs one after another
 };
 
 /// Line-by-line progress, may be empty.
@@ -165,6 +168,8 @@ inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& 
     double v_sum = 0, t_sum = 0;
     const auto t0 = std::chrono::steady_clock::now();
     const std::clock_t c0 = std::clock();
+    r.trajectory.every = o.every;
+    if (o.every > 0) r.trajectory.record(0.0, s.bodies[0], sys.energy(s), sys.potential_energy(s));
     for (int run = 0; run < o.runs; ++run) {
       double e_sum = 0, e_sq = 0, v_run = 0, v_sq = 0, scale = 0;
       const double e_ref = sys.energy(s), v_ref = sys.potential_energy(s);  // shifts that keep the sums well conditioned
@@ -180,6 +185,8 @@ inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& 
         const double V = sys.potential_energy(s), K = sys.kinetic_energy(s), E = V + K;
         if (!std::isfinite(E)) throw std::runtime_error("the run diverged (energy not finite) at h = " + schemes::message_number(o.h_fs) + " fs");
         scale = std::max(scale, std::abs(K) + std::abs(V));
+        if (const long done = run * steps + k + 1; o.every > 0 && done % o.every == 0)
+          r.trajectory.record(o.h_fs * static_cast<double>(done) / 1000, s.bodies[0], E, V);
         e_sum += E - e_ref;
         e_sq += (E - e_ref) * (E - e_ref);
         v_run += V - v_ref;
