@@ -193,8 +193,9 @@ subcommand add_exact(CLI::App& app, exact_options& exact) {
 }
 
 subcommand add_md(CLI::App& app, md_options& md) {
-  auto* md_cmd = app.add_subcommand("md", "van Zon & Schofield's scenes: free water (orientation error time tau), a "
-                                          "dipole in a field (Table I) and liquid water (Fig. 1), any integrator");
+  auto* md_cmd = app.add_subcommand("md", "Rigid bodies under torques, any integrator: van Zon & Schofield's free water "
+                                          "(orientation error time tau), dipole in a field (Table I) and liquid water (Fig. 1), "
+                                          "and the spin-orbit scene of rotlie spin");
   std::string scenes;
   for (const auto& s : rotlie::runs::scenes()) scenes += (scenes.empty() ? "" : "; ") + s.name + ": " + s.summary;
   md_cmd->add_option("--scene", md.scene, scenes)->required();
@@ -204,7 +205,8 @@ subcommand add_md(CLI::App& app, md_options& md) {
                      "or SIER2/X, SIER4/X with the free rotation by scheme X "
                      "(RS4-S5-McLachlan:CBA, or SCHEME:PERM:LABEL such as P1:BAC:5 solved for the water molecule)")
       ->required();
-  md_cmd->add_option("--h", md.h, "The step h in fs (the step itself: SIER4 at h/f = 4.2 fs is --h 16.8)")->required();
+  md_cmd->add_option("--h", md.h, "The step h in fs (the step itself: SIER4 at h/f = 4.2 fs is --h 16.8); spin-orbit: a fraction "
+                                  "of the orbital period")->required();
   for (const auto& o : rotlie::runs::all_scene_options()) md_cmd->add_option(o.name, md.values[o.name], o.help);
   md_cmd->add_flag("--json", md.json, "Machine-readable output on stdout");
   return {md_cmd, [md_cmd, &md] {

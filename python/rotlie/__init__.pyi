@@ -80,18 +80,13 @@ class Result(Mapping[str, Any]):
 
 class MdTrajectory:
     every: int
-    t_ps: npt.NDArray[np.float64]
+    fields: tuple[str, ...]
     Q: npt.NDArray[np.float64]
-    G: npt.NDArray[np.float64]
     energy: npt.NDArray[np.float64]
-    potential: npt.NDArray[np.float64]
+    def __getattr__(self, name: str) -> npt.NDArray[np.float64]: ...  # t_ps, G, potential (md); t, omega_body (spin-orbit)
 
 class MdResult(Result):
-    scene: str
     integrator: str
-    h_fs: float
-    f: int
-    runs: int
     unstable: bool
     round_off_floor: bool
     @property
@@ -137,7 +132,9 @@ def map_line(family: str, s: Number, t: Number, grid: int, exact: bool = False) 
 def bch(series: str, degree: int) -> list[tuple[str, Fraction]]: ...
 def md(scene: str, integrator: str, h: Number, T: Number | None = None, *, runs: int | None = None, seed: int | None = None,
        scalar: Scalar | None = None, dipole: Number | None = None, field: Number | None = None, molecules: int | None = None,
-       threads: int | None = None, state: str | PathLike[str] | None = None, every: int | None = None) -> MdResult: ...
+       threads: int | None = None, state: str | PathLike[str] | None = None, body: str | BodyLike | None = None,
+       e: Number | None = None, theta0: Number | None = None, omega0: Number | None = None, obliquity: Number | None = None,
+       every: int | None = None) -> MdResult: ...
 
 class SpinTrajectory:
     every: int

@@ -51,18 +51,22 @@ def map_line(family: str, s, t, grid: int, exact: bool = False) -> MapLine:
 
 def md(scene: str, integrator: str, h: Number, T: Number | None = None, *, runs: int | None = None, seed: int | None = None,
        scalar: str | None = None, dipole: Number | None = None, field: Number | None = None, molecules: int | None = None,
-       threads: int | None = None, state: str | os.PathLike | None = None, every: int | None = None) -> MdResult:
-    """A scene of ``rotlie md`` (``free-water``, ``dipole-field``, ``liquid-water``), as ``rotlie md --json``.
+       threads: int | None = None, state: str | os.PathLike | None = None, body: str | Body | None = None, e: Number | None = None,
+       theta0: Number | None = None, omega0: Number | None = None, obliquity: Number | None = None,
+       every: int | None = None) -> MdResult:
+    """A scene of ``rotlie md`` (``free-water``, ``dipole-field``, ``liquid-water``, ``spin-orbit``), as ``rotlie md --json``.
 
-    ``h`` is the step in fs, ``T`` the time per run in ps; every keyword left None takes the scene's
-    default. ``runs``, ``seed``: the ensemble; ``scalar``: double, long-double or float128 (the ensemble
-    scenes); ``dipole`` (D) and ``field`` (MV/m): the dipole scene; ``molecules``, ``threads`` and
-    ``state`` (a file): liquid water; ``every``: the trajectory every K steps (``MdResult.trajectory``:
-    t_ps, Q, G, energy, potential as arrays). A keyword of another scene raises ValueError, as the
+    ``h`` is the step in fs, ``T`` the time per run in ps (spin-orbit: both in orbits, as ``rotlie spin``);
+    every keyword left None takes the scene's default. ``runs``, ``seed``: the ensemble; ``scalar``:
+    double, long-double or float128; ``dipole`` (D) and ``field`` (MV/m): the dipole scene; ``molecules``,
+    ``threads`` and ``state`` (a file): liquid water; ``body`` (a name, "A,B,C", a Body or three moments),
+    ``e``, ``theta0``, ``omega0``, ``obliquity``: spin-orbit; ``every``: the trajectory every K steps
+    (``MdResult.trajectory``, its fields as arrays). A keyword of another scene raises ValueError, as the
     command line refuses it; the run's warnings (a step beyond the stable range, round-off) are
     UserWarnings and are flagged in the result (``unstable``, ``round_off_floor``)."""
     given = {"T": T, "runs": runs, "seed": seed, "scalar": scalar, "dipole": dipole, "field": field,
-             "molecules": molecules, "threads": threads, "state": state, "every": every}
+             "molecules": molecules, "threads": threads, "state": state, "body": body, "e": e, "theta0": theta0,
+             "omega0": omega0, "obliquity": obliquity, "every": every}
     options = {}
     for key, value in given.items():
         if value is None:
@@ -73,6 +77,8 @@ def md(scene: str, integrator: str, h: Number, T: Number | None = None, *, runs:
             options["--scalar"] = str(value)
         elif key == "state":
             options["--state"] = os.fspath(value)
+        elif key == "body":
+            options["--body"] = value if isinstance(value, str) else body_text(value)
         else:
             options["--" + key] = number_text(value, "--" + key)
     return MdResult(json.loads(_rotlie.md(str(scene), str(integrator), number_text(h, "--h"), options)))

@@ -49,25 +49,27 @@ class Result(Mapping):
 
 
 class MdTrajectory:
-    """An md run's state every K steps from the start: ``t_ps`` (N,), ``Q`` (N, 3, 3), ``G`` (N, 3),
-    ``energy`` and ``potential`` (N,); body 0 of the first run (liquid water: molecule 0, the runs in turn)."""
+    """A run's state every K steps from the start, each field of the JSON's "trajectory" as an array: for
+    the md scenes ``t_ps`` (N,), ``Q`` (N, 3, 3), ``G`` (N, 3), ``energy`` and ``potential`` (N,) of body 0
+    of the first run (liquid water: molecule 0, the runs in turn); for spin-orbit ``t`` (orbits), ``Q``,
+    ``omega_body`` and ``energy``."""
 
     def __init__(self, data: dict[str, Any]):
         self.every: int = int(data["every"])
-        self.t_ps = np.asarray(data["t_ps"], dtype=np.float64)
-        self.Q = np.asarray(data["Q"], dtype=np.float64).reshape(-1, 3, 3)
-        self.G = np.asarray(data["G"], dtype=np.float64).reshape(-1, 3)
-        self.energy = np.asarray(data["energy"], dtype=np.float64)
-        self.potential = np.asarray(data["potential"], dtype=np.float64)
+        self.fields = tuple(k for k in data if k != "every")
+        for key in self.fields:
+            a = np.asarray(data[key], dtype=np.float64)
+            setattr(self, key, a.reshape(-1, 3, 3) if key == "Q" else a)
 
     def __repr__(self) -> str:
-        return f"<MdTrajectory {len(self.t_ps)} samples every {self.every} steps>"
+        n = len(getattr(self, self.fields[0])) if self.fields else 0
+        return f"<MdTrajectory {n} samples every {self.every} steps: {', '.join(self.fields)}>"
 
 
 class MdResult(Result):
     """A run of ``rotlie md`` (any scene): its JSON's fields as attributes; ``trajectory`` when ``every`` was given."""
 
-    fields = ("scene", "integrator", "h_fs", "f", "runs", "unstable", "round_off_floor")
+    fields = ("integrator", "unstable", "round_off_floor")
 
     @property
     def trajectory(self) -> MdTrajectory | None:

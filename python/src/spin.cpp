@@ -123,8 +123,10 @@ void bind_spin(py::module_& m) {
       .def_property_readonly("cpu_s", [](const spin_object& s) { return s.result.cpu_s; })
       .def_property_readonly("unstable", [](const spin_object& s) { return s.result.check.unstable; })
       .def_property_readonly("round_off_floor", [](const spin_object& s) { return s.result.check.round_off_floor; })
-      .def_property_readonly("conserved", [](const spin_object& s) {
-        return py::module_::import("json").attr("loads")(s.json)["conserved"];
+      .def_property_readonly("conserved", [](const spin_object& s) -> py::object {
+        // an owning object: an item accessor would refer to the parsed dictionary after it is freed
+        const py::dict all = py::module_::import("json").attr("loads")(s.json);
+        return all["conserved"];
       })
       .def_property_readonly("trajectory", [](const spin_object& s) -> py::object {
         if (s.result.setup.every <= 0) return py::none();

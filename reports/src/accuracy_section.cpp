@@ -74,13 +74,12 @@ const scheme_curve* named(const std::vector<scheme_curve>& curves, const std::st
 }  // namespace
 
 report_section accuracy_section(const report_options& options) {
-  report_section s;
-  s.title = "Accuracy against cost (LV section 4)";
-  std::ostringstream md;
+  section_text text("Accuracy against cost (LV section 4)");
+  auto& s = text.section;
+  auto& md = text.md;
   section_writer figure{options, s, md, "Accuracy"};
   const int max_level = options.quick ? 8 : 10;
-  md << "## " << s.title << "\n\n"
-     << "Protocol of LV section 4.1: G(0) = (1, 1, 1), identity attitude, T = 1, h = 2^-i for i = 1 … " << max_level
+  md << "Protocol of LV section 4.1: G(0) = (1, 1, 1), identity attitude, T = 1, h = 2^-i for i = 1 … " << max_level
      << "; the error is the R^9 norm of the attitude difference from the exact flow (Jacobi elliptic functions, "
         "`models/exact_free_body.hpp`), averaged over every step. Errors are computed in long double so that the "
         "finest 4th-order points are not flattened by round-off; CPU time is measured on the double stepper "

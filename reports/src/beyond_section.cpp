@@ -109,12 +109,11 @@ void sphere_text(section_writer& w, const runs::sixth_order_study_result& study)
 }  // namespace
 
 report_section beyond_section(const report_options& options) {
-  report_section section;
-  section.title = "Beyond the paper: dedicated 6th-order schemes";
-  std::ostringstream md;
+  section_text text("Beyond the paper: dedicated 6th-order schemes");
+  auto& section = text.section;
+  auto& md = text.md;
   section_writer w{options, section, md, "Beyond the paper"};
-  md << "## " << section.title << "\n\n"
-     << "LV end with \"it is also possible to construct 6th-order integrators but the system of equations becomes more "
+  md << "LV end with \"it is also possible to construct 6th-order integrators but the system of equations becomes more "
         "difficult to solve\". This section solves it numerically for water and compares the schemes with the general "
         "6th-order compositions (Yoshida 1990; Kahan & Li 1997; Blanes & Moan 2002) and with the 4th-order champions of "
         "LV section 4. Budget: the default about 5–10 s of CPU on one core; `--full` adds the broad scan of all 3 066 systems at "

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "rotlie/reports/chart.hpp"
+#include "rotlie/reports/section_writer.hpp"
 #include "rotlie/reports/report.hpp"
 #include "sections.hpp"
 #include "rotlie/runs/exact_flow_study.hpp"
@@ -17,11 +18,10 @@ namespace rotlie::reports {
 
 report_section exact_flow_section(const report_options& options) {
   if (options.progress) options.progress("Exact flow: accuracy in the hard regimes");
-  report_section s;
-  s.title = "Exact free-body flow near the unstable axis and in the other hard regimes";
-  std::ostringstream md;
-  md << "## " << s.title << "\n\n"
-     << "The exact flow in double against its float128 instance (itself checked against an independent float128 "
+  section_text text("Exact free-body flow near the unstable axis and in the other hard regimes");
+  auto& s = text.section;
+  auto& md = text.md;
+  md << "The exact flow in double against its float128 instance (itself checked against an independent float128 "
         "Runge-Kutta + Richardson solution of Euler's equations in `exact_flow_regimes_test`), at 16 times in (0, T]: "
         "the largest error of any entry of Q and of G/‖G‖, the flow's own error estimate (the largest over those "
         "times), and the attitude of the flow composed of two halves, φ_{T/2}∘φ_{T/2}, against φ_T. The last column "

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "rotlie/reports/chart.hpp"
+#include "rotlie/reports/section_writer.hpp"
 #include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/lammps_section.hpp"
 #include "rotlie/reports/report_csv_reader.hpp"
@@ -167,11 +168,10 @@ void examples_part(std::ostringstream& md, const fs::path& out_dir) {
 }  // namespace
 
 report_section lammps_section(const report_options& options) {
-  report_section s;
-  s.title = "In LAMMPS";
-  std::ostringstream md;
-  md << "## " << s.title << "\n\n"
-     << "rotlie's SIER2 and SIER4 as LAMMPS fix styles `rigid/sier2/small` and `rigid/sier4/small` (folder `lammps/`, "
+  section_text text("In LAMMPS");
+  auto& s = text.section;
+  auto& md = text.md;
+  md << "rotlie's SIER2 and SIER4 as LAMMPS fix styles `rigid/sier2/small` and `rigid/sier4/small` (folder `lammps/`, "
         "GPL-2.0-or-later, launcher `lmp_rotlie`), against LAMMPS's own `rigid/nve/small` (NO_SQUISH, i.e. MRDL), on "
         "rigid TIP3P with `lj/cut/coul/long` 9 Å and `pppm 1e-5`: 512, 4,096 and 32,768 molecules (a melted 512 replicated), "
         "1 and 2 MPI ranks. One SIER4 step is 4 force evaluations, so the table compares SIER4 at h = 8 fs with the "

@@ -352,13 +352,12 @@ void discrepancies(section_writer& w, const findings& found) {
 }  // namespace
 
 report_section vzs_section(const report_options& options) {
-  report_section s;
-  s.title = "van Zon & Schofield: rigid bodies under torques";
-  std::ostringstream md;
+  section_text text("van Zon & Schofield: rigid bodies under torques");
+  auto& s = text.section;
+  auto& md = text.md;
   section_writer w{options, s, md, "van Zon & Schofield"};
   const runs::vzs_budget b = runs::vzs_budget_for(options.quick);
-  md << "## " << s.title << "\n\n"
-     << "vZS sections V.A–B regenerated. Units: LAMMPS `real` (Å, fs, g/mol, kcal/mol, e) with LAMMPS's constants. "
+  md << "vZS sections V.A–B regenerated. Units: LAMMPS `real` (Å, fs, g/mol, kcal/mol, e) with LAMMPS's constants. "
         "The molecule: Eisenberg & Kauzmann's water moments 1.0220, 1.9187, 2.9376 × 10⁻⁴⁰ g cm² = 0.61546, 1.15547, "
         "1.76906 g/mol·Å² (the body LV use, for which the dedicated rotors are solved; vZS only say \"a water "
         "molecule\"), mass 18.01528 g/mol; initial conditions canonical at 297 K (body G_i Gaussian with variance "

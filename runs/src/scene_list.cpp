@@ -7,9 +7,10 @@ namespace rotlie::runs {
 scene free_water_scene();
 scene dipole_field_scene();
 scene liquid_water_scene();
+scene spin_orbit_scene();
 
 const std::vector<scene>& scenes() {
-  static const std::vector<scene> all{free_water_scene(), dipole_field_scene(), liquid_water_scene()};
+  static const std::vector<scene> all{free_water_scene(), dipole_field_scene(), liquid_water_scene(), spin_orbit_scene()};
   return all;
 }
 

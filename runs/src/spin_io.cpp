@@ -1,6 +1,8 @@
 #include "rotlie/runs/spin_io.hpp"
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace rotlie::runs {
 namespace {
@@ -45,6 +47,21 @@ nlohmann::json spin_json(const runs::spin_result& r) {
     j["trajectory"] = {{"every", s.every}, {"t", tr.t}, {"Q", Qs}, {"omega_body", ws}, {"energy", tr.energy}};
   }
   return j;
+}
+
+std::string spin_text(const runs::spin_result& r) {
+  const auto& setup = r.setup;
+  const auto I = runs::spin_moments(setup.body);
+  std::ostringstream out;
+  out << std::setprecision(10) << "spin-orbit: " << setup.body.name << " (A, B, C = " << I[0] << ", " << I[1] << ", " << I[2]
+      << "), e = " << setup.e << ", " << setup.method.name << ", h = " << setup.h << " orbit, " << setup.steps << " steps ("
+      << setup.T << " orbits), " << setup.scalar << "\n  Q =";
+  for (int i = 0; i < 3; ++i) out << (i ? "\n     " : " ") << r.Q(i, 0) << "  " << r.Q(i, 1) << "  " << r.Q(i, 2);
+  out << "\n  omega_body = " << r.omega_body[0] << ", " << r.omega_body[1] << ", " << r.omega_body[2] << " n\n  theta = " << r.theta
+      << " rad\n  energy " << r.energy_start << " -> " << r.energy_end << "\n  " << r.check.quantity << " changed by at most "
+      << r.check.max_change << " (" << r.check.change_percent << " % of the potential's fluctuation)" << (r.check.unstable ? ": UNSTABLE" : "")
+      << "\n  CPU " << r.cpu_s << " s, " << r.evaluations << " torque evaluations\n";
+  return out.str();
 }
 
 }  // namespace rotlie::runs

@@ -373,7 +373,7 @@ const std::vector<bad_input> cases = {
 
   // md
   {{"md", "--integrator", "SIER2", "--h", "1"}, usage, "--scene is required"},
-  {{"md", "--scene", "liquid", "--integrator", "SIER2", "--h", "1"}, usage, "--scene must be free-water, dipole-field or liquid-water, got 'liquid'"},
+  {{"md", "--scene", "liquid", "--integrator", "SIER2", "--h", "1"}, usage, "--scene must be free-water, dipole-field, liquid-water or spin-orbit, got 'liquid'"},
   {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--molecules", "256"}, usage, "smaller than twice the 11 Å cutoff"},
   {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "0"}, usage, "--h must be positive"},
   {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "nan"}, usage, "--h 'nan' is not a finite number"},

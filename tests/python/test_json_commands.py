@@ -145,3 +145,19 @@ def test_order_is_typed():
     r = rotlie.order("ABCBA2", WATER, max_level=4)
     assert isinstance(r, rotlie.OrderResult) and r.declared_order == 2
     assert np.array_equal(r.h, [p["h"] for p in r.points]) and r.error.shape == (4,)
+
+
+def test_spin_orbit_is_a_scene_of_md():
+    """The spin-orbit scene through md() is rotlie.spin's run and `rotlie spin`'s JSON (the registry holds it)."""
+    r = rotlie.md("spin-orbit", "SIER4", "1/200", T=1, body="Moon", e=0.0549, obliquity=0.1, every=20)
+    s = rotlie.spin("Moon", e=0.0549, integrator="SIER4", h="1/200", T=1, obliquity=0.1, every=20)
+    e = cli("spin", "--body", "Moon", "--e", "0.0549", "--integrator", "SIER4", "--h", "1/200", "--T", "1",
+            "--obliquity", "0.1", "--every", "20", "--json")
+    timing = {"cpu_s", "scene"}
+    assert {k: v for k, v in r.items() if k not in timing} == {k: v for k, v in e.items() if k not in timing}
+    assert r.scene == "spin-orbit" and r.theta == s.theta and np.array_equal(r.trajectory.Q, s.trajectory.Q)
+    assert np.array_equal(r.trajectory.omega_body, s.trajectory.omega_body) and r.trajectory.t[-1] == 1.0
+    with pytest.raises(ValueError):
+        rotlie.md("spin-orbit", "SIER4", "1/200", T=1, e=0.1)  # no body
+    with pytest.raises(ValueError):
+        rotlie.md("spin-orbit", "SIER4", "1/200", T=1, body="Moon", e=0.1, runs=3)  # an option of another scene

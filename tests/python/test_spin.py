@@ -62,3 +62,13 @@ def test_refusals_and_flags_are_the_command_lines():
     with pytest.warns(UserWarning, match="Jacobi integral"):
         r = rotlie.spin("Hyperion", 0, "SIER2", 1, 50)
     assert r.unstable and r.conserved["quantity"] == "jacobi"
+
+
+def test_conserved_is_an_owned_dictionary():
+    """SpinResult.conserved once returned an item of a dictionary already freed (a use after free that
+    crashed the interpreter about one run in ten): each access is a dictionary of its own that lives on."""
+    r = rotlie.spin("Moon", 0.0549, "SIER4", "1/100", 1)
+    kept = [r.conserved for _ in range(200)]
+    churn = [{"x": [float(i)] * 8} for i in range(20000)]  # reuse freed memory
+    assert all(c == r.to_dict()["conserved"] for c in kept) and len(churn) == 20000
+    assert kept[0] is not kept[1] and kept[0]["quantity"] == "extended_hamiltonian"

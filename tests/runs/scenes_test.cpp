@@ -30,7 +30,7 @@ BOOST_AUTO_TEST_CASE(every_scene_is_found_by_its_name_and_an_unknown_one_lists_t
     runs::scene_named("moon");
     BOOST_FAIL("an unknown scene was accepted");
   } catch (const runs::bad_input& e) {
-    BOOST_TEST(std::string(e.what()) == "--scene must be free-water, dipole-field or liquid-water, got 'moon'");
+    BOOST_TEST(std::string(e.what()) == "--scene must be free-water, dipole-field, liquid-water or spin-orbit, got 'moon'");
   }
 }
 

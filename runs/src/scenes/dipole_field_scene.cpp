@@ -23,14 +23,11 @@ scene_result run_in(const dipole_run& e) {
     throw std::runtime_error("no run has a finite dH/dV (" + std::to_string(result.failed_runs) + " diverged, " +
                              std::to_string(result.undefined_runs) +
                              " with V not fluctuating or the energies' squares beyond the scalar's range)");
-  scene_result out;
-  out.json = dipole_field_json(e.header(), result, std::stod(e.dipole), std::stod(e.field));
   std::ostringstream text;
-  text << "  dH/dV = " << mean_error_text(result.dH.mean, result.dH.error) << " %\n  dLz/<Lz> = "
-       << mean_error_text(result.dLz.mean, result.dLz.error) << "\n  CPU " << result.cpu_s_per_ps << " s per simulated ps\n";
-  out.text = run_summary(e, "dipole in a field", result.f, result.steps) + text.str();
-  out.warnings = verdict_of(result).warnings;
-  return out;
+  text << run_summary(e, "dipole in a field", result.f, result.steps) << "  dH/dV = " << mean_error_text(result.dH.mean, result.dH.error)
+       << " %\n  dLz/<Lz> = " << mean_error_text(result.dLz.mean, result.dLz.error) << "\n  CPU " << result.cpu_s_per_ps
+       << " s per simulated ps\n";
+  return {dipole_field_json(e.header(), result, std::stod(e.dipole), std::stod(e.field)), text.str(), verdict_of(result).warnings};
 }
 
 scene_result run(const scene_request& r) {

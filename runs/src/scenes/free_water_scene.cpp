@@ -15,15 +15,12 @@ scene_result run_in(const ensemble_run& e) {
   const auto result = models::run_free_water(models::free_water<T>{}, e.integrator, e.run);
   if (!result.finite)
     throw std::runtime_error("the integration diverged (non-finite attitude): the step is beyond the integrator's stability limit");
-  scene_result out;
-  out.json = free_water_json(e.header(), result);
   std::ostringstream text;
-  text << "  tau = " << mean_error_text(result.tau_ps, result.tau_error_ps) << " ps (delta = t/(10 tau) fitted over "
-       << result.fitted_samples << " of " << result.t_ps.size() << " samples)\n  delta(T) = " << result.delta.back()
-       << " (exact reference: " << result.reference_delta.back() << ")\n  CPU " << result.cpu_s_per_ps << " s per simulated ps\n";
-  out.text = run_summary(e, "free water", result.f, result.steps) + text.str();
-  out.warnings = verdict_of(result).warnings;
-  return out;
+  text << run_summary(e, "free water", result.f, result.steps) << "  tau = " << mean_error_text(result.tau_ps, result.tau_error_ps)
+       << " ps (delta = t/(10 tau) fitted over " << result.fitted_samples << " of " << result.t_ps.size()
+       << " samples)\n  delta(T) = " << result.delta.back() << " (exact reference: " << result.reference_delta.back()
+       << ")\n  CPU " << result.cpu_s_per_ps << " s per simulated ps\n";
+  return {free_water_json(e.header(), result), text.str(), verdict_of(result).warnings};
 }
 
 scene_result run(const scene_request& r) {

@@ -28,7 +28,7 @@ inline std::string shortest(double x) {
 
 /// --every K, the trajectory every K steps (every scene takes it).
 inline scene_option every_option() {
-  return {"--every", "0", "With --json: the trajectory every K steps from the start (t_ps, Q, G, energy, potential); 0 for none"};
+  return {"--every", "0", "With --json: the trajectory every K steps from the start (its \"trajectory\": times, Q, the spin, energies); 0 for none"};
 }
 
 /// --every of a run of `steps` steps: 0 or a whole number of steps, at most max_trajectory_samples samples.

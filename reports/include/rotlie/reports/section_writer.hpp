@@ -1,6 +1,6 @@
 #pragma once
-// What a section writer does besides its own content: progress lines prefixed with the section's name,
-// and charts written into the report folder, listed among the section's files and linked in its markdown.
+// What a section writer does besides its own content: its heading, progress lines prefixed with the
+// section's name, and charts written into the report folder, listed among its files and linked in its markdown.
 #include <sstream>
 #include <string>
 
@@ -8,6 +8,17 @@
 #include "rotlie/reports/report.hpp"
 
 namespace rotlie::reports {
+
+/// A section being written: the section (its title and files) and its markdown, which starts with the
+/// "## title" heading.
+struct section_text {
+  report_section section;
+  std::ostringstream md;
+  explicit section_text(const std::string& title) {
+    section.title = title;
+    md << "## " << title << "\n\n";
+  }
+};
 
 struct section_writer {
   const report_options& options;
