@@ -77,7 +77,7 @@ report_section accuracy_section(const report_options& options) {
   section_text text("Accuracy against cost (LV section 4)");
   auto& s = text.section;
   auto& md = text.md;
-  section_writer figure{options, s, md, "Accuracy"};
+  section_writer w{options, s, md, "Accuracy"};
   const int max_level = options.quick ? 8 : 10;
   md << "Protocol of LV section 4.1: G(0) = (1, 1, 1), identity attitude, T = 1, h = 2^-i for i = 1 … " << max_level
      << "; the error is the R^9 norm of the attitude difference from the exact flow (Jacobi elliptic functions, "
@@ -93,7 +93,7 @@ report_section accuracy_section(const report_options& options) {
   const std::size_t n_count = curves.sphere_solutions.size();
 
   md << "### Spherical top\n\n";
-  figure_pair(figure, "fig1_sphere", "Fig. 1: spherical top, the N integrators of Table 2, leapfrog and Yoshida", sphere_curves,
+  figure_pair(w, "fig1_sphere", "Fig. 1: spherical top, the N integrators of Table 2, leapfrog and Yoshida", sphere_curves,
               "Fig. 1 (spherical top).");
   // Table 3: numeric and analytic remainders normalised by N5 (2), next to the paper's.
   double n5_analytic = 0;
@@ -125,7 +125,7 @@ report_section accuracy_section(const report_options& options) {
   }
   md << "\n";
   fig2.series = {ours, paper};
-  figure.figure("fig2_sphere_remainders", fig2, "Fig. 2 (analytic against numeric remainder, spherical top).");
+  w.figure("fig2_sphere_remainders", fig2, "Fig. 2 (analytic against numeric remainder, spherical top).");
   md << "All " << n_count << " N solutions, leapfrog and Yoshida, with the fitted order:\n\n";
   curve_table(md, sphere_curves, *n5_2);
 
@@ -135,14 +135,14 @@ report_section accuracy_section(const report_options& options) {
   const auto& fig5 = curves.fig5;
   const scheme_curve& n2 = curve_named(fig5, "N2 BAC (2)");
   md << "### Water molecule\n\n";
-  figure_pair(figure, "fig3_water", "Fig. 3: water, the N integrators of Table 4, leapfrog and Yoshida (best permutations)", fig3,
+  figure_pair(w, "fig3_water", "Fig. 3: water, the N integrators of Table 4, leapfrog and Yoshida (best permutations)", fig3,
               "Fig. 3 (water).");
   std::vector<scheme_curve> fig4 = {n2};
   for (const auto& r : references)
     if (r.order == 4) fig4.push_back(r);
-  figure_pair(figure, "fig4_water_reference", "Fig. 4: water, N2 BAC (2) and the 4th-order reference schemes (best permutations)",
+  figure_pair(w, "fig4_water_reference", "Fig. 4: water, N2 BAC (2) and the 4th-order reference schemes (best permutations)",
               fig4, "Fig. 4 (water).");
-  figure_pair(figure, "fig5_water_dedicated", "Fig. 5: water, N2 BAC (2), P1 BAC (5), R ABC (4) and RS4 S5 McLachlan CBA", fig5,
+  figure_pair(w, "fig5_water_dedicated", "Fig. 5: water, N2 BAC (2), P1 BAC (5), R ABC (4) and RS4 S5 McLachlan CBA", fig5,
               "Fig. 5 (water).");
 
   md << "Every water curve, against N2 BAC (2) (reference schemes at the permutation with the smallest error):\n\n";

@@ -12,6 +12,7 @@
 #include <limits>
 
 #include "rotlie/lie/exact_number.hpp"
+#include "rotlie/models/md_trajectory.hpp"
 #include "rotlie/runs/body_names.hpp"
 #include "rotlie/runs/md_methods.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
@@ -25,7 +26,6 @@ namespace {
 using quad = boost::multiprecision::float128;
 
 constexpr double max_steps = 2e9;  // T/h: about an hour of SIER2 in double
-constexpr long max_samples = 10'000'000;     // a trajectory's samples (--every): about 1 GB of JSON
 constexpr double whole_steps_slack = 1e-9;  // T/h of decimals typed from a float (0.333333333333)
 // An embedded pair's error estimate is a difference of two results, each rounded to a few ε of the
 // state (of size 1 here): a tolerance below 5 ε cannot be met; 1e-18 in long double (9 ε) serves the
@@ -292,7 +292,7 @@ spin_setup spin_setup_of(const spin_request& r) {
   s.omega0 = finite_number(r.omega0, "--omega0");
   s.obliquity = finite_number(r.obliquity, "--obliquity");
   s.every = integer_in_range(r.every, "--every", 0, std::numeric_limits<long>::max());
-  if (s.every > 0 && s.steps / s.every > max_samples)
+  if (s.every > 0 && static_cast<double>(s.steps / s.every) > models::max_trajectory_samples)
     throw bad_input("--every " + one_line(r.every) + " keeps " + schemes::message_number(static_cast<double>(s.steps / s.every)) +
                     " samples of the trajectory, over the limit of 1e7: take a larger --every");
   s.method = spin_method_named(r.integrator, s.body);
