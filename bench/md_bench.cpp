@@ -47,9 +47,9 @@ const schemes::scheme_table* dedicated(const std::string& key) {
 void md_step(benchmark::State& state, const std::string& name, const std::string& dedicated_key) {
   const models::dipole_field<double> scene;
   models::md_run_options o;
-  o.integrator = dedicated_key.empty() ? name : "SIER2/" + dedicated_key;
+  o.integrator = models::md_integrator_named(dedicated_key.empty() ? name : "SIER2/" + dedicated_key);
   o.rotor_table = dedicated(dedicated_key);
-  const int f = models::md_integrator_named(o.integrator).f;
+  const int f = o.integrator.f;
   const double h = h_over_f * f;
   models::with_scene_integrator<double>(scene, o, [&](const auto& method) {
     models::rigid_bodies_state<double> x;
@@ -61,7 +61,7 @@ void md_step(benchmark::State& state, const std::string& name, const std::string
       benchmark::DoNotOptimize(x.bodies.data());
     }
     const double ns = 1e9 * (thread_cpu_seconds() - c0) / (static_cast<double>(state.iterations()) * molecules);
-    measured_ns()[o.integrator] = ns;
+    measured_ns()[o.integrator.name] = ns;
     state.counters["ns_per_molecule_step"] = ns;
     state.counters["ns_per_molecule_fs"] = ns / h;  // cost per simulated fs at h/f = 4.2 fs
     if (measured_ns().count("MRDL")) state.counters["x_MRDL_per_step"] = ns / measured_ns()["MRDL"];
@@ -124,7 +124,7 @@ void odeint_at_equal_cpu(benchmark::State& state) {
   double sumV = 0, sumV2 = 0;
   for (auto _ : state) {
     models::md_run_options o;
-    o.integrator = "SIER2";
+    o.integrator = models::md_integrator_named("SIER2");
     models::with_scene_integrator<double>(scene, o, [&](const auto& method) {
       auto x = start;
       const double mvv2e = models::real_units::mvv2e<double>();

@@ -1,16 +1,11 @@
 // rotlie map: the body-set maps of LV section 5 (Figs. 7–10), one JSON line per body, resumable,
-// distributed over MPI ranks when started by mpirun.
-//
-// Every rank computes the bodies of a fixed schedule (the rows of the grid, s fixed, dealt out in
-// turn) and sends each line to rank 0, which writes the lines in the grid's order: the file of a run
-// on any number of processes, killed and resumed or not, is the file of one uninterrupted process.
-// A line is appended with one write and is whole or absent; a resume drops a torn last line.
-// By default (--fast) a row is computed as a whole, by continuation (N: solver/continued_map.hpp;
-// P: the screened path, solver/screened_map.hpp), so a resume recomputes a row it finds incomplete
-// and writes only its missing lines: the result of a body never depends on where a run stopped or
-// on the number of processes. Once every row of a screened map is done, the neighbour check
-// (runs/map_neighbour_check.hpp) runs over the whole map, its exact solves shared among the ranks in
-// the same way, and the file is rewritten whole with the check's counts in its header.
+// distributed over MPI ranks when started by mpirun. The run itself is runs::run_map_rank0 and
+// run_map_worker (runs/map_run.hpp); this file checks the options, holds the folder, resumes the file
+// and prints the summary. A line is appended with one write and is whole or absent; a resume drops a
+// torn last line. By default (--fast) a row is computed as a whole, by continuation (N:
+// solver/continued_map.hpp; P: the screened path, solver/screened_map.hpp), so a resume recomputes a
+// row it finds incomplete and writes only its missing lines: the result of a body never depends on
+// where a run stopped or on the number of processes.
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -31,7 +26,8 @@
 #include "rotlie/runs/exclusive_use.hpp"
 #include "rotlie/runs/map_file.hpp"
 #include "rotlie/runs/map_neighbour_check.hpp"
-#include "rotlie/runs/map_rows.hpp"
+#include "rotlie/runs/map_run.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/runs/output_file.hpp"
 #include "rotlie/solver/body_grid.hpp"
 #include "rotlie/solver/body_map.hpp"
@@ -43,106 +39,9 @@ namespace fs = std::filesystem;
 
 constexpr const char* default_folder = "rotlie-map";
 
-// The asymmetric grid is K rows (1 ≤ i ≤ K − 1) of K bodies (0 ≤ j ≤ K − 1): row r holds the
-// indices r K … r K + K − 1. Rows are dealt out to the ranks in turn.
-int owner_of_row(std::size_t row, int ranks) { return static_cast<int>(row % static_cast<std::size_t>(ranks)); }
-
 // --grid 1 has no asymmetric body (it once wrote an empty map with exit 0); 2 has the flat (1/2, 0).
 int checked_grid(const std::string& text) {
   return static_cast<int>(parse_integer_in_range(text, "--grid", 2, solver::max_grid_divisions));
-}
-
-// Rank 0's writer: lines arrive in any order and leave in the grid's order.
-class ordered_writer {
- public:
-  ordered_writer(std::vector<std::size_t> todo, runs::map_file_writer* file, bool echo, std::vector<std::string>* keep)
-      : todo_(std::move(todo)), file_(file), echo_(echo), keep_(keep) {}
-  void add(std::size_t index, std::string line) {
-    pending_.emplace(index, std::move(line));
-    while (next_ < todo_.size()) {
-      const auto found = pending_.find(todo_[next_]);
-      if (found == pending_.end()) break;
-      if (file_) file_->append(found->second);
-      if (echo_) std::cout << found->second << "\n" << std::flush;
-      if (keep_) (*keep_)[found->first] = found->second;
-      pending_.erase(found);
-      ++next_;
-    }
-  }
-  std::size_t written() const { return next_; }
-  bool complete() const { return next_ == todo_.size(); }
-
- private:
-  std::vector<std::size_t> todo_;
-  runs::map_file_writer* file_;
-  bool echo_;
-  std::vector<std::string>* keep_;
-  std::map<std::size_t, std::string> pending_;
-  std::size_t next_ = 0;
-};
-
-std::string duration_text(double seconds) {
-  std::ostringstream s;
-  s.precision(seconds < 10 ? 2 : 3);
-  if (seconds < 120) s << seconds << " s";
-  else if (seconds < 7200) s << seconds / 60 << " min";
-  else s << seconds / 3600 << " h";
-  return s.str();
-}
-
-// The neighbour check's tasks shared among the ranks: task n is done by rank n mod size. Rank 0
-// hands out each batch (a broadcast); the workers answer as they answer with rows.
-class shared_runner {
- public:
-  shared_runner(process_group& group, const std::vector<solver::grid_body>& bodies, const std::string& family)
-      : group_(group), bodies_(bodies), family_(family) {}
-  std::vector<std::string> operator()(const std::vector<runs::neighbour_task>& tasks) {
-    if (tasks.empty()) return {};  // an empty batch would read as the end of the work
-    if (group_.size() > 1) group_.broadcast(runs::tasks_text(tasks));
-    std::vector<std::string> out(tasks.size());
-    std::vector<char> have(tasks.size(), 0);
-    int workers_left = group_.size() - 1;
-    const auto take = [&](bool wait) {
-      auto d = group_.receive(wait);
-      for (auto& m : d.lines) {
-        out.at(m.index) = std::move(m.payload);
-        have[m.index] = 1;
-      }
-      workers_left -= d.done;
-    };
-    for (std::size_t n = 0; n < tasks.size(); n += static_cast<std::size_t>(group_.size())) {
-      out[n] = runs::run_neighbour_task(tasks[n], bodies_, family_);
-      have[n] = 1;
-      if (group_.size() > 1) take(false);
-    }
-    while (workers_left > 0) take(true);
-    if (std::find(have.begin(), have.end(), 0) != have.end())
-      throw std::runtime_error("a process of the MPI job did not deliver all its neighbour-check results");
-    return out;
-  }
-  /// Tells the workers there is no more work.
-  void finish() {
-    if (group_.size() > 1) group_.broadcast("");
-  }
-
- private:
-  process_group& group_;
-  const std::vector<solver::grid_body>& bodies_;
-  std::string family_;
-};
-
-// A worker's part of the neighbour check: batches until rank 0 sends an empty one.
-void serve_neighbour_check(process_group& group, const std::vector<solver::grid_body>& bodies, const std::string& family) {
-  for (;;) {
-    const std::string text = group.broadcast("");
-    if (text.empty()) return;
-    const auto tasks = runs::tasks_from_text(text);
-    std::vector<std::pair<std::size_t, std::string>> results;
-    for (std::size_t n = static_cast<std::size_t>(group.rank()); n < tasks.size(); n += static_cast<std::size_t>(group.size()))
-      results.emplace_back(n, runs::run_neighbour_task(tasks[n], bodies, family));
-    if (!results.empty()) group.send_results(results);
-    group.send_done();
-  }
 }
 
 struct prepared_map {
@@ -195,7 +94,7 @@ std::string summary(const prepared_map& p, double seconds, std::size_t computed,
   }
   std::ostringstream s;
   s << "map of family " << p.family << " at --grid " << p.K << ": " << bodies << " of " << p.bodies.size()
-    << " asymmetric bodies (" << computed << " computed now in " << duration_text(seconds) << " by " << processes
+    << " asymmetric bodies (" << computed << " computed now in " << runs::duration_text(seconds) << " by " << processes
     << (processes == 1 ? " process" : " processes") << ") in "
     << p.path.string() << "\n";
   if (with_ratio > 0)
@@ -223,72 +122,16 @@ int run_rank0(const map_options& o, process_group& group) {
   }
   group.broadcast("0" + std::string(p.existing.done.begin(), p.existing.done.end()));
 
-  // A screened map's lines are final only after the neighbour check: --json prints them then.
-  const bool screened = p.method == bch::map_method::screened;
-  std::optional<runs::map_file_writer> file;
-  if (!p.path.empty())
-    file.emplace(p.path, p.existing, runs::map_header(p.family, p.K, p.bodies.size(), runs::map_method_name(p.method)).dump());
-  if (o.json && !screened)
-    for (const auto& line : p.existing.lines) std::cout << line << "\n";
-  std::vector<std::size_t> todo;
-  for (std::size_t k = 0; k < p.bodies.size(); ++k)
-    if (p.existing.done[k] == 0) todo.push_back(k);
-  std::vector<std::string> kept(screened && p.path.empty() ? p.bodies.size() : 0);
-  ordered_writer writer(todo, file ? &*file : nullptr, o.json && !screened, kept.empty() ? nullptr : &kept);
-
+  auto plan = runs::plan_map(p.family, p.K, p.method);
+  plan.done = p.existing.done;
   progress_line progress;
-  const auto start = std::chrono::steady_clock::now();
-  const auto show = [&] {
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const std::size_t done = writer.written();
-    std::ostringstream s;
-    s << "map " << p.family << " --grid " << p.K << ": " << done << "/" << todo.size() << " bodies on " << group.size()
-      << " process(es)";
-    if (done > 0) s << ", about " << duration_text(elapsed / static_cast<double>(done) * static_cast<double>(todo.size() - done)) << " left";
-    progress.show(s.str());
-  };
-  const auto drain = [&](bool wait, int& workers_left) {
-    auto d = group.receive(wait);
-    for (auto& m : d.lines) writer.add(m.index, std::move(m.payload));
-    workers_left -= d.done;
-  };
-  int workers_left = group.size() - 1;
-  const std::size_t K = static_cast<std::size_t>(p.K);
-  for (std::size_t row = 0; row * K < p.bodies.size(); ++row) {
-    if (owner_of_row(row, group.size()) != 0) continue;
-    for (auto& [k, line] : runs::map_row_lines(p.bodies, row * K, K, p.existing.done, p.family, p.method)) writer.add(k, std::move(line));
-    drain(false, workers_left);
-    show();
-  }
-  while (workers_left > 0) {
-    drain(true, workers_left);
-    show();
-  }
-  if (!writer.complete()) throw std::runtime_error("a process of the MPI job did not deliver all its bodies");
-  if (file) file->finish();
-  shared_runner shared(group, p.bodies, p.family);
-  if (screened) {
-    int pass = 0;
-    const runs::neighbour_runner run = [&](const std::vector<runs::neighbour_task>& tasks) {
-      progress.show("map " + p.family + " --grid " + std::to_string(p.K) + ": neighbour check, pass " + std::to_string(++pass) +
-                    ", " + std::to_string(tasks.size()) + " exact solves on " + std::to_string(group.size()) + " process(es)");
-      return shared(tasks);
-    };
-    if (file) {
-      file.reset();  // closed: the check rewrites the file whole
-      runs::check_map_file(p.path, p.K, p.bodies, run);
-      if (o.json) {
-        const auto text = runs::read_map_file(p.path);
-        for (std::size_t n = 1; n < text.lines.size(); ++n) std::cout << text.lines[n] << "\n";  // after the header
-      }
-    } else {
-      runs::check_neighbours(p.bodies, kept, run);
-      for (const auto& line : kept) std::cout << line << "\n";
-    }
-  }
-  shared.finish();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!o.json) std::cout << summary(p, seconds, todo.size(), group.size());
+  runs::map_run_output out;
+  out.path = p.path;
+  out.existing = &p.existing;
+  if (o.json) out.line = [](const std::string& line) { std::cout << line << "\n" << std::flush; };
+  out.progress = [&progress](const std::string& line) { progress.show(line); };
+  const auto r = runs::run_map_rank0(plan, group, out);
+  if (!o.json) std::cout << summary(p, r.seconds, r.computed, group.size());
   return 0;
 }
 
@@ -296,17 +139,10 @@ int run_worker(const map_options& o, process_group& group) {
   const std::string verdict = group.broadcast("");
   if (verdict.empty() || verdict[0] != '0') return verdict.empty() ? exit_failure : verdict[0] - '0';  // rank 0 says why
   const auto& descriptor = runs::family_to_map(o.family);
-  const std::string family(descriptor.name);
   const int K = checked_grid(o.grid);
-  const auto method = runs::map_method_asked(descriptor, K, o.exact, o.fast);
-  const auto bodies = solver::asymmetric_grid(K);
-  const std::vector<char> done(verdict.begin() + 1, verdict.end());
-  const std::size_t n = static_cast<std::size_t>(K);
-  for (std::size_t row = 0; row * n < bodies.size(); ++row)
-    if (owner_of_row(row, group.size()) == group.rank())
-      group.send_results(runs::map_row_lines(bodies, row * n, n, done, family, method));
-  group.send_done();
-  serve_neighbour_check(group, bodies, family);
+  auto plan = runs::plan_map(std::string(descriptor.name), K, runs::map_method_asked(descriptor, K, o.exact, o.fast));
+  plan.done.assign(verdict.begin() + 1, verdict.end());
+  runs::run_map_worker(plan, group);
   return 0;
 }
 

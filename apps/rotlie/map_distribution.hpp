@@ -1,47 +1,34 @@
 #pragma once
-// The processes that share one map. GiNaC and CLN are not thread-safe, so the unit of parallelism
-// is a process: MPI ranks when rotlie was started by mpirun (or srun) and built with MPI, else this
-// process alone. Only map_distribution_mpi.cpp knows MPI; map_distribution_serial.cpp stands in
+// The processes that share one map (runs::map_processes). GiNaC and CLN are not thread-safe, so the
+// unit of parallelism is a process: MPI ranks when rotlie was started by mpirun (or srun) and built
+// with MPI, else this process alone. Only map_distribution_mpi.cpp knows MPI; map_distribution_serial.cpp stands in
 // for it in a build without MPI.
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "rotlie/runs/map_run.hpp"
+
 namespace rotlie::app {
 
-class process_group {
+class process_group final : public runs::map_processes {
  public:
   /// Joins the MPI job when the environment says rotlie runs under an MPI launcher.
   process_group();
-  ~process_group();  ///< leaves it (also while an exception unwinds)
+  ~process_group() override;  ///< leaves it (also while an exception unwinds)
   process_group(const process_group&) = delete;
   process_group& operator=(const process_group&) = delete;
 
-  int rank() const;
-  int size() const;
-
-  /// Rank 0's text, delivered to every rank (collective).
-  std::string broadcast(const std::string& from_rank0);
-
-  /// A worker's lines (body index, line) of one row, to rank 0, in one message. It does not wait for rank 0
-  /// (which receives only between its own rows): a blocking send of a large message left the worker
-  /// waiting, and spinning, while rank 0 computed, so that one line crossed per row of rank 0's.
-  void send_results(const std::vector<std::pair<std::size_t, std::string>>& lines);
-  /// A worker's last message, once every earlier one was delivered: it has no more bodies.
-  void send_done();
-
-  struct message {
-    std::size_t index = 0;
-    std::string payload;
-  };
-  /// Rank 0: the lines that have arrived, and how many workers said they were done; when `wait`, it
-  /// waits until there is at least one of either.
-  struct delivery {
-    std::vector<message> lines;
-    int done = 0;
-  };
-  delivery receive(bool wait);
+  int rank() const override;
+  int size() const override;
+  std::string broadcast(const std::string& from_rank0) override;
+  /// Does not wait for rank 0 (which receives only between its own rows): a blocking send of a large
+  /// message left the worker waiting, and spinning, while rank 0 computed, so that one line crossed per
+  /// row of rank 0's.
+  void send_results(const std::vector<std::pair<std::size_t, std::string>>& lines) override;
+  void send_done() override;
+  delivery receive(bool wait) override;
 
   /// Ends every process of the job at once (after a failure on one of them).
   [[noreturn]] void abort(int status);

@@ -74,10 +74,8 @@ const scheme_curve* named(const std::vector<scheme_curve>& curves, const std::st
 }  // namespace
 
 report_section accuracy_section(const report_options& options) {
-  section_text text("Accuracy against cost (LV section 4)");
-  auto& s = text.section;
-  auto& md = text.md;
-  section_writer w{options, s, md, "Accuracy"};
+  section_writer w(options, "Accuracy against cost (LV section 4)", "Accuracy");
+  auto& md = w.md;
   const int max_level = options.quick ? 8 : 10;
   md << "Protocol of LV section 4.1: G(0) = (1, 1, 1), identity attitude, T = 1, h = 2^-i for i = 1 … " << max_level
      << "; the error is the R^9 norm of the attitude difference from the exact flow (Jacobi elliptic functions, "
@@ -174,8 +172,7 @@ report_section accuracy_section(const report_options& options) {
      << " claims reproduced within 20 % at equal reduced step h/C, the paper's measure. The last column "
         "replaces the rotation count C by the measured CPU time of our double stepper: an RS step's rotation about "
         "G and the ABC rotations about a principal axis do not cost exactly the same, which moves the ratios.\n\n";
-  s.markdown = md.str();
-  return s;
+  return w.finish();
 }
 
 }  // namespace rotlie::reports

@@ -109,10 +109,8 @@ void sphere_text(section_writer& w, const runs::sixth_order_study_result& study)
 }  // namespace
 
 report_section beyond_section(const report_options& options) {
-  section_text text("Beyond the paper: dedicated 6th-order schemes");
-  auto& section = text.section;
-  auto& md = text.md;
-  section_writer w{options, section, md, "Beyond the paper"};
+  section_writer w(options, "Beyond the paper: dedicated 6th-order schemes", "Beyond the paper");
+  auto& md = w.md;
   md << "LV end with \"it is also possible to construct 6th-order integrators but the system of equations becomes more "
         "difficult to solve\". This section solves it numerically for water and compares the schemes with the general "
         "6th-order compositions (Yoshida 1990; Kahan & Li 1997; Blanes & Moan 2002) and with the 4th-order champions of "
@@ -122,7 +120,7 @@ report_section beyond_section(const report_options& options) {
   const auto study = runs::sixth_order_study(options.quick, options.full, [&](const std::string& line) { w.progress(line); });
   for (const auto& f : study.found) {
     write_file_atomically(options.out_dir / f.file, f.text);
-    section.files.push_back(options.out_dir / f.file);
+    w.section.files.push_back(options.out_dir / f.file);
   }
   search_text(w, study);
   tables_text(w, study.found);
@@ -221,10 +219,9 @@ report_section beyond_section(const report_options& options) {
         csv << c.name << "," << c.order << "," << c.cost << "," << p.h << "," << p.h_over_cost << "," << p.error << ","
             << p.cpu_seconds << "\n";
   write_file_atomically(options.out_dir / "beyond-curves.csv", csv.str());
-  section.files.push_back(options.out_dir / "beyond-curves.csv");
+  w.section.files.push_back(options.out_dir / "beyond-curves.csv");
   md << "All curves: [beyond-curves.csv](beyond-curves.csv). Section CPU: " << runs::fixed_text(study.seconds, 1) << " s.\n\n";
-  section.markdown = md.str();
-  return section;
+  return w.finish();
 }
 
 }  // namespace rotlie::reports

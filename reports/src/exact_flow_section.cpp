@@ -17,10 +17,9 @@
 namespace rotlie::reports {
 
 report_section exact_flow_section(const report_options& options) {
-  if (options.progress) options.progress("Exact flow: accuracy in the hard regimes");
-  section_text text("Exact free-body flow near the unstable axis and in the other hard regimes");
-  auto& s = text.section;
-  auto& md = text.md;
+  section_writer w(options, "Exact free-body flow near the unstable axis and in the other hard regimes", "Exact flow");
+  w.progress("accuracy in the hard regimes");
+  auto& md = w.md;
   md << "The exact flow in double against its float128 instance (itself checked against an independent float128 "
         "Runge-Kutta + Richardson solution of Euler's equations in `exact_flow_regimes_test`), at 16 times in (0, T]: "
         "the largest error of any entry of Q and of G/‖G‖, the flow's own error estimate (the largest over those "
@@ -63,10 +62,9 @@ report_section exact_flow_section(const report_options& options) {
   c.horizontal_line = 1e-12;
   c.horizontal_label = "target 1e-12";
   const auto f = write_chart(options.out_dir, "exact_flow_conditioning", c);
-  s.files = f.written;
+  w.section.files = f.written;
   md << "\n" << chart_markdown(f, "exact_flow_conditioning", "Exact-flow error in double against float128 near the middle axis and near a sphere.");
-  s.markdown = md.str();
-  return s;
+  return w.finish();
 }
 
 }  // namespace rotlie::reports

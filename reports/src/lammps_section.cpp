@@ -168,9 +168,8 @@ void examples_part(std::ostringstream& md, const fs::path& out_dir) {
 }  // namespace
 
 report_section lammps_section(const report_options& options) {
-  section_text text("In LAMMPS");
-  auto& s = text.section;
-  auto& md = text.md;
+  section_writer w(options, "In LAMMPS", "LAMMPS");
+  auto& md = w.md;
   md << "rotlie's SIER2 and SIER4 as LAMMPS fix styles `rigid/sier2/small` and `rigid/sier4/small` (folder `lammps/`, "
         "GPL-2.0-or-later, launcher `lmp_rotlie`), against LAMMPS's own `rigid/nve/small` (NO_SQUISH, i.e. MRDL), on "
         "rigid TIP3P with `lj/cut/coul/long` 9 Å and `pppm 1e-5`: 512, 4,096 and 32,768 molecules (a melted 512 replicated), "
@@ -185,8 +184,7 @@ report_section lammps_section(const report_options& options) {
           "does not run LAMMPS itself (the default sweep takes minutes). "
        << how_to_produce(options.out_dir);
     examples_part(md, options.out_dir);
-    s.markdown = md.str();
-    return s;
+    return w.finish();
   }
   double load_min = INFINITY, load_max = -INFINITY;
   std::ostringstream table;
@@ -198,9 +196,8 @@ report_section lammps_section(const report_options& options) {
      << table.str();
   const auto c = cost_chart(*runs);
   if (!c.series.empty()) {
-    const auto files = write_chart(options.out_dir, "lammps_cost", c);
-    s.files.insert(s.files.end(), files.written.begin(), files.written.end());
-    md << chart_markdown(files, "lammps_cost", "ΔE/ΔV against CPU time per simulated ps, several h per integrator.") << "\n";
+    w.figure("lammps_cost", c, "ΔE/ΔV against CPU time per simulated ps, several h per integrator.");
+    md << "\n";
   }
   floor_table(md, *runs);
   std::string goals_where;
@@ -211,8 +208,7 @@ report_section lammps_section(const report_options& options) {
   }
   examples_part(md, options.out_dir);
   md << "To measure again: " << how_to_produce(options.out_dir);
-  s.markdown = md.str();
-  return s;
+  return w.finish();
 }
 
 }  // namespace rotlie::reports

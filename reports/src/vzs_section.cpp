@@ -352,10 +352,8 @@ void discrepancies(section_writer& w, const findings& found) {
 }  // namespace
 
 report_section vzs_section(const report_options& options) {
-  section_text text("van Zon & Schofield: rigid bodies under torques");
-  auto& s = text.section;
-  auto& md = text.md;
-  section_writer w{options, s, md, "van Zon & Schofield"};
+  section_writer w(options, "van Zon & Schofield: rigid bodies under torques", "van Zon & Schofield");
+  auto& md = w.md;
   const runs::vzs_budget b = runs::vzs_budget_for(options.quick);
   md << "vZS sections V.A–B regenerated. Units: LAMMPS `real` (Å, fs, g/mol, kcal/mol, e) with LAMMPS's constants. "
         "The molecule: Eisenberg & Kauzmann's water moments 1.0220, 1.9187, 2.9376 × 10⁻⁴⁰ g cm² = 0.61546, 1.15547, "
@@ -385,8 +383,7 @@ report_section vzs_section(const report_options& options) {
   cost_charts(w, study, b);
   cost_table(w, study, b, found);
   discrepancies(w, found);
-  s.markdown = md.str();
-  return s;
+  return w.finish();
 }
 
 }  // namespace rotlie::reports

@@ -1,6 +1,8 @@
 #include "rotlie/runs/lie_tables_io.hpp"
 
 #include <algorithm>
+#include <array>
+#include <functional>
 #include <cstdio>
 #include <map>
 #include <sstream>
@@ -37,19 +39,55 @@ std::size_t source_index(const std::vector<std::string>& sources, const std::str
   return static_cast<std::size_t>(std::find(sources.begin(), sources.end(), s) - sources.begin()) + 1;
 }
 
-// One cell as text: empty, a number, or a quoted number with its source mark.
-template <class Mark>
-std::string cell(const std::optional<std::int64_t>& v, const std::string& source, Mark mark) {
-  if (!v) return "";
-  std::string s = std::to_string(*v);
-  if (is_quote(source)) s += mark(source);
-  return s;
+// A stage table's marks in one format: after a dimension computed here (the paper leaves it empty),
+// and after a number quoted from literature source k (1-based).
+struct table_marks {
+  std::string computed;
+  std::function<std::string(std::size_t)> quoted;
+};
+
+// One row's eight cells (order, dimension, equations and totals NS and S, stages NS and S) as text:
+// empty, a number, or a number with its mark.
+std::array<std::string, 8> row_cells(const lie::stage_block& b, const lie::stage_row& r, const std::vector<std::string>& sources,
+                                     const table_marks& marks) {
+  auto c = [&](const std::optional<std::int64_t>& v, const std::string& source = "") {
+    if (!v) return std::string();
+    std::string text = std::to_string(*v);
+    if (is_quote(source)) text += marks.quoted(source_index(sources, source));
+    return text;
+  };
+  std::string dim = r.dim ? std::to_string(*r.dim) : "";
+  if (is_rigid(b) && r.order > paper_known_rigid_dimension) dim += marks.computed;
+  return {std::to_string(r.order), dim, c(r.equations_ns), c(r.total_ns), c(r.equations_s), c(r.total_s),
+          c(r.stages_ns, r.stages_ns_source), c(r.stages_s, r.stages_s_source)};
 }
 
-std::string dim_cell(const lie::stage_block& b, const lie::stage_row& r, const std::string& computed_mark) {
-  std::string s = r.dim ? std::to_string(*r.dim) : "";
-  if (is_rigid(b) && r.order > paper_known_rigid_dimension) s += computed_mark;
-  return s;
+// The cells joined: open, the cells separated by sep, close.
+std::string joined(const std::array<std::string, 8>& cells, const std::string& open, const std::string& sep, const std::string& close) {
+  std::string line = open;
+  for (std::size_t k = 0; k < cells.size(); ++k) line += (k ? sep : "") + cells[k];
+  return line + close;
+}
+
+// A stage table in a format with delimiters (markdown, LaTeX): its marks, what comes before the first
+// block, each block's title row, each row's delimiters, what ends a block, and the notes on the sources.
+struct table_format {
+  table_marks marks;
+  std::string header;
+  std::function<std::string(const std::string&)> block_title;
+  std::string open, sep, close, block_end;
+  std::function<std::string(const std::vector<std::string>&)> notes;
+};
+
+std::string stages_table(const std::vector<lie::stage_block>& blocks, const table_format& f) {
+  const auto sources = quote_sources(blocks);
+  std::string out = f.header;
+  for (const auto& b : blocks) {
+    out += f.block_title(b.title);
+    for (const auto& r : b.rows) out += joined(row_cells(b, r, sources, f.marks), f.open, f.sep, f.close);
+    out += f.block_end;
+  }
+  return out + f.notes(sources);
 }
 
 }  // namespace
@@ -118,7 +156,7 @@ nlohmann::json stages_json(const std::vector<lie::stage_block>& blocks) {
 
 std::string stages_text(const std::vector<lie::stage_block>& blocks) {
   const auto sources = quote_sources(blocks);
-  auto mark = [&](const std::string& s) { return "[" + std::to_string(source_index(sources, s)) + "]"; };
+  const table_marks marks{"*", [](std::size_t k) { return "[" + std::to_string(k) + "]"; }};
   std::ostringstream out;
   char line[200];
   for (const auto& b : blocks) {
@@ -127,11 +165,9 @@ std::string stages_text(const std::vector<lie::stage_block>& blocks) {
                   "eq S", "total S", "stages NS", "stages S");
     out << line;
     for (const auto& r : b.rows) {
-      auto c = [&](const std::optional<std::int64_t>& v, const std::string& src = "") { return cell(v, src, mark); };
-      std::snprintf(line, sizeof line, "%5d %14s %10s %10s %10s %10s %10s %10s\n", r.order,
-                    dim_cell(b, r, "*").c_str(), c(r.equations_ns).c_str(), c(r.total_ns).c_str(),
-                    c(r.equations_s).c_str(), c(r.total_s).c_str(), c(r.stages_ns, r.stages_ns_source).c_str(),
-                    c(r.stages_s, r.stages_s_source).c_str());
+      const auto cells = row_cells(b, r, sources, marks);
+      std::snprintf(line, sizeof line, "%5s %14s %10s %10s %10s %10s %10s %10s\n", cells[0].c_str(), cells[1].c_str(),
+                    cells[2].c_str(), cells[3].c_str(), cells[4].c_str(), cells[5].c_str(), cells[6].c_str(), cells[7].c_str());
       out << line;
     }
     out << "\n";
@@ -142,47 +178,33 @@ std::string stages_text(const std::vector<lie::stage_block>& blocks) {
 }
 
 std::string stages_markdown(const std::vector<lie::stage_block>& blocks) {
-  const auto sources = quote_sources(blocks);
-  auto mark = [&](const std::string& s) { return "<sup>q" + std::to_string(source_index(sources, s)) + "</sup>"; };
-  std::ostringstream out;
-  out << "| order | dimension | equations NS | total NS | equations S | total S | stages NS | stages S |\n"
-      << "|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  for (const auto& b : blocks) {
-    out << "| **" << b.title << "** |||||||| \n";
-    for (const auto& r : b.rows) {
-      auto c = [&](const std::optional<std::int64_t>& v, const std::string& src = "") { return cell(v, src, mark); };
-      out << "| " << r.order << " | " << dim_cell(b, r, "<sup>*</sup>") << " | " << c(r.equations_ns) << " | "
-          << c(r.total_ns) << " | " << c(r.equations_s) << " | " << c(r.total_s) << " | "
-          << c(r.stages_ns, r.stages_ns_source) << " | " << c(r.stages_s, r.stages_s_source) << " |\n";
-    }
-  }
-  out << "\n<sup>*</sup> true dimension computed here; the paper leaves the cell empty and uses the "
-         "Theorem 1–2 bound as the equation count.  \n";
-  for (std::size_t i = 0; i < sources.size(); ++i)
-    out << "<sup>q" << i + 1 << "</sup> literature value, not computed: " << sources[i] << "  \n";
-  return out.str();
+  return stages_table(blocks, {{"<sup>*</sup>", [](std::size_t k) { return "<sup>q" + std::to_string(k) + "</sup>"; }},
+                               "| order | dimension | equations NS | total NS | equations S | total S | stages NS | stages S |\n"
+                               "|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+                               [](const std::string& title) { return "| **" + title + "** |||||||| \n"; },
+                               "| ", " | ", " |\n", "",
+                               [](const std::vector<std::string>& sources) {
+                                 std::string notes = "\n<sup>*</sup> true dimension computed here; the paper leaves the cell empty "
+                                                     "and uses the Theorem 1–2 bound as the equation count.  \n";
+                                 for (std::size_t i = 0; i < sources.size(); ++i)
+                                   notes += "<sup>q" + std::to_string(i + 1) + "</sup> literature value, not computed: " + sources[i] + "  \n";
+                                 return notes;
+                               }});
 }
 
 std::string stages_latex(const std::vector<lie::stage_block>& blocks) {
-  const auto sources = quote_sources(blocks);
-  auto mark = [&](const std::string& s) { return "$^{q" + std::to_string(source_index(sources, s)) + "}$"; };
-  std::ostringstream out;
-  out << "\\begin{tabular}{rrrrrrrr}\n\\hline\n"
-      << "Order & Dimension & \\multicolumn{4}{c}{Number of equations} & \\multicolumn{2}{c}{Number of stages} \\\\\n"
-      << " & & NS & Total & S & Total & NS & S \\\\\n\\hline\n";
-  for (const auto& b : blocks) {
-    out << "\\multicolumn{8}{l}{" << b.title << "} \\\\\n";
-    for (const auto& r : b.rows) {
-      auto c = [&](const std::optional<std::int64_t>& v, const std::string& src = "") { return cell(v, src, mark); };
-      out << r.order << " & " << dim_cell(b, r, "$^{*}$") << " & " << c(r.equations_ns) << " & " << c(r.total_ns)
-          << " & " << c(r.equations_s) << " & " << c(r.total_s) << " & " << c(r.stages_ns, r.stages_ns_source)
-          << " & " << c(r.stages_s, r.stages_s_source) << " \\\\\n";
-    }
-    out << "\\hline\n";
-  }
-  out << "\\end{tabular}\n\n% $^{*}$ true dimension computed by rotlie; empty in the paper.\n";
-  for (std::size_t i = 0; i < sources.size(); ++i) out << "% $^{q" << i + 1 << "}$ quoted: " << sources[i] << "\n";
-  return out.str();
+  return stages_table(blocks, {{"$^{*}$", [](std::size_t k) { return "$^{q" + std::to_string(k) + "}$"; }},
+                               "\\begin{tabular}{rrrrrrrr}\n\\hline\n"
+                               "Order & Dimension & \\multicolumn{4}{c}{Number of equations} & \\multicolumn{2}{c}{Number of stages} \\\\\n"
+                               " & & NS & Total & S & Total & NS & S \\\\\n\\hline\n",
+                               [](const std::string& title) { return "\\multicolumn{8}{l}{" + title + "} \\\\\n"; },
+                               "", " & ", " \\\\\n", "\\hline\n",
+                               [](const std::vector<std::string>& sources) {
+                                 std::string notes = "\\end{tabular}\n\n% $^{*}$ true dimension computed by rotlie; empty in the paper.\n";
+                                 for (std::size_t i = 0; i < sources.size(); ++i)
+                                   notes += "% $^{q" + std::to_string(i + 1) + "}$ quoted: " + sources[i] + "\n";
+                                 return notes;
+                               }});
 }
 
 }  // namespace rotlie::runs

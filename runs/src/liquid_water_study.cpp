@@ -80,7 +80,7 @@ liquid_water_study_result liquid_water_study(const liquid_water_budget& b, bool 
     auto& measured = out.sweeps.emplace_back();
     measured.integrator = sw.integrator;
     for (double h : sw.h) {
-      o.integrator = sw.integrator;
+      o.integrator = models::md_integrator_named(sw.integrator);  // the study's own names; X solved above
       o.rotor_table = sw.rotor;
       o.h_fs = h;
       o.T_ps = std::max(b.run_ps, 10 * h / 1000);  // at least 10 steps per run
@@ -95,7 +95,7 @@ liquid_water_study_result liquid_water_study(const liquid_water_budget& b, bool 
       } catch (const std::runtime_error& e) {
         point.failed = true;
         point.failure = e.what();
-        point.f = models::md_integrator_named(sw.integrator).f;
+        point.f = o.integrator.f;
       }
     }
   }

@@ -9,7 +9,7 @@
 #include "rotlie/runs/family_names.hpp"
 #include "rotlie/runs/map_file.hpp"
 #include "rotlie/runs/map_neighbour_check.hpp"
-#include "rotlie/runs/map_rows.hpp"
+#include "rotlie/runs/map_run.hpp"
 #include "rotlie/runs/maps_truth.hpp"
 #include "rotlie/runs/maps_truth_csv.hpp"
 #include "rotlie/solver/body_map.hpp"
@@ -20,26 +20,16 @@ computed_map compute_family_map(const std::string& family, int K, const study_pr
   computed_map m;
   const auto method = map_method_asked(family_to_map(family), K, false, false);
   m.method = map_method_name(method);
-  const auto start = std::chrono::steady_clock::now();
-  const auto grid = solver::asymmetric_grid(K);
-  const std::vector<char> none_done(grid.size(), 0);
-  m.lines.resize(grid.size());
-  for (std::size_t first = 0; first < grid.size(); first += static_cast<std::size_t>(K)) {
-    if (progress)
-      progress("family " + family + " at --grid " + std::to_string(K) + ", row " + std::to_string(first / K + 1) + " of " +
-               std::to_string(K - 1));
-    for (auto& [k, line] : map_row_lines(grid, first, static_cast<std::size_t>(K), none_done, family, method))
-      m.lines[k] = std::move(line);
-  }
-  auto header = map_header(family, K, grid.size(), m.method);
-  if (method == bch::map_method::screened) {  // as rotlie map does once every row is done
-    if (progress) progress("family " + family + " at --grid " + std::to_string(K) + ", neighbour check");
-    const auto c = check_neighbours(grid, m.lines, local_neighbour_runner(grid, family));
-    header["neighbour_check"] = neighbour_check_record(c);
-  }
+  single_process alone;
+  map_run_output out;  // no file: the lines come back in the result
+  out.progress = progress;
+  auto r = run_map_rank0(plan_map(family, K, method), alone, out);  // with the neighbour check of a screened map
+  auto header = map_header(family, K, r.lines.size(), m.method);
+  if (r.neighbour_check) header["neighbour_check"] = neighbour_check_record(*r.neighbour_check);
+  m.lines = std::move(r.lines);
   m.file_text = header.dump() + "\n";
   for (const auto& line : m.lines) m.file_text += line + "\n";
-  m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m.seconds = r.seconds;
   return m;
 }
 

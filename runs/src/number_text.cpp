@@ -30,4 +30,13 @@ std::string significant_text(double x, int digits) {
 
 std::string decimal_text(const cln::cl_RA& x, int digits) { return lie::to_decimal(x, digits); }
 
+std::string duration_text(double seconds) {
+  std::ostringstream s;
+  s.precision(seconds < 10 ? 2 : 3);
+  if (seconds < 120) s << seconds << " s";
+  else if (seconds < 7200) s << seconds / 60 << " min";
+  else s << seconds / 3600 << " h";
+  return s.str();
+}
+
 }  // namespace rotlie::runs

@@ -51,7 +51,7 @@ std::vector<row> all_rows(const dedicated_rotors& d) {
 
 models::md_run_options run_options(const row& r, double h, double T, long runs) {
   models::md_run_options o;
-  o.integrator = r.shown.name;
+  o.integrator = models::md_integrator_named(r.shown.name);  // the program's own names; X solved into r.rotor
   o.rotor_table = r.rotor;
   o.h_fs = h;
   o.T_ps = T;

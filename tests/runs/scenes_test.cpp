@@ -64,12 +64,12 @@ BOOST_AUTO_TEST_CASE(a_run_through_the_registry_equals_the_models_own_call) {
   runs::scene_request r{"dipole-field", "SIER2", "8", {{"--runs", "3"}, {"--T", "2"}}, {}};
   const auto result = runs::run_scene(r);
   models::md_run_options o;
-  o.integrator = "SIER2";
+  o.integrator = models::md_integrator_named("SIER2");
   o.h_fs = 8;
   o.T_ps = 2;
   o.runs = 3;
   o.seed = 1;
-  const auto direct = models::run_dipole_field(models::dipole_field<double>("1.84", "2.7"), models::md_integrator_named("SIER2"), o);
+  const auto direct = models::run_dipole_field(models::dipole_field<double>("1.84", "2.7"), o);
   BOOST_TEST(result.json.at("dH_over_dV_percent")[0].get<double>() == direct.dH.mean);
   BOOST_TEST(result.json.at("dLz_over_Lz")[1].get<double>() == direct.dLz.error);
   BOOST_TEST(result.json.at("steps").get<long>() == direct.steps);

@@ -16,7 +16,7 @@ struct dipole_run : ensemble_run {
 
 template <class T>
 scene_result run_in(const dipole_run& e) {
-  const auto result = models::run_dipole_field(models::dipole_field<T>(e.dipole, e.field), e.integrator, e.run);
+  const auto result = models::run_dipole_field(models::dipole_field<T>(e.dipole, e.field), e.run);
   if (result.failed_runs == e.run.runs)
     throw std::runtime_error("every run diverged (non-finite energy): the step is beyond the integrator's stability limit");
   if (result.dH_over_dV_percent.empty())

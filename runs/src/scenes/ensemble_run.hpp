@@ -21,7 +21,6 @@ inline constexpr double max_total_steps = 2e9;  // runs × T/h: about an hour of
 
 struct ensemble_run {
   std::string scene, scalar;
-  models::md_integrator integrator;
   std::optional<schemes::scheme_table> rotor;  ///< X of SIER2/X, SIER4/X, solved for the scene's body
   models::md_run_options run;                  ///< run.rotor_table points into `rotor`
 
@@ -29,7 +28,7 @@ struct ensemble_run {
   ensemble_run(const ensemble_run&) = delete;  // run.rotor_table points into this object
   ensemble_run& operator=(const ensemble_run&) = delete;
 
-  md_run_header header() const { return {scene, integrator.name, scalar, run.h_fs, run.T_ps, run.runs, run.seed}; }
+  md_run_header header() const { return {scene, run.integrator.name, scalar, run.h_fs, run.T_ps, run.runs, run.seed}; }
 };
 
 /// Fills `e` from the request (every option present); throws bad_input naming the option.
@@ -39,7 +38,7 @@ inline void read_ensemble_run(const scene_request& r, const std::string& body_te
   if (e.scalar != "double" && e.scalar != "long-double" && e.scalar != "float128")
     throw bad_input("--scalar must be double, long-double or float128, got '" + e.scalar + "'");
   auto method = md_method_named(r.integrator, numeric_body(body_text));
-  e.integrator = std::move(method.spec);
+  e.run.integrator = std::move(method.spec);
   e.rotor = std::move(method.rotor);
   e.run.rotor_table = e.rotor ? &*e.rotor : nullptr;
   e.run.h_fs = positive_number(r.h, "--h");
@@ -60,7 +59,7 @@ inline void read_ensemble_run(const scene_request& r, const std::string& body_te
 /// The summary's first line: "WHAT, INTEGRATOR (f = F), h = H fs (h/f = H/F fs), R runs of S steps (T ps), seed N, SCALAR".
 inline std::string run_summary(const ensemble_run& e, const std::string& what, int f, long steps) {
   std::ostringstream text;
-  text << what << ", " << e.integrator.name << " (f = " << f << "), h = " << e.run.h_fs << " fs (h/f = " << e.run.h_fs / f << " fs), "
+  text << what << ", " << e.run.integrator.name << " (f = " << f << "), h = " << e.run.h_fs << " fs (h/f = " << e.run.h_fs / f << " fs), "
        << e.run.runs << " runs of " << steps << " steps (" << e.run.T_ps << " ps), seed " << e.run.seed << ", " << e.scalar << "\n";
   return text.str();
 }

@@ -12,7 +12,7 @@ using namespace scene_support;
 
 template <class T>
 scene_result run_in(const ensemble_run& e) {
-  const auto result = models::run_free_water(models::free_water<T>{}, e.integrator, e.run);
+  const auto result = models::run_free_water(models::free_water<T>{}, e.run);
   if (!result.finite)
     throw std::runtime_error("the integration diverged (non-finite attitude): the step is beyond the integrator's stability limit");
   std::ostringstream text;

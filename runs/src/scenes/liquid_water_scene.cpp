@@ -32,7 +32,7 @@ std::string line(const char* format, A... a) {
 scene_result run(const scene_request& request) {
   models::liquid_water_run_options o;
   const auto method = md_method_named(request.integrator, numeric_body(models::tip3p_body_text()));  // a bad name costs nothing
-  const auto& integrator = method.spec;
+  o.integrator = method.spec;
   o.h_fs = positive_number(request.h, "--h");
   o.T_ps = positive_number(option(request, "--T"), "--T");
   o.runs = static_cast<int>(integer_in_range(option(request, "--runs"), "--runs", 1, 1000));
@@ -72,7 +72,7 @@ scene_result run(const scene_request& request) {
   };
   models::rigid_bodies_state<double> start;
   as_bad_input([&] { start = models::liquid_water_start(o, show); });  // a state file of another system, overlaps
-  const auto r = models::run_liquid_water(o, integrator, start, show);
+  const auto r = models::run_liquid_water(o, start, show);
   scene_result out;
   out.json = liquid_water_json(r);
   out.text = line("liquid water: %ld TIP3P molecules, box %.4f Å, %s, h = %g fs (h/f = %g fs), %d run(s) of %g ps\n", r.molecules, r.box,

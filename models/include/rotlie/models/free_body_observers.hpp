@@ -12,51 +12,58 @@
 
 namespace rotlie::models {
 
-/// Mean R^9 distance of the attitude from exact samples, for a run of 2^level steps of T/2^level
-/// (LV section 4.1), and the mean of the samples' estimated errors.
+/// The running mean of an attitude distance and of the reference's estimated error at each step:
+/// what the two attitude-error observers below share.
 template <class T>
-class sampled_attitude_error {
+class attitude_error_tally {
  public:
-  sampled_attitude_error(const exact_samples<T>& exact, int level) : exact_(&exact), level_(level) {
-    if (level < 0 || level > exact.finest()) throw std::invalid_argument("step level outside the sampled grid");
-  }
-  void operator()(long k, const T&, const body_state<T>& s) {
-    sum_ += distance(s.Q, exact_->at(level_, k));
-    reference_sum_ += exact_->error(level_, k);
-    ++steps_;
-  }
   T mean() const { return sum_ / static_cast<T>(steps_); }
   /// The reference's estimated share of mean().
   T reference_mean() const { return reference_sum_ / static_cast<T>(steps_); }
   long steps() const { return steps_; }
 
+ protected:
+  void add(const T& distance, const T& reference_error) {
+    sum_ += distance;
+    reference_sum_ += reference_error;
+    ++steps_;
+  }
+
+ private:
+  T sum_{}, reference_sum_{};
+  long steps_ = 0;
+};
+
+/// Mean R^9 distance of the attitude from exact samples, for a run of 2^level steps of T/2^level
+/// (LV section 4.1), and the mean of the samples' estimated errors.
+template <class T>
+class sampled_attitude_error : public attitude_error_tally<T> {
+ public:
+  sampled_attitude_error(const exact_samples<T>& exact, int level) : exact_(&exact), level_(level) {
+    if (level < 0 || level > exact.finest()) throw std::invalid_argument("step level outside the sampled grid");
+  }
+  void operator()(long k, const T&, const body_state<T>& s) {
+    this->add(distance(s.Q, exact_->at(level_, k)), exact_->error(level_, k));
+  }
+
  private:
   const exact_samples<T>* exact_;
   int level_;
-  T sum_{}, reference_sum_{};
-  long steps_ = 0;
 };
 
 /// Mean R^9 distance of the attitude from the exact flow evaluated at every step's time, and the
 /// mean of the flow's estimated errors.
 template <class T>
-class flow_attitude_error {
+class flow_attitude_error : public attitude_error_tally<T> {
  public:
   explicit flow_attitude_error(const exact_free_body<T>& exact) : exact_(&exact) {}
   void operator()(long, const T& t, const body_state<T>& s) {
     const auto r = exact_->evaluate(t);
-    sum_ += distance(s.Q, r.state.Q);
-    reference_sum_ += 3 * r.error_estimate;  // max abs entry → R^9 distance
-    ++steps_;
+    this->add(distance(s.Q, r.state.Q), 3 * r.error_estimate);  // max abs entry → R^9 distance
   }
-  T mean() const { return sum_ / static_cast<T>(steps_); }
-  T reference_mean() const { return reference_sum_ / static_cast<T>(steps_); }
-  long steps() const { return steps_; }
 
  private:
   const exact_free_body<T>* exact_;
-  T sum_{}, reference_sum_{};
-  long steps_ = 0;
 };
 
 /// The largest relative drifts of the energy and of |G| from the initial state over the run.

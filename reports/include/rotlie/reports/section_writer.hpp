@@ -3,29 +3,25 @@
 // section's name, and charts written into the report folder, listed among its files and linked in its markdown.
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/report.hpp"
 
 namespace rotlie::reports {
 
-/// A section being written: the section (its title and files) and its markdown, which starts with the
-/// "## title" heading.
-struct section_text {
+/// A section being written: its title and files, its markdown (which starts with the "## title" heading),
+/// and progress lines that read "name: line".
+struct section_writer {
+  const report_options& options;
+  std::string name;
   report_section section;
   std::ostringstream md;
-  explicit section_text(const std::string& title) {
+
+  section_writer(const report_options& o, const std::string& title, std::string progress_name) : options(o), name(std::move(progress_name)) {
     section.title = title;
     md << "## " << title << "\n\n";
   }
-};
-
-struct section_writer {
-  const report_options& options;
-  report_section& section;
-  std::ostringstream& md;
-  std::string name;  ///< progress lines read "name: line"
-
   void progress(const std::string& line) const {
     if (options.progress) options.progress(name + ": " + line);
   }
@@ -33,6 +29,11 @@ struct section_writer {
     const auto f = write_chart(options.out_dir, file, c);
     section.files.insert(section.files.end(), f.written.begin(), f.written.end());
     md << chart_markdown(f, file, caption);
+  }
+  /// The section with its markdown, once everything is written.
+  report_section finish() {
+    section.markdown = md.str();
+    return std::move(section);
   }
 };
 

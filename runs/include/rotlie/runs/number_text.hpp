@@ -20,6 +20,10 @@ std::string scientific_or_dash(double x, int decimals);
 /// trailing zeros dropped). digits = 6 is what `std::cout << x` prints.
 std::string significant_text(double x, int digits);
 
+/// A duration for progress and summaries: "4.2 s", "12.5 min", "3.1 h" (2 significant digits below
+/// 10 s, else 3).
+std::string duration_text(double seconds);
+
 /// An exact number as `digits` decimals (lie::to_decimal): the coefficients of tables and solutions.
 std::string decimal_text(const cln::cl_RA& x, int digits);
 

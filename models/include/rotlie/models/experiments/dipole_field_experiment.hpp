@@ -50,9 +50,9 @@ T shifted_rms(const T& sum, const T& sum2, long n) {
 }  // namespace detail
 
 template <class T>
-dipole_field_result run_dipole_field(const dipole_field<T>& scene, const md_integrator& integrator, const md_run_options& o) {
+dipole_field_result run_dipole_field(const dipole_field<T>& scene, const md_run_options& o) {
   const long steps = md_steps(o);
-  return with_scene_integrator<T>(scene, integrator, o, [&](const auto& method) {
+  return with_scene_integrator<T>(scene, o, [&](const auto& method) {
     const auto& sys = method.system();
     dipole_field_result r;
     run_ensemble(scene, o, method, steps, r, [&](rigid_bodies_state<T>& x, auto& step) {
@@ -103,12 +103,6 @@ dipole_field_result run_dipole_field(const dipole_field<T>& scene, const md_inte
     r.dLz = ensemble_mean(r.dLz_over_Lz);
     return r;
   });
-}
-
-/// The same with o.integrator parsed (throws std::invalid_argument for an unknown name).
-template <class T>
-dipole_field_result run_dipole_field(const dipole_field<T>& scene, const md_run_options& o) {
-  return run_dipole_field(scene, md_integrator_named(o.integrator), o);
 }
 
 }  // namespace rotlie::models

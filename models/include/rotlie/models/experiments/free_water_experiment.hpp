@@ -75,7 +75,7 @@ inline void fit_tau(free_water_result& r) {
 
 /// `samples` sample times evenly spread over the run (each a whole step).
 template <class T>
-free_water_result run_free_water(const free_water<T>& scene, const md_integrator& integrator, const md_run_options& o, int samples = 32) {
+free_water_result run_free_water(const free_water<T>& scene, const md_run_options& o, int samples = 32) {
   const long steps = md_steps(o);
   const long K = std::min<long>(samples, steps);
   std::vector<long> at(static_cast<std::size_t>(K));
@@ -83,7 +83,7 @@ free_water_result run_free_water(const free_water<T>& scene, const md_integrator
   std::vector<double> sum2(at.size(), 0.0), ref2(at.size(), 0.0);
   const vec3<quad> Iq{quad(scene.moments[0]), quad(scene.moments[1]), quad(scene.moments[2])};
 
-  return with_scene_integrator<T>(scene, integrator, o, [&](const auto& method) {
+  return with_scene_integrator<T>(scene, o, [&](const auto& method) {
     free_water_result r;
     const T h = T(o.h_fs);
     run_ensemble(scene, o, method, steps, r, [&](rigid_bodies_state<T>& x, auto& step) {
@@ -124,12 +124,6 @@ free_water_result run_free_water(const free_water<T>& scene, const md_integrator
     fit_tau(r);
     return r;
   });
-}
-
-/// The same with o.integrator parsed (throws std::invalid_argument for an unknown name).
-template <class T>
-free_water_result run_free_water(const free_water<T>& scene, const md_run_options& o, int samples = 32) {
-  return run_free_water(scene, md_integrator_named(o.integrator), o, samples);
 }
 
 }  // namespace rotlie::models

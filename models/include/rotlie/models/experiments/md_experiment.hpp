@@ -19,8 +19,8 @@ namespace rotlie::models {
 
 /// A run in the scene's units: h in its time unit (fs for the real-unit scenes), T in a thousand of them.
 struct md_run_options {
-  std::string integrator;                           ///< SIER2, SIER4, MRDL, SEJ4, SIER2/X, SIER4/X (read when no parsed integrator is given)
-  const schemes::scheme_table* rotor_table = nullptr;  ///< X resolved for the body (a dedicated table), or null
+  md_integrator integrator = md_integrator_named("SIER2");  ///< the splitting and the rotor's kind, resolved by the caller
+  const schemes::scheme_table* rotor_table = nullptr;      ///< X resolved for the body (a dedicated table), or null
   double h_fs = 0;                                  ///< the step h itself (not h/f)
   double T_ps = 0;                                  ///< simulated time per run
   long runs = 1;                                    ///< ensemble size
@@ -55,17 +55,11 @@ inline mean_error ensemble_mean(const std::vector<double>& x) {
   return r;
 }
 
-/// The composition of `integrator` for the scene's body, potential and units, handed to visit.
-template <class T, class Scene, class Visitor>
-auto with_scene_integrator(const Scene& scene, const md_integrator& integrator, const md_run_options& o, Visitor&& visit) {
-  return with_md_integrator<T>(integrator, std::vector<body_kind<T>>{{scene.mass, scene.moments, o.rotor_table}}, scene.potential,
-                               scene.units, std::forward<Visitor>(visit));
-}
-
-/// The same with o.integrator parsed (throws std::invalid_argument for an unknown name).
+/// The composition of o.integrator for the scene's body, potential and units, handed to visit.
 template <class T, class Scene, class Visitor>
 auto with_scene_integrator(const Scene& scene, const md_run_options& o, Visitor&& visit) {
-  return with_scene_integrator<T>(scene, md_integrator_named(o.integrator), o, std::forward<Visitor>(visit));
+  return with_md_integrator<T>(o.integrator, std::vector<body_kind<T>>{{scene.mass, scene.moments, o.rotor_table}}, scene.potential,
+                               scene.units, std::forward<Visitor>(visit));
 }
 
 /// What every ensemble measures of its integrator besides the physics.

@@ -24,7 +24,7 @@
 namespace rotlie::models {
 
 struct liquid_water_run_options {
-  std::string integrator = "SIER2";  ///< read by run_liquid_water when no parsed integrator is given
+  md_integrator integrator = md_integrator_named("SIER2");  ///< the splitting and the rotor's kind, resolved by the caller
   /// SIER2/X and SIER4/X with a dedicated X: the table solved for TIP3P (tip3p_body_text); nullptr
   /// looks X up among the reference schemes.
   const schemes::scheme_table* rotor_table = nullptr;
@@ -145,21 +145,21 @@ inline rigid_bodies_state<double> liquid_water_start(const liquid_water_run_opti
   return s;
 }
 
-/// The NVE runs of `spec` from `start` (see the header comment); o.integrator is not read.
-inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& o, const md_integrator& spec,
+/// The NVE runs of o.integrator from `start` (see the header comment).
+inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& o,
                                                 const rigid_bodies_state<double>& start, const liquid_water_progress& progress) {
   check_liquid_water_options(o);
   const auto model = tip3p<double>();
   const auto w = liquid_water_potential(o.molecules, o.density, o.threads);
   liquid_water_run_result r;
-  r.integrator = spec.name;
+  r.integrator = o.integrator.name;
   r.h_fs = o.h_fs;
-  r.f = spec.f;
+  r.f = o.integrator.f;
   r.runs = o.runs;
   r.molecules = o.molecules;
   r.box = w.options().box;
   const long steps = std::max(1L, std::lround(o.T_ps * 1000 / o.h_fs));
-  with_md_integrator(spec, o.rotor_table, model.mass, model.moments, w, [&](const auto& method) {
+  with_md_integrator(o.integrator, o.rotor_table, model.mass, model.moments, w, [&](const auto& method) {
     const auto& sys = method.system();
     auto s = start;
     s.forces_current = false;
@@ -230,12 +230,6 @@ inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& 
   r.ratio_mean = mean;
   r.ratio_error = r.runs > 1 ? std::sqrt(var / (r.runs - 1) / r.runs) : std::nan("");  // one run: unknown
   return r;
-}
-
-/// The same with o.integrator parsed (throws std::invalid_argument for an unknown name).
-inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& o, const rigid_bodies_state<double>& start,
-                                                const liquid_water_progress& progress) {
-  return run_liquid_water(o, md_integrator_named(o.integrator), start, progress);
 }
 
 /// g_OO(r) up to 10 Å (bins of 0.05 Å) over `steps` NVE steps of MRDL at h fs from `start`,
