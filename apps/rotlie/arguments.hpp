@@ -1,6 +1,7 @@
 #pragma once
 // Validation of command-line values, with one-line messages that name the option, and the checks
 // every subcommand shares at the boundary (output folders, the state of standard output).
+#include <iostream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -23,6 +24,15 @@ inline long parse_integer_in_range(std::string_view text, std::string_view optio
   return runs::integer_in_range(text, option, lo, hi);
 }
 using runs::why_not_a_number;
+
+/// A command's answer on standard output: its JSON (two-space indent) with --json, else its text.
+template <class Json, class Text>
+void print_answer(bool json, const Json& json_of, const Text& text_of) {
+  if (json)
+    std::cout << json_of().dump(2) << "\n";
+  else
+    std::cout << text_of();
+}
 
 /// Throws usage_error naming `option` and the path unless `folder` is, or can be created as, a
 /// folder that accepts new files. Leaves the file system as it found it (a probe file and any

@@ -18,10 +18,7 @@ int run_dims(const dims_options& options) {
     progress.show("order " + std::to_string(p.order) + "/" + std::to_string(max_order));
   };
   const auto pieces = lie::lie_poisson_algebra(max_order, algebra);
-  if (options.json)
-    std::cout << runs::dims_json(pieces).dump(2) << "\n";
-  else
-    std::cout << runs::dims_text(pieces);
+  print_answer(options.json, [&] { return runs::dims_json(pieces); }, [&] { return runs::dims_text(pieces); });
   return 0;
 }
 

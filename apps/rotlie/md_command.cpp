@@ -13,10 +13,7 @@ int run_md(const md_options& o) {
   progress_line progress;
   runs::scene_request request{o.scene, o.integrator, o.h, o.given, [&progress](const std::string& line) { progress.show(line); }};
   const auto result = runs::run_scene(request);
-  if (o.json)
-    std::cout << result.json.dump(2) << "\n";
-  else
-    std::cout << result.text;
+  print_answer(o.json, [&] { return result.json; }, [&] { return result.text; });
   for (const auto& w : result.warnings) std::cerr << "rotlie: warning: " << w << "\n";
   return 0;
 }

@@ -31,10 +31,8 @@ int run_solve(const solve_options& options) {
                                      solver::scheme_table_text(s, body, digits));
     }
   }
-  if (options.json)
-    std::cout << runs::solve_json(result, body, options.family, digits).dump(2) << "\n";
-  else
-    std::cout << runs::solve_text(result, body, digits, 20);
+  print_answer(options.json, [&] { return runs::solve_json(result, body, options.family, digits); },
+               [&] { return runs::solve_text(result, body, digits, 20); });
   return 0;
 }
 

@@ -14,10 +14,7 @@ int run_stages(const stages_options& options) {
   std::vector<std::size_t> dims;
   for (const auto& p : lie::lie_poisson_algebra(max_order)) dims.push_back(p.dimension);
   const auto blocks = lie::stage_table(max_order, dims);
-  if (options.json)
-    std::cout << runs::stages_json(blocks).dump(2) << "\n";
-  else
-    std::cout << runs::stages_text(blocks);
+  print_answer(options.json, [&] { return runs::stages_json(blocks); }, [&] { return runs::stages_text(blocks); });
   return 0;
 }
 

@@ -42,7 +42,7 @@ nlohmann::json spin_json(const runs::spin_result& r) {
   if (s.every > 0) {
     const auto& tr = r.trajectory;
     nlohmann::json Qs = nlohmann::json::array(), ws = nlohmann::json::array();
-    for (const auto& Q : tr.Q) Qs.push_back({{Q[0], Q[1], Q[2]}, {Q[3], Q[4], Q[5]}, {Q[6], Q[7], Q[8]}});
+    for (const auto& q : tr.Q) Qs.push_back({{q[0], q[1], q[2]}, {q[3], q[4], q[5]}, {q[6], q[7], q[8]}});
     for (const auto& w : tr.omega_body) ws.push_back({w[0], w[1], w[2]});
     j["trajectory"] = {{"every", s.every}, {"t", tr.t}, {"Q", Qs}, {"omega_body", ws}, {"energy", tr.energy}};
   }
