@@ -122,8 +122,7 @@ int run_rank0(const map_options& o, process_group& group) {
   }
   group.broadcast("0" + std::string(p.existing.done.begin(), p.existing.done.end()));
 
-  auto plan = runs::plan_map(p.family, p.K, p.method);
-  plan.done = p.existing.done;
+  const runs::map_plan plan{p.family, p.K, p.method, p.bodies, p.existing.done};
   progress_line progress;
   runs::map_run_output out;
   out.path = p.path;
