@@ -6,16 +6,9 @@
 // solver/continued_map.hpp; P: the screened path, solver/screened_map.hpp), so a resume recomputes a
 // row it finds incomplete and writes only its missing lines: the result of a body never depends on
 // where a run stopped or on the number of processes.
-#include <algorithm>
-#include <cerrno>
-#include <chrono>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <map>
 #include <memory>
-#include <optional>
 #include <sstream>
 
 #include "arguments.hpp"

@@ -100,12 +100,16 @@ map_plan plan_map(const std::string& family, int K, bch::map_method method) {
 }
 
 map_run_result run_map_rank0(const map_plan& plan, map_processes& processes, const map_run_output& out) {
+  if (plan.done.size() != plan.bodies.size()) throw std::invalid_argument("run_map_rank0: the plan needs one done mark per body");
+  if (out.existing && (out.path.empty() || out.existing->done != plan.done))
+    throw std::invalid_argument("run_map_rank0: a resumed file's lines need its path and the plan's done marks");
   map_run_result result;
   const auto start = std::chrono::steady_clock::now();
   const bool screened = plan.method == bch::map_method::screened;
+  static const resumed_map nothing_yet;
   std::optional<map_file_writer> file;
   if (!out.path.empty())
-    file.emplace(out.path, out.existing ? *out.existing : resumed_map{},
+    file.emplace(out.path, out.existing ? *out.existing : nothing_yet,
                  map_header(plan.family, plan.K, plan.bodies.size(), map_method_name(plan.method)).dump());
   // A screened map's lines are final only after the neighbour check: they are handed on then.
   if (out.line && !screened && out.existing)

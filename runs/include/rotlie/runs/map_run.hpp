@@ -76,7 +76,7 @@ struct map_run_output {
   /// The map file, appended to in the grid's order (a screened map's is rewritten whole by the
   /// neighbour check); empty: no file, the lines come back in map_run_result::lines.
   std::filesystem::path path;
-  const resumed_map* existing = nullptr;  ///< the file's lines already there (a resume), or null
+  const resumed_map* existing = nullptr;  ///< the file's lines already there (a resume; its done marks are the plan's), or null
   /// Each final line, in the grid's order, as soon as it is final (may be empty).
   std::function<void(const std::string&)> line;
   /// One line of progress (may be empty).
@@ -91,7 +91,7 @@ struct map_run_result {
 };
 
 /// Rank 0's part (the whole run on one process). Throws std::runtime_error when a process did not
-/// deliver its share.
+/// deliver its share, std::invalid_argument when `out.existing` is not the plan's resume.
 map_run_result run_map_rank0(const map_plan& plan, map_processes& processes, const map_run_output& out);
 
 /// A worker's part: its rows, then its share of the neighbour check until rank 0 says the end.
