@@ -119,7 +119,7 @@ int run_rank0(const map_options& o, process_group& group) {
   progress_line progress;
   runs::map_run_output out;
   out.path = p.path;
-  out.existing = &p.existing;
+  if (!p.path.empty()) out.existing = &p.existing;  // --json alone: no file, nothing resumed
   if (o.json) out.line = [](const std::string& line) { std::cout << line << "\n" << std::flush; };
   out.progress = [&progress](const std::string& line) { progress.show(line); };
   const auto r = runs::run_map_rank0(plan, group, out);

@@ -167,6 +167,14 @@ BOOST_AUTO_TEST_CASE(a_file_of_another_grid_or_family_is_refused_and_left_as_it_
   BOOST_TEST((slurp(dir / "map-R.jsonl") == expected));
 }
 
+// --json without --out: no file, nothing to resume; the lines printed are the file's body lines.
+BOOST_AUTO_TEST_CASE(json_alone_prints_the_lines_of_the_file) {
+  const auto r = run("map --family N --grid 8 --json");
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
+  const std::string file = slurp(reference_map() / "map-N.jsonl");
+  BOOST_TEST(r.out == file.substr(file.find('\n') + 1));  // after the header
+}
+
 // The default map (continuation, confirmed by the exact solver) and `--exact` (the exact solver at
 // every body) agree body for body on every best integrator, permutation and label.
 BOOST_AUTO_TEST_CASE(the_exact_map_has_the_same_best_integrators) {
