@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "folder_support.hpp"
+#include "rotlie/reports/audit_claim.hpp"
 #include "rotlie/reports/audit_table.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/reports/report_csv_reader.hpp"
@@ -83,6 +84,39 @@ BOOST_AUTO_TEST_CASE(csv_reader_reads_quoted_fields) {
   write(dir / "bad.csv", "a,b\n1,2,3\n");
   BOOST_CHECK_THROW(read_csv(dir / "bad.csv"), std::runtime_error);
   fs::remove_all(dir);
+}
+
+// The claims are data: the verdict comes from the row's expectation alone, and each kind flips at
+// its bound (a measurement exactly at the bound is on the side the kind's words say).
+BOOST_AUTO_TEST_CASE(each_expectation_kind_flips_at_its_bound) {
+  const auto number = [](double x) { return measurement::of(x, ""); };
+  BOOST_TEST(meets(equal_to(12), number(12)));
+  BOOST_TEST(!meets(equal_to(12), number(13)));
+  BOOST_TEST(meets(relative_within(700, 0.2), number(840)));
+  BOOST_TEST(!meets(relative_within(700, 0.2), number(841)));
+  BOOST_TEST(meets(absolute_within(0.12, 0.05), number(0.16)));
+  BOOST_TEST(!meets(absolute_within(0.12, 0.05), number(0.18)));
+  BOOST_TEST(meets(at_most(1.05), number(1.05)));
+  BOOST_TEST(!meets(at_most(1.05), number(1.0500001)));
+  BOOST_TEST(meets(at_least(38), number(38)));
+  BOOST_TEST(!meets(at_least(38), number(37.9)));
+  BOOST_TEST(!meets(below(0.25), number(0.25)));
+  BOOST_TEST(meets(below(0.25), number(0.2499)));
+  BOOST_TEST(!meets(between_0_and(0.5), number(0)));
+  BOOST_TEST(meets(between_0_and(0.5), number(0.3)));
+  BOOST_TEST(!meets(between_0_and(0.5), number(0.5)));
+  BOOST_TEST(!meets(at_least(0.8), number(std::nan(""))));  // a NaN never holds
+  BOOST_TEST(meets(each_within(0.1), measurement::of_deviations({0.1, -0.05}, "")));
+  BOOST_TEST(!meets(each_within(0.1), measurement::of_deviations({0.1, std::nan("")}, "")));  // a missing row
+  BOOST_TEST(!meets(each_within(0.1), measurement::of_deviations({}, "")));
+  BOOST_TEST(meets(same_names({"a", "b"}), measurement::of_names({"a", "b"}, "")));
+  BOOST_TEST(!meets(same_names({"a", "b"}), measurement::of_names({"b", "a"}, "")));
+  BOOST_TEST(meets(same_name_set({"a", "b"}), measurement::of_names({"b", "a"}, "")));
+  BOOST_TEST(!meets(same_name_set({"a", "b"}), measurement::of_names({"a"}, "")));
+  BOOST_TEST(meets(names_differ(), measurement::of_names({"a", "b"}, "")));
+  BOOST_TEST(!meets(names_differ(), measurement::of_names({"a", "a"}, "")));
+  BOOST_TEST(meets(property_holds(), measurement::of_flag(true, "")));
+  BOOST_TEST(!meets(property_holds(), measurement::of_flag(false, "")));
 }
 
 BOOST_AUTO_TEST_CASE(accuracy_ratio_rows_flip_at_the_tolerance) {

@@ -13,7 +13,7 @@
 
 namespace rotlie::lie {
 
-class coefficient_polynomial {
+class coefficient_polynomial : public additive_operators<coefficient_polynomial> {
  public:
   static constexpr int max_unknowns = 4;
   using exponents = std::array<int, max_unknowns>;
@@ -59,9 +59,6 @@ class coefficient_polynomial {
   coefficient_polynomial& operator+=(const coefficient_polynomial& o);
   coefficient_polynomial& operator-=(const coefficient_polynomial& o);
   coefficient_polynomial& operator*=(const cln::cl_RA& s);
-  friend coefficient_polynomial operator+(coefficient_polynomial a, const coefficient_polynomial& b) { return a += b; }
-  friend coefficient_polynomial operator-(coefficient_polynomial a, const coefficient_polynomial& b) { return a -= b; }
-  friend coefficient_polynomial operator-(coefficient_polynomial a) { return a *= cln::cl_RA(-1); }
   friend coefficient_polynomial operator*(const coefficient_polynomial& a, const coefficient_polynomial& b);
   friend bool operator==(const coefficient_polynomial& a, const coefficient_polynomial& b);
 

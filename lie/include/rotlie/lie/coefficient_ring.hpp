@@ -25,4 +25,13 @@ struct ring_traits<double> {
   static void normalize(double&) {}
 };
 
+/// a + b, a − b and −a of a polynomial type P from its own +=, −= and *= by a rational (both
+/// polynomial types derive from it, so that they define them once).
+template <class P>
+struct additive_operators {
+  friend P operator+(P a, const P& b) { return a += b; }
+  friend P operator-(P a, const P& b) { return a -= b; }
+  friend P operator-(P a) { return a *= cln::cl_RA(-1); }
+};
+
 }  // namespace rotlie::lie

@@ -20,7 +20,7 @@
 
 namespace rotlie::lie {
 
-class multivariate_polynomial {
+class multivariate_polynomial : public additive_operators<multivariate_polynomial> {
  public:
   static constexpr int max_unknowns = 16;
   static constexpr int max_degree = 15;  ///< total degree; every exponent is then ≤ 15 too
@@ -55,9 +55,6 @@ class multivariate_polynomial {
   /// += k·o without the temporary k·o (the bracket expansion's inner step).
   multivariate_polynomial& add_multiple(const multivariate_polynomial& o, long k);
   multivariate_polynomial& operator*=(const cln::cl_RA& s);
-  friend multivariate_polynomial operator+(multivariate_polynomial a, const multivariate_polynomial& b) { return a += b; }
-  friend multivariate_polynomial operator-(multivariate_polynomial a, const multivariate_polynomial& b) { return a -= b; }
-  friend multivariate_polynomial operator-(multivariate_polynomial a) { return a *= cln::cl_RA(-1); }
   /// Throws std::overflow_error when the product's total degree would exceed max_degree.
   friend multivariate_polynomial operator*(const multivariate_polynomial& a, const multivariate_polynomial& b);
   friend bool operator==(const multivariate_polynomial& a, const multivariate_polynomial& b);

@@ -22,28 +22,10 @@ T ftm2v() {
   return T(1) / mvv2e<T>();
 }
 
-/// Boltzmann's constant, kcal/mol/K.
-template <class T>
-T boltz() {
-  return parse_scalar<T>("0.0019872067");
-}
-
-/// Coulomb's constant, kcal/mol·Å/e².
-template <class T>
-T qqr2e() {
-  return parse_scalar<T>("332.06371");
-}
-
-/// e·V/Å → kcal/mol/Å (so e·Å·V/Å = e·V → kcal/mol as well).
-template <class T>
-T qe2f() {
-  return parse_scalar<T>("23.060549");
-}
-
-/// One debye in e·Å.
-template <class T>
-T debye() {
-  return parse_scalar<T>("0.20819434");
-}
+// LAMMPS's constants of `units real`, each read from its decimal text.
+template <class T> T boltz() { return parse_scalar<T>("0.0019872067"); }  ///< Boltzmann's constant, kcal/mol/K
+template <class T> T qqr2e() { return parse_scalar<T>("332.06371"); }     ///< Coulomb's constant, kcal/mol·Å/e²
+template <class T> T qe2f() { return parse_scalar<T>("23.060549"); }      ///< e·V/Å → kcal/mol/Å (so e·V → kcal/mol)
+template <class T> T debye() { return parse_scalar<T>("0.20819434"); }    ///< one debye in e·Å
 
 }  // namespace rotlie::models::real_units

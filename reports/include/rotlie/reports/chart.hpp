@@ -6,6 +6,8 @@
 // comes back on its stdout and is written by write_file_atomically. Text inside the script
 // (titles, series names) is in single-quoted gnuplot strings, where neither backquote command
 // substitution nor macros apply, with '' for a quote and line breaks replaced by spaces.
+#include <boost/core/noncopyable.hpp>
+
 #include <cstddef>
 #include <filesystem>
 #include <optional>
@@ -57,12 +59,10 @@ struct chart_failure {
 
 /// While one exists, every chart drawn on this thread is counted and each failure recorded in
 /// it, so that the report's exit status can say that a chart is missing.
-class chart_log {
+class chart_log : boost::noncopyable {
  public:
   chart_log();
   ~chart_log();
-  chart_log(const chart_log&) = delete;
-  chart_log& operator=(const chart_log&) = delete;
   const std::vector<chart_failure>& failures() const { return failures_; }
   std::size_t charts() const { return charts_; }
 
