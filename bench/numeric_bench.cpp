@@ -22,6 +22,7 @@
 #include "rotlie/models/composition_stepper.hpp"
 #include "rotlie/models/exact_free_body.hpp"
 #include "rotlie/models/exact_free_rotation.hpp"
+#include "rotlie/models/exact_free_rotation_batch.hpp"
 #include "rotlie/schemes/quad.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 
@@ -115,6 +116,22 @@ void scheme_step(benchmark::State& state, const char* name) {
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
+// A step of an 11-stage ABC palindrome with P1's word (LV eq. 69): the cost of P1 BAC (5) for water,
+// whose coefficients (solved by the symbolic side) do not change the time of a step.
+void p1_shaped_step(benchmark::State& state) {
+  schemes::scheme_table t;
+  t.name = "P1-shaped", t.word = "ABABACABABA", t.order = 4;
+  for (const char part : t.word) t.stages.push_back({part, "", part == 'A' ? "0.16666666666666666" : part == 'B' ? "0.25" : "1"});
+  const models::composition_stepper<double> stepper(t, water);
+  auto s = start();
+  const stage_meter meter;
+  for (auto _ : state) {
+    stepper.step(s, 1e-3);
+    benchmark::DoNotOptimize(s);
+  }
+  state.counters["stages"] = meter.stages(state);
+}
+
 // d < 0: G = (1, 1, 1); otherwise G = (d, 1, d), d off the middle axis (m_c ≈ 2d²)
 void exact_flow_evaluation(benchmark::State& state, double d) {
   const models::exact_free_body<double> exact(water, start(d));
@@ -187,6 +204,28 @@ void exact_free_rotation_advance_canonical(benchmark::State& state, bool old_pat
     benchmark::DoNotOptimize(s);
   }
   state.counters["stages"] = meter.stages(state);
+}
+
+// The exact flow of N water bodies at once (advance_all: blocks of 64, vectorised across bodies,
+// exact_free_rotation_batch.hpp): canonical states advanced over t = 0.05 each call (every free
+// flight starts from a new state); counters per body, in ns and in rotation stages.
+void exact_free_rotation_batch(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  std::mt19937_64 rng(12);
+  std::normal_distribution<double> normal(0, 1);
+  std::vector<models::body_state<double>> states(n);
+  for (auto& s : states)
+    for (std::size_t k = 0; k < 3; ++k) s.G[k] = std::sqrt(water[k]) * normal(rng);
+  const models::exact_free_rotation<double> rotor(water);
+  const stage_meter meter;
+  for (auto _ : state) {
+    models::advance_all(rotor, n, [&](std::size_t i) -> models::body_state<double>& { return states[i]; }, 0.05);
+    benchmark::ClobberMemory();
+  }
+  state.counters["stages_per_body"] = meter.stages(state) / static_cast<double>(n);
+  state.counters["ns_per_body"] = benchmark::Counter(static_cast<double>(state.iterations()) * static_cast<double>(n),
+                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.SetLabel(models::batch_target());
 }
 
 // The float128 path: what an evaluation costs when the estimate asks for it (long times).
@@ -383,6 +422,8 @@ BENCHMARK_CAPTURE(exact_free_rotation_old_path, middle_axis_1e_10, 1e-10);
 BENCHMARK_CAPTURE(exact_free_rotation_advance, middle_axis_1e_10, 1e-10);
 BENCHMARK_CAPTURE(exact_free_rotation_advance_canonical, old_path, true);
 BENCHMARK_CAPTURE(exact_free_rotation_advance_canonical, advance, false);
+BENCHMARK(exact_free_rotation_batch)->Arg(1)->Arg(8)->Arg(64)->Arg(4096);
+BENCHMARK(p1_shaped_step);
 BENCHMARK(exact_part_energy_difference);
 BENCHMARK(exact_part_complete_first_kind);
 BENCHMARK(exact_part_complete_third_kind);

@@ -1,13 +1,15 @@
 # Third-party libraries, found through pkg-config (GiNaC, CLN) or their CMake packages.
 # Installed on Debian 12 by scripts/install-deps.sh.
 #
-# Numeric side (schemes/, models/): Boost headers (Math, Multiprecision float128, Odeint) and GCC's
-# libquadmath. The symbolic side, reports and the CLI add GiNaC, CLN, Eigen, nlohmann_json and CLI11;
+# Numeric side (schemes/, models/): Boost headers (Math, Multiprecision float128, Odeint), GCC's
+# libquadmath and Highway. The symbolic side, reports and the CLI add GiNaC, CLN, Eigen, nlohmann_json and CLI11;
 # a numeric-only build (ROTLIE_WITH_SYMBOLIC=OFF) never looks for them.
 include(rotlie_find_quadmath)
 if(NOT ROTLIE_QUADMATH_LINKS)
   message(FATAL_ERROR "libquadmath (GCC's __float128 library, used through Boost's float128) does not link")
 endif()
+# Highway (runtime dispatch to AVX2 or AVX-512): models_batch, the exact free flow of many bodies.
+find_package(hwy 1.0 REQUIRED)
 # Boost.Test for the tests.
 if(ROTLIE_BUILD_TESTS)
   find_package(Boost 1.74 REQUIRED COMPONENTS unit_test_framework)

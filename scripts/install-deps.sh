@@ -8,6 +8,7 @@ set -euo pipefail
 numeric=(
   g++ cmake make
   libboost-dev libboost-test-dev # Boost.Math, Multiprecision float128 (libquadmath comes with g++), Boost.Test
+  libhwy-dev                     # Highway: the exact free flow of many bodies vectorised, AVX2/AVX-512 chosen at run time
 )
 symbolic=(
   pkg-config libginac-dev libcln-dev # lie/, bch/, solver/

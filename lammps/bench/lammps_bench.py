@@ -40,9 +40,10 @@ INTEGRATORS = {
     "rigid/nve/small": ("rigid/nve/small", "", 1),
     "rigid/sier2/small": ("rigid/sier2/small", "rotor exact", 1),
     "rigid/sier4/small": ("rigid/sier4/small", "rotor exact", 4),
+    "rigid/sier2/small ABCBA2": ("rigid/sier2/small", "rotor ABCBA2:ABC", 1),  # a table rotor: the stages alone
 }
 # the table's step: the same h/f = 2 fs for all three (equal force evaluations per simulated ps)
-TABLE_H = {"rigid/nve/small": 2.0, "rigid/sier2/small": 2.0, "rigid/sier4/small": 8.0}
+TABLE_H = {"rigid/nve/small": 2.0, "rigid/sier2/small": 2.0, "rigid/sier4/small": 8.0, "rigid/sier2/small ABCBA2": 2.0}
 REPLICAS = {512: (1, 1, 1), 4096: (2, 2, 2), 32768: (4, 4, 4)}
 
 
@@ -165,7 +166,10 @@ def measure(runner, data, molecules, ranks, integrator, h, timed_evaluations, re
         pe = [v for _, v, _ in energy]
         etotal = [e for _, _, e in energy]
         row.update({"status": "ok", "wall_ms_per_step": wall_ms, "wall_ms_per_force": wall_ms / f,
-                    "modify_ms_per_step": 1000 * timed["modify"] / tsteps, "cpu_use_percent": timed["cpu_use"],
+                    "modify_ms_per_step": 1000 * timed["modify"] / tsteps,
+                    # the fixes' own time per molecule, each rank's share (CPU µs per molecule and step)
+                    "modify_us_per_molecule": 1e6 * timed["modify"] / tsteps * ranks / molecules,
+                    "cpu_use_percent": timed["cpu_use"],
                     "cpu_ms_per_step": cpu_ms, "cpu_ms_per_ps": cpu_ms * 1000 / h,
                     "std_etotal": std(etotal), "std_pe": std(pe),
                     "dE_over_dV_percent": 100 * std(etotal) / std(pe) if std(pe) > 0 else math.nan,
@@ -211,6 +215,26 @@ def goals(rows):
                             "value": cpu, "alternative": whole, "met": cpu <= 1.05,
                             "note": "value: CPU time (wall x LAMMPS's CPU use x ranks, robust to other load); alternative: "
                                     "wall time; by the fixes' own Modify time: %.3f" % own})
+    # the exact rotor's own time against NO_SQUISH's (issue 34: fix time ≤ 1.2, SIER2's whole step ≤ 1.02), and
+    # the ABCBA2 table rotor's beside them
+    for molecules in sorted({r["molecules"] for r in ok}):
+        for ranks in sorted({r["ranks"] for r in ok}):
+            nve = find("table", molecules, ranks, "rigid/nve/small")
+            for integrator, goal in (("rigid/sier2/small", 1.2), ("rigid/sier2/small ABCBA2", None)):
+                other = find("table", molecules, ranks, integrator)
+                if not (nve and other and nve["modify_ms_per_step"] > 0):
+                    continue
+                ratio = other["modify_ms_per_step"] / nve["modify_ms_per_step"]
+                out.append({"goal": "%s fix (Modify) time / rigid/nve/small's%s" % (integrator, " <= %g" % goal if goal else " (measured)"),
+                            "molecules": molecules, "ranks": ranks, "value": ratio,
+                            "alternative": other["modify_us_per_molecule"], "met": ratio <= goal if goal else "n/a",
+                            "note": "alternative: its CPU µs per molecule and step (rigid/nve/small: %.3f)" % nve["modify_us_per_molecule"]})
+            sier2 = find("table", molecules, ranks, "rigid/sier2/small")
+            if nve and sier2:
+                whole = (nve["wall_ms_per_step"] - nve["modify_ms_per_step"] + sier2["modify_ms_per_step"]) / nve["wall_ms_per_step"]
+                out.append({"goal": "SIER2 whole step / rigid/nve/small's <= 1.02", "molecules": molecules, "ranks": ranks,
+                            "value": whole, "alternative": sier2["wall_ms_per_step"] / nve["wall_ms_per_step"], "met": whole <= 1.02,
+                            "note": "value: the same forces, the step differing by the fixes' own time; alternative: the wall times' ratio"})
     # SIER4 against rigid/nve/small at equal CPU per ps (goal ≥ 10): each rigid/nve/small point against SIER4's
     # broken line in log-log, within one force field (the chart's, and each of --floor's)
     groups = {}
@@ -280,7 +304,7 @@ def write_chart(path, rows):
         print("lammps_bench: matplotlib is missing: no chart", file=sys.stderr)
         return
     fig, ax = plt.subplots(figsize=(7, 5))
-    for integrator, marker in zip(INTEGRATORS, "os^"):
+    for integrator, marker in zip(INTEGRATORS, "os^v"):
         pts = sorted((r["cpu_ms_per_ps"], r["dE_over_dV_percent"], r["h_fs"]) for r in rows
                      if r["purpose"] == "chart" and r["integrator"] == integrator and r["status"] == "ok")
         if not pts:

@@ -10,6 +10,7 @@
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/lie/rigid_body.hpp"
 #include "rotlie/models/closed_form_rotors.hpp"
+#include "rotlie/models/exact_free_rotation_batch.hpp"
 #include "rotlie/models/table_rotor.hpp"
 #include "rotlie/runs/md_methods.hpp"
 #include "rotlie/schemes/same_body.hpp"
@@ -23,6 +24,9 @@ class rotor_of final : public body_rotor {
  public:
   explicit rotor_of(Rotor r) : r_(std::move(r)) {}
   void advance(models::body_state<double>& s, double t) const override { r_.advance(s, t); }
+  void advance_all(models::body_state<double>* s, std::size_t n, double t) const override {
+    models::advance_bodies(r_, n, [s](std::size_t i) -> models::body_state<double>& { return s[i]; }, t);
+  }
 
  private:
   Rotor r_;

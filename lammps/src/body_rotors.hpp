@@ -32,6 +32,8 @@ class body_rotor {
  public:
   virtual ~body_rotor() = default;
   virtual void advance(models::body_state<double>& s, double t) const = 0;
+  /// s[0 … n−1] ← each advanced over t: the exact rotor's states at once (vectorised), a table's one by one.
+  virtual void advance_all(models::body_state<double>* s, std::size_t n, double t) const = 0;
 };
 
 /// What `rotor VALUE` asks for.

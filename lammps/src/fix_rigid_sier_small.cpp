@@ -250,6 +250,11 @@ bool steady(const double* L, const double* const e[3], const double* inertia, do
 
 void FixRigidSierSmall::free_flight(double c) {
   const double t = c * update->dt;
+  // Linear and steady bodies turn here; the others are gathered by rotor (a counting sort over the
+  // few shapes) and each rotor advances its bodies at once: the exact rotor vectorised across them.
+  flight_rotors_.clear();
+  flight_kind_.assign(static_cast<std::size_t>(nlocal_body), -1);
+  std::vector<std::size_t> count;
   for (int ibody = 0; ibody < nlocal_body; ++ibody) {
     Body* b = &body[ibody];
     for (int i = 0; i < 3; ++i) b->xcm[i] += t * b->vcm[i];
@@ -262,15 +267,46 @@ void FixRigidSierSmall::free_flight(double c) {
     } else if (steady(b->angmom, axes, b->inertia, w)) {
       rotate_about(w, t, b->ex_space, b->ey_space, b->ez_space);
     } else {
-      models::body_state<double> s;
-      to_rotlie(b->ex_space, b->ey_space, b->ez_space, b->angmom, s);
+      const body_rotor* r = nullptr;
       try {
-        rotors_->rotor_for(rotlie_moments(b->inertia), atom->tag[b->ilocal]).advance(s, t);
+        r = &rotors_->rotor_for(rotlie_moments(b->inertia), atom->tag[b->ilocal]);
       } catch (const std::exception& e) {
         error->one(FLERR, "Fix " + std::string(style) + ": " + e.what());
       }
-      from_rotlie(s, b->ex_space, b->ey_space, b->ez_space, b->angmom);
+      const auto known = std::find(flight_rotors_.begin(), flight_rotors_.end(), r);
+      const auto kind = static_cast<std::size_t>(known - flight_rotors_.begin());
+      if (known == flight_rotors_.end()) flight_rotors_.push_back(r), count.push_back(0);
+      flight_kind_[static_cast<std::size_t>(ibody)] = static_cast<int>(kind);
+      ++count[kind];
     }
+  }
+  // the bodies of each rotor contiguous: first[k] is where kind k starts
+  std::vector<std::size_t> first(count.size() + 1, 0);
+  for (std::size_t k = 0; k < count.size(); ++k) first[k + 1] = first[k] + count[k];
+  flight_states_.resize(first.back());
+  flight_order_.resize(first.back());
+  auto next = first;
+  for (int ibody = 0; ibody < nlocal_body; ++ibody) {
+    const int kind = flight_kind_[static_cast<std::size_t>(ibody)];
+    if (kind < 0) continue;
+    const std::size_t slot = next[static_cast<std::size_t>(kind)]++;
+    Body* b = &body[ibody];
+    to_rotlie(b->ex_space, b->ey_space, b->ez_space, b->angmom, flight_states_[slot]);
+    flight_order_[slot] = ibody;
+  }
+  for (std::size_t k = 0; k < flight_rotors_.size(); ++k) {
+    try {
+      flight_rotors_[k]->advance_all(flight_states_.data() + first[k], count[k], t);
+    } catch (const std::exception& e) {
+      error->one(FLERR, "Fix " + std::string(style) + ": " + e.what());
+    }
+  }
+  for (std::size_t slot = 0; slot < flight_order_.size(); ++slot) {
+    Body* b = &body[flight_order_[slot]];
+    from_rotlie(flight_states_[slot], b->ex_space, b->ey_space, b->ez_space, b->angmom);
+  }
+  for (int ibody = 0; ibody < nlocal_body; ++ibody) {
+    Body* b = &body[ibody];
     // the attitude as LAMMPS keeps it: a unit quaternion, the axes derived from it
     MathExtra::exyz_to_q(b->ex_space, b->ey_space, b->ez_space, b->quat);
     MathExtra::q_to_exyz(b->quat, b->ex_space, b->ey_space, b->ez_space);

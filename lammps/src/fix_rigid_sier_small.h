@@ -49,6 +49,11 @@ class FixRigidSierSmall : public LAMMPS_NS::FixRigidSmall {
   std::vector<double> coefficients_;  ///< the TV table's stage coefficients, V first
   std::string tv_table_;
   std::unique_ptr<body_rotors> rotors_;
+  // free_flight's scratch (kept between calls: no allocation once the rank's body count settles)
+  std::vector<const body_rotor*> flight_rotors_;  ///< the rotors of this flight's bodies, each once
+  std::vector<int> flight_kind_;                  ///< per local body: its rotor's index, −1 when turned directly
+  std::vector<models::body_state<double>> flight_states_;  ///< the gathered states, grouped by rotor
+  std::vector<int> flight_order_;                 ///< the local body of each gathered state
   bool shapes_resolved_ = false;
 };
 

@@ -1,5 +1,6 @@
-// The free rigid body from Python, vectorised over N states: exact_flow (the closed form of
-// models/exact_free_body.hpp) and integrate (a scheme table on models/composition_stepper.hpp),
+// The free rigid body from Python, vectorised over N states: exact_flow (the closed form as SIER's
+// free flights take it, models/exact_free_rotation.hpp, in double many rows at once through
+// exact_free_rotation_batch.hpp) and integrate (a scheme table on models/composition_stepper.hpp),
 // each in the scalar asked (double, long double, float128) and rounded once to float64 at the end;
 // order (runs::order_run, LV section 4.1) as the JSON of `rotlie order`. The loops run with the GIL
 // released and poll for Ctrl-C; a row's result does not depend on the other rows.
@@ -12,12 +13,14 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <type_traits>
 
 #include "bindings.hpp"
 #include "interruption.hpp"
 #include "rotlie/lie/rigid_body.hpp"
 #include "rotlie/models/composition_stepper.hpp"
 #include "rotlie/models/exact_free_body.hpp"
+#include "rotlie/models/exact_free_rotation_batch.hpp"
 #include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/runs/free_body_io.hpp"
 #include "rotlie/runs/body_names.hpp"
@@ -154,13 +157,35 @@ py::tuple exact_flow(const std::string& body, const rows& G0, const rows& Q0, co
   run_cancellable([&](const cancellation& cancel) {
     with_scalar(scalar, [&](auto zero) {
       using T = decltype(zero);
-      const auto I = models::moments_from_text<T>(inertia);
-      for (py::ssize_t row = 0; row < in.n; ++row) {
-        if (row % poll_every == 0 && cancel.requested()) return;
-        const models::exact_free_body<T> exact(I, state_of<T>(in, row));
-        const auto r = exact.evaluate(T(times[row]));
-        store(r.state, row, g, q);
-        e[row] = static_cast<double>(r.error_estimate);
+      // the step of SIER's free flights (exact_free_body where it declines); in double, blocks of rows
+      // vectorised across them (exact_free_rotation_batch.hpp)
+      const models::exact_free_rotation<T> rotor(models::moments_from_text<T>(inertia));
+      if constexpr (std::is_same_v<T, double>) {
+        models::free_body_block block;
+        for (py::ssize_t first = 0; first < in.n; first += static_cast<py::ssize_t>(block.capacity)) {
+          if (cancel.requested()) return;
+          block.n = static_cast<std::size_t>(std::min<py::ssize_t>(static_cast<py::ssize_t>(block.capacity), in.n - first));
+          for (std::size_t i = 0; i < (block.n + 7) / 8 * 8 && i < block.capacity; ++i) {
+            const py::ssize_t row = first + static_cast<py::ssize_t>(i < block.n ? i : 0);
+            for (std::size_t k = 0; k < 3; ++k) block.G[k][i] = in.G[3 * row + static_cast<py::ssize_t>(k)];
+            for (std::size_t j = 0; j < 9; ++j) block.Q[j][i] = in.Q[9 * row + static_cast<py::ssize_t>(j)];
+            block.t[i] = times[row];
+          }
+          models::advance_block(rotor, block);
+          for (std::size_t i = 0; i < block.n; ++i) {
+            const py::ssize_t row = first + static_cast<py::ssize_t>(i);
+            for (std::size_t k = 0; k < 3; ++k) g[3 * row + static_cast<py::ssize_t>(k)] = block.G[k][i];
+            for (std::size_t j = 0; j < 9; ++j) q[9 * row + static_cast<py::ssize_t>(j)] = block.Q[j][i];
+            e[row] = block.estimate[i];
+          }
+        }
+      } else {
+        for (py::ssize_t row = 0; row < in.n; ++row) {
+          if (row % poll_every == 0 && cancel.requested()) return;
+          auto s = state_of<T>(in, row);
+          e[row] = static_cast<double>(rotor.advance(s, T(times[row])));
+          store(s, row, g, q);
+        }
       }
     });
   });

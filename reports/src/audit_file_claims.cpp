@@ -294,7 +294,7 @@ measurement best_n_curves(report_files& f, const claim& c) {
   const auto* d = f.chart(c.args[0]);
   if (!d) return measurement::absent(c.args[0] + ".csv missing");
   const auto fits = n_fits(*d);
-  const auto names = leading_names(fits, c, [](const auto& f) { return f.first; });
+  const auto names = leading_names(fits, c, [](const auto& fitted) { return fitted.first; });
   std::string v = "ranked by error/(h/C)^4: ";
   for (std::size_t k = 0; k < std::min<std::size_t>(3, fits.size()); ++k)
     v += (k ? ", " : "") + fits[k].first + " (" + runs::significant_text(fits[k].second.constant, 3) + ")";

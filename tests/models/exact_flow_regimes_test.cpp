@@ -19,6 +19,7 @@
 #include <vector>
 #include <stdexcept>
 
+#include "free_body_samples.hpp"
 #include "model_support.hpp"
 #include "random_seed.hpp"
 #include "rotlie/models/exact_free_body.hpp"
@@ -39,15 +40,7 @@ vec3<T> to(const vec3<double>& v) {
   return {T(v[0]), T(v[1]), T(v[2])};
 }
 
-// max abs entry of Q and of G/|G|
-template <class A, class B>
-double entry_error(const models::body_state<A>& a, const models::body_state<B>& b, double g_scale) {
-  double e = 0;
-  auto take = [&e](const quad& d) { e = std::isnan(static_cast<double>(d)) ? HUGE_VAL : std::max(e, std::abs(static_cast<double>(d))); };
-  for (std::size_t i = 0; i < 9; ++i) take(quad(a.Q.a[i]) - quad(b.Q.a[i]));
-  for (std::size_t i = 0; i < 3; ++i) take((quad(a.G[i]) - quad(b.G[i])) / quad(g_scale));
-  return e;
-}
+using test::entry_error;  // max abs entry of Q and of G/|G|
 
 std::string sci(double x) {
   std::ostringstream o;

@@ -8,6 +8,7 @@
 #include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -88,18 +89,28 @@ jacobi_triple<T> jacobi_functions(const T& u, const T& m, const T& mc) {
 /// (A&S 16.13). No inverse sines and one sin, cos in all: the cheap form for the short arguments of a
 /// step; every denominator is 1 + √μ sn² with √μ ≤ 0.18, so nothing cancels. Relative error a few ε.
 template <class T>
-jacobi_triple<T> jacobi_functions_gauss(const T& u, const T& m, const T& mc) {
+jacobi_triple<T> jacobi_functions_gauss(T u, T m, T mc) {
   using std::cos;
   using std::sin;
   using std::sqrt;
-  if (!(m > sqrt(std::numeric_limits<T>::epsilon()) / 8)) {
-    const T s = sin(u), c = cos(u), q = m / 4 * (u - s * c);
-    return {s - q * c, c + q * s, 1 - m / 2 * s * s};
+  // the descent, one level at a time (each: √μ, then u/(1 + √μ) at parameter μ), the ascent backwards
+  constexpr int max_levels = 16;  // four levels from m = 3/4 in double, five in float128
+  std::array<T, max_levels> root_mu{};
+  int levels = 0;
+  const T threshold = sqrt(std::numeric_limits<T>::epsilon()) / 8;
+  while (m > threshold && levels < max_levels) {
+    const T kc = sqrt(mc), k1_2 = (1 + kc) * (1 + kc), r = m / k1_2;
+    root_mu[static_cast<std::size_t>(levels++)] = r;
+    u = u / (1 + r), mc = 4 * kc / k1_2, m = r * r;
   }
-  const T kc = sqrt(mc), root_mu = m / ((1 + kc) * (1 + kc));
-  const auto j = jacobi_functions_gauss(u / (1 + root_mu), root_mu * root_mu, 4 * kc / ((1 + kc) * (1 + kc)));
-  const T s2 = root_mu * j.sn * j.sn, r = 1 / (1 + s2);
-  return {(1 + root_mu) * j.sn * r, j.cn * j.dn * r, (1 - s2) * r};
+  const T s = sin(u), c = cos(u), q = m / 4 * (u - s * c);
+  jacobi_triple<T> j{s - q * c, c + q * s, 1 - m / 2 * s * s};
+  while (levels > 0) {
+    const T r = root_mu[static_cast<std::size_t>(--levels)];
+    const T s2 = r * j.sn * j.sn, inv = 1 / (1 + s2);
+    j = {(1 + r) * j.sn * inv, j.cn * j.dn * inv, (1 - s2) * inv};
+  }
+  return j;
 }
 
 /// F(am u | m) = u recovered from sn, cn, dn with |am u| ≤ π/2 (cn ≥ 0): sn R_F(cn², dn², 1).
@@ -114,6 +125,87 @@ template <class T>
 T third_minus_first(const jacobi_triple<T>& j, const T& n, const T& one_minus_n_sn2) {
   if (n == 0 || j.sn == 0) return T(0);
   return n / 3 * j.sn * j.sn * j.sn * boost::math::ellint_rj(j.cn * j.cn, j.dn * j.dn, T(1), one_minus_n_sn2, policy());
+}
+
+/// Carlson's bound factor (r/4)^(−1/6) for the relative error r = ε of T: the duplications of R_J
+/// stop when 4^−m times it times the spread of the arguments falls below A_m (Carlson 1995, eq. 2.21).
+template <class T>
+const T& carlson_spread_factor() {
+  using std::pow;
+  static const T factor = pow(std::numeric_limits<T>::epsilon() / 4, T(-1) / 6);
+  return factor;
+}
+inline constexpr int carlson_max_duplications = 60;  // 4^60 exceeds any spread of finite arguments over ε
+
+/// Where carlson_rc_one's series serves: |e| < ε^(1/5)/16 (4.6e-5 in double), where the first term
+/// left out, e⁵/11, is below 10⁻⁷ ε.
+template <class T>
+const T& carlson_rc_series_bound() {
+  using std::pow;
+  static const T bound = pow(std::numeric_limits<T>::epsilon(), T(1) / 5) / 16;
+  return bound;
+}
+
+/// The coefficients of R_J's series to the fifth order (Carlson 1995, eq. 2.19): 3/14, 1/6, 9/88,
+/// 3/22, 9/52, 3/26, rounded once in T.
+template <class T>
+struct carlson_rj_series {
+  T e2 = T(3) / 14, e3 = T(1) / 6, e22 = T(9) / 88, e4 = T(3) / 22, e23 = T(9) / 52, e5 = T(3) / 26;
+};
+
+/// R_C(1, 1 + e) = atan(√e)/√e (e > 0), atanh(√−e)/√−e (e < 0); for small |e| its series
+/// 1 − e/3 + e²/5 − e³/7 + e⁴/9 (carlson_rc_series_bound), which the duplications of a step's R_J
+/// almost always meet.
+template <class T>
+T carlson_rc_one(const T& e) {
+  using std::abs;
+  using std::atan;
+  using std::atanh;
+  using std::sqrt;
+  if (abs(e) < carlson_rc_series_bound<T>()) return 1 - e * (T(1) / 3 - e * (T(1) / 5 - e * (T(1) / 7 - e * (T(1) / 9))));
+  const T root_e = sqrt(abs(e));
+  return e > 0 ? atan(root_e) / root_e : atanh(root_e) / root_e;
+}
+
+/// Carlson's R_J(x, y, z, p) for x, y, z ≥ 0 (at most one of them 0) and p > 0, by duplication and
+/// the series to the fifth order (Carlson 1995, Numer. Algorithms 10, 13, eqs. 2.17–2.21; DLMF
+/// 19.36.i), R_C(1, 1 + e) = atan(√e)/√e or atanh(√−e)/√−e. Written out (not Boost's) so that the
+/// vectorised exact flow (models/src/exact_free_rotation_batch.cpp) can follow it line by line.
+template <class T>
+T carlson_rj(T x, T y, T z, T p) {
+  using std::abs;
+  using std::atan;
+  using std::atanh;
+  using std::sqrt;
+  const T A0 = (x + y + z + 2 * p) / 5;
+  const T delta = (p - x) * (p - y) * (p - z);
+  const T dx = A0 - x, dy = A0 - y, dz = A0 - z;  // X, Y, Z below are these over 4^m A_m
+  const T Q = carlson_spread_factor<T>() * std::max(std::max(abs(dx), abs(dy)), std::max(abs(dz), abs(A0 - p)));
+  T A = A0, fac = 1, sum = 0;
+  for (int k = 0; k < carlson_max_duplications && fac * Q >= abs(A); ++k) {
+    const T sx = sqrt(x), sy = sqrt(y), sz = sqrt(z), sp = sqrt(p);
+    const T lambda = sx * sy + sx * sz + sy * sz;
+    const T dm = (sp + sx) * (sp + sy) * (sp + sz);
+    const T em = fac * fac * fac * delta / (dm * dm);
+    const T rc = carlson_rc_one(em);
+    sum = sum + fac * rc / dm;
+    A = (A + lambda) * T(0.25), x = (x + lambda) * T(0.25), y = (y + lambda) * T(0.25), z = (z + lambda) * T(0.25);
+    p = (p + lambda) * T(0.25), fac = fac * T(0.25);
+  }
+  const T scale = fac / A;
+  const T X = dx * scale, Y = dy * scale, Z = dz * scale, P = -(X + Y + Z) * T(0.5);
+  const T XYZ = X * Y * Z, P2 = P * P, P3 = P2 * P;
+  const T E2 = X * Y + X * Z + Y * Z - 3 * P2, E3 = XYZ + 2 * E2 * P + 4 * P3, E4 = (2 * XYZ + E2 * P + 3 * P3) * P, E5 = XYZ * P2;
+  const carlson_rj_series<T> c;
+  const T series = 1 - c.e2 * E2 + c.e3 * E3 + c.e22 * (E2 * E2) - c.e4 * E4 - c.e23 * (E2 * E3) + c.e5 * E5;
+  return fac / (A * sqrt(A)) * series + 6 * sum;
+}
+
+/// third_minus_first with carlson_rj: the step's form (the vectorised step follows it line by line).
+template <class T>
+T third_minus_first_carlson(const jacobi_triple<T>& j, const T& n, const T& one_minus_n_sn2) {
+  if (n == 0 || j.sn == 0) return T(0);
+  return n / 3 * j.sn * j.sn * j.sn * carlson_rj(j.cn * j.cn, j.dn * j.dn, T(1), one_minus_n_sn2);
 }
 
 /// sn, cn, dn of u + v from those of u and of v (A&S 16.17.1–3), the denominator 1 − m sn²u sn²v

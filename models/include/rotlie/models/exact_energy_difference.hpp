@@ -78,7 +78,7 @@ void add_exact_product(exact_sum<S>& sum, const S& a, const S& b, const S& c, co
 
 // a·b·c·(d − e) in double-S: hi + lo with |error| ≤ ~6ε² |a b c (d − e)|, without branches
 template <class S>
-std::pair<S, S> product_pair(const S& a, const S& b, const S& c, const S& d, const S& e) {
+[[gnu::always_inline]] inline std::pair<S, S> product_pair(const S& a, const S& b, const S& c, const S& d, const S& e) {
   using std::fma;
   const S p = a * b, q = fma(a, b, -p);
   const S dh = d - e, dz = dh - d, dl = (d - (dh - dz)) + (-e - dz);

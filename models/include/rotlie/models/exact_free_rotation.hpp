@@ -16,9 +16,12 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <string_view>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "rotlie/models/complementary_elliptic.hpp"
@@ -29,24 +32,75 @@ namespace rotlie::models {
 
 namespace detail {
 
+/// ilogb of a positive finite x (in double read from its bits: −1023 for a subnormal, which every
+/// caller refuses as it refuses ilogb's smaller value).
+template <class S>
+int binary_exponent(const S& x) {
+  if constexpr (std::is_same_v<S, double>) {
+    return static_cast<int>(std::bit_cast<std::uint64_t>(x) >> 52) - 1023;
+  } else {
+    using std::ilogb;
+    return static_cast<int>(ilogb(x));
+  }
+}
+
+/// 2^e for e within the normal exponents of S (in double built from its bits).
+template <class S>
+S power_of_two(int e) {
+  if constexpr (std::is_same_v<S, double>) {
+    return std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52);
+  } else {
+    using std::ldexp;
+    return ldexp(S(1), e);
+  }
+}
+
 /// The body's constants for a step of the closed form, and the step in the common regime.
 template <class S>
 class free_flight_step {
  public:
+  /// A working frame of free_body_motion (x, y, z = the body axes in `axis`, signed to a proper
+  /// rotation) with the constants of the closed form in it.
+  struct frame_constants {
+    std::array<std::size_t, 3> axis{};  // body axis of the working x, y, z
+    vec3<S> sign{};                     // W(r, axis[r]): the working frame is a proper rotation
+    vec3<S> Iw{}, to_x{}, to_z{};       // moments; (I_i − I_x)/I_i, (I_z − I_i)/I_i
+    S dzx = 0, dzy = 0, dyx = 0, n = 0, amplification = 1;
+    S x_amplitude = 0, y_amplitude = 0, z_amplitude = 0, wp_sign = 1, wp_square = 0, psi_factor = 0, rate_factor = 0;
+    bool small_n = true, usable = false;
+  };
+
+  /// What depends on the body alone: the moments scaled by 2^−eI to O(1), the order of the axes,
+  /// and the two working frames (D_y ≥ 0: about the largest axis; D_y < 0: about the smallest).
+  /// Plain data, read by the vectorised step of many bodies (exact_free_rotation_batch.hpp).
+  struct body_constants {
+    int eI = 0;
+    vec3<S> I{};
+    S Imin = 0;
+    std::array<int, 3> order{};
+    std::array<frame_constants, 2> frames{};
+    bool spherical = false;
+  };
+
+  /// The ε-multiple of an evaluation's phase that estimates its error (exact_free_body's).
+  static constexpr double estimate_factor = exact_free_body<S>::estimate_factor;
+
   explicit free_flight_step(const vec3<S>& I) {
     using std::ilogb;
     using std::ldexp;
-    eI_ = static_cast<int>(ilogb(std::max({I[0], I[1], I[2]})));  // I scaled to O(1) as exact_free_body does
-    for (std::size_t i = 0; i < 3; ++i) I_[i] = ldexp(I[i], -eI_);
+    c_.eI = static_cast<int>(ilogb(std::max({I[0], I[1], I[2]})));  // I scaled to O(1) as exact_free_body does
+    for (std::size_t i = 0; i < 3; ++i) c_.I[i] = ldexp(I[i], -c_.eI);
     std::array<int, 3> order{0, 1, 2};
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return I_[idx(a)] < I_[idx(b)]; });
-    order_ = order;
-    spherical_ = !(I_[idx(order[0])] < I_[idx(order[2])]);
-    Imin_ = I_[idx(order[0])];
-    frames_[0] = make_frame(order);  // D_y ≥ 0: the momentum circulates about the largest axis
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return c_.I[idx(a)] < c_.I[idx(b)]; });
+    c_.order = order;
+    c_.spherical = !(c_.I[idx(order[0])] < c_.I[idx(order[2])]);
+    c_.Imin = c_.I[idx(order[0])];
+    c_.frames[0] = make_frame(order);  // D_y ≥ 0: the momentum circulates about the largest axis
     std::swap(order[0], order[2]);
-    frames_[1] = make_frame(order);  // D_y < 0: about the smallest
+    c_.frames[1] = make_frame(order);  // D_y < 0: about the smallest
   }
+
+  const body_constants& constants() const { return c_; }
 
   /// s ← the motion from s over time t and `estimate` its error, when the state is in the common
   /// regime and the estimate is within `accuracy`; otherwise false and s untouched.
@@ -57,7 +111,7 @@ class free_flight_step {
     if (!prepare(s, p) || !phase(p, t, v)) return false;
     const auto [at_v, at_u] = functions_at(p, v);
     const frame_constants& f = *p.f;
-    const S D_v = elliptic::third_minus_first(at_v, f.n, 1 - f.n * at_v.sn * at_v.sn);  // odd in v
+    const S D_v = elliptic::third_minus_first_carlson(at_v, f.n, 1 - f.n * at_v.sn * at_v.sn);  // odd in v
     const S D_sum = elliptic::third_kind_sum_term(p.at_u0, at_v, at_u, f.n, p.m);
     // ψ = (L/I_x) t + ψ_s [D(u) − D(u₀)] when |n| ≤ 1, else (L/I_z) t + ψ_s [Π(u) − Π(u₀)] (free_body_motion)
     const S linear = p.length * f.rate_factor * scaled_time(p, t);
@@ -95,11 +149,8 @@ class free_flight_step {
   }
 
  private:
-  static constexpr double estimate_factor = exact_free_body<S>::estimate_factor;
   // scalings beyond 2^±max_scaling (where 2^e itself may not be a normal number of S): exact_free_body
   static constexpr int max_scaling = std::numeric_limits<S>::max_exponent - 8;
-
-  struct frame_constants;
 
   // What a state fixes for every time: the working frame, the momentum there, the amplitudes, the
   // parameter and the Jacobi functions at the initial phase u₀.
@@ -113,11 +164,9 @@ class free_flight_step {
   // The state's part of a step; false in the regimes exact_free_body takes.
   bool prepare(const body_state<S>& s, momentum_start& p) const {
     using std::abs;
-    using std::ilogb;
     using std::isfinite;
-    using std::ldexp;
     using std::sqrt;
-    if (spherical_) return false;
+    if (c_.spherical) return false;
     S gmax = 0;
     for (const S& g : s.G) {
       if (!isfinite(g)) return false;
@@ -127,14 +176,14 @@ class free_flight_step {
       if (!isfinite(q)) return false;
     if (gmax == 0) return false;
     // |G| to O(1) by a power of two (exact), as exact_free_body does; a product by 2^±e rounds as ldexp
-    const int eG = static_cast<int>(ilogb(gmax));
+    const int eG = binary_exponent(gmax);
     if (eG < -max_scaling || eG > max_scaling) return false;
-    const S down = ldexp(S(1), -eG);
-    p.up = ldexp(S(1), eG);
+    const S down = power_of_two<S>(-eG);
+    p.up = power_of_two<S>(eG);
     const vec3<S> G{s.G[0] * down, s.G[1] * down, s.G[2] * down};
     bool Dy_inexact = false;
-    const S Dy = middle_energy_difference<S>(I_, G, idx(order_[0]), idx(order_[1]), idx(order_[2]), Dy_inexact);
-    const frame_constants& f = frames_[Dy < 0 ? 1 : 0];
+    const S Dy = middle_energy_difference<S>(c_.I, G, idx(c_.order[0]), idx(c_.order[1]), idx(c_.order[2]), Dy_inexact);
+    const frame_constants& f = c_.frames[Dy < 0 ? 1 : 0];
     if (Dy_inexact || !f.usable) return false;
     p.f = &f;
     vec3<S>& L = p.L;
@@ -163,9 +212,9 @@ class free_flight_step {
     const S big = std::max(abs(sn0), abs(cn0));
     if (!(big > 0) || !(p.wp != 0) || !isfinite(p.psi_scale)) return false;
     // the time in the scaled units; far below the 2^60 rad limit of exact_free_body (which refuses beyond)
-    const int e_time = eG - eI_;
+    const int e_time = eG - c_.eI;
     if (e_time < -max_scaling || e_time > max_scaling) return false;
-    p.time_scale = ldexp(S(1), e_time);
+    p.time_scale = power_of_two<S>(e_time);
     sn0 /= big, cn0 /= big;
     const S norm = sqrt(sn0 * sn0 + cn0 * cn0);
     sn0 /= norm, cn0 /= norm;
@@ -182,7 +231,7 @@ class free_flight_step {
     if (!isfinite(t)) return false;
     const S tau = scaled_time(p, t);
     v = p.wp * tau;
-    return abs(tau) * p.length <= S(576460752303423488.0) * Imin_ && abs(v) <= boost::math::constants::half_pi<S>() / 2;
+    return abs(tau) * p.length <= S(576460752303423488.0) * c_.Imin && abs(v) <= boost::math::constants::half_pi<S>() / 2;
   }
 
   // sn cn dn at v (|v| ≤ π/4 ≤ K/2: no reduction) and, by the addition theorems, at u₀ + v
@@ -202,15 +251,6 @@ class free_flight_step {
     for (std::size_t k = 0; k < 3; ++k) G[p.f->axis[k]] = p.f->sign[k] * L1[k] * p.up;
   }
 
-  struct frame_constants {
-    std::array<std::size_t, 3> axis{};  // body axis of the working x, y, z
-    vec3<S> sign{};                     // W(r, axis[r]): the working frame is a proper rotation
-    vec3<S> Iw{}, to_x{}, to_z{};       // moments; (I_i − I_x)/I_i, (I_z − I_i)/I_i
-    S dzx = 0, dzy = 0, dyx = 0, n = 0, amplification = 1;
-    S x_amplitude = 0, y_amplitude = 0, z_amplitude = 0, wp_sign = 1, wp_square = 0, psi_factor = 0, rate_factor = 0;
-    bool small_n = true, usable = false;
-  };
-
   static std::size_t idx(int i) { return static_cast<std::size_t>(i); }
 
   // the working frame of free_body_motion for this order of the axes, with its constants
@@ -224,12 +264,12 @@ class free_flight_step {
     for (std::size_t r = 0; r < 3; ++r) {
       f.axis[r] = idx(order[r]);
       f.sign[r] = r == 1 && det < 0 ? S(-1) : S(1);
-      f.Iw[r] = I_[f.axis[r]];
+      f.Iw[r] = c_.I[f.axis[r]];
     }
     const S Ix = f.Iw[0], Iy = f.Iw[1], Iz = f.Iw[2];
     f.dzx = Iz - Ix, f.dzy = Iz - Iy, f.dyx = Iy - Ix;
     for (std::size_t i = 0; i < 3; ++i) f.to_x[i] = (f.Iw[i] - Ix) / f.Iw[i], f.to_z[i] = (Iz - f.Iw[i]) / f.Iw[i];
-    f.usable = !spherical_ && f.dzy != 0;  // I_y = I_z: the circulation about z is degenerate
+    f.usable = !c_.spherical && f.dzy != 0;  // I_y = I_z: the circulation about z is degenerate
     if (!f.usable) return f;
     f.x_amplitude = Ix / f.dzx, f.y_amplitude = Iy / f.dzy, f.z_amplitude = Iz / f.dzx;
     f.wp_sign = f.dzy < 0 ? S(-1) : S(1);
@@ -271,12 +311,7 @@ class free_flight_step {
     Q = Q * body;
   }
 
-  int eI_ = 0;
-  vec3<S> I_{};
-  S Imin_ = 0;
-  std::array<int, 3> order_{};
-  std::array<frame_constants, 2> frames_{};
-  bool spherical_ = false;
+  body_constants c_;
 };
 
 }  // namespace detail
@@ -290,6 +325,9 @@ class exact_free_rotation {
       : I_(checked(I)), accuracy_(accuracy), step_(I_) {}
 
   const vec3<T>& moments() const { return I_; }
+  double accuracy() const { return accuracy_; }
+  /// The body's constants of the common regime (the vectorised step of many bodies reads them).
+  const typename detail::free_flight_step<T>::body_constants& constants() const { return step_.constants(); }
 
   /// s ← the exact motion from s over time t; returns the evaluation's error estimate
   /// (max abs entry of Q and of G/|G|).

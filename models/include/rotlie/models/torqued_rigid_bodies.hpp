@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "rotlie/models/composition.hpp"
+#include "rotlie/models/exact_free_rotation_batch.hpp"
 #include "rotlie/models/rigid_bodies.hpp"
 #include "rotlie/models/scene_contracts.hpp"
 #include "rotlie/models/unit_system.hpp"
@@ -97,17 +98,18 @@ class torqued_rigid_bodies {
 
   /// φ⁽⁰⁾ for time t: translation, each body type's free rotation and the clock; the forces become stale.
   void free_flight(const T& t, state& x) const {
-    T v{};  // t/m of the current run of bodies of one type (one division per change of type)
-    const type* ty = nullptr;
-    unsigned current = 0;
-    for (auto& b : x.bodies) {
-      if (!ty || b.type != current) {
-        ty = &type_of(b);
-        current = b.type;
-        v = t / ty->mass;
-      }
-      for (std::size_t i = 0; i < 3; ++i) b.q[i] += v * b.p[i];
-      ty->rotor.advance(b.rot, t);
+    // runs of bodies of one type: one division t/m per run, the rotations of a run together
+    // (advance_bodies: the exact rotor in double vectorised across them, any other one by one)
+    for (std::size_t first = 0; first < x.bodies.size();) {
+      const unsigned current = x.bodies[first].type;
+      std::size_t end = first;
+      while (end < x.bodies.size() && x.bodies[end].type == current) ++end;
+      const type& ty = type_of(x.bodies[first]);
+      const T v = t / ty.mass;
+      for (std::size_t k = first; k < end; ++k)
+        for (std::size_t i = 0; i < 3; ++i) x.bodies[k].q[i] += v * x.bodies[k].p[i];
+      advance_bodies(ty.rotor, end - first, [&](std::size_t k) -> body_state<T>& { return x.bodies[first + k].rot; }, t);
+      first = end;
     }
     x.t += t;
     if (potential_.acts()) x.forces_current = false;
