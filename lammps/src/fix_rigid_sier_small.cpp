@@ -255,6 +255,8 @@ void FixRigidSierSmall::free_flight(double c) {
   flight_rotors_.clear();
   flight_kind_.assign(static_cast<std::size_t>(nlocal_body), -1);
   std::vector<std::size_t> count;
+  std::array<double, 3> last_moments{};  // the last shape looked up: most bodies repeat it (one map lookup per run)
+  const body_rotor* last = nullptr;
   for (int ibody = 0; ibody < nlocal_body; ++ibody) {
     Body* b = &body[ibody];
     for (int i = 0; i < 3; ++i) b->xcm[i] += t * b->vcm[i];
@@ -267,11 +269,15 @@ void FixRigidSierSmall::free_flight(double c) {
     } else if (steady(b->angmom, axes, b->inertia, w)) {
       rotate_about(w, t, b->ex_space, b->ey_space, b->ez_space);
     } else {
-      const body_rotor* r = nullptr;
-      try {
-        r = &rotors_->rotor_for(rotlie_moments(b->inertia), atom->tag[b->ilocal]);
-      } catch (const std::exception& e) {
-        error->one(FLERR, "Fix " + std::string(style) + ": " + e.what());
+      const body_rotor* r = last;
+      const auto moments = rotlie_moments(b->inertia);
+      if (!last || moments != last_moments) {
+        try {
+          r = &rotors_->rotor_for(moments, atom->tag[b->ilocal]);
+        } catch (const std::exception& e) {
+          error->one(FLERR, "Fix " + std::string(style) + ": " + e.what());
+        }
+        last = r, last_moments = moments;
       }
       const auto known = std::find(flight_rotors_.begin(), flight_rotors_.end(), r);
       const auto kind = static_cast<std::size_t>(known - flight_rotors_.begin());
