@@ -251,10 +251,11 @@ bool steady(const double* L, const double* const e[3], const double* inertia, do
 void FixRigidSierSmall::free_flight(double c) {
   const double t = c * update->dt;
   // Linear and steady bodies turn here; the others are gathered by rotor (a counting sort over the
-  // few shapes) and each rotor advances its bodies at once: the exact rotor vectorised across them.
+  // shapes) and each rotor advances its bodies at once: the exact rotor vectorised across them.
   flight_rotors_.clear();
+  flight_kind_of_.clear();
+  flight_count_.clear();
   flight_kind_.assign(static_cast<std::size_t>(nlocal_body), -1);
-  std::vector<std::size_t> count;
   std::array<double, 3> last_moments{};  // the last shape looked up: most bodies repeat it (one map lookup per run)
   const body_rotor* last = nullptr;
   for (int ibody = 0; ibody < nlocal_body; ++ibody) {
@@ -279,30 +280,30 @@ void FixRigidSierSmall::free_flight(double c) {
         }
         last = r, last_moments = moments;
       }
-      const auto known = std::find(flight_rotors_.begin(), flight_rotors_.end(), r);
-      const auto kind = static_cast<std::size_t>(known - flight_rotors_.begin());
-      if (known == flight_rotors_.end()) flight_rotors_.push_back(r), count.push_back(0);
-      flight_kind_[static_cast<std::size_t>(ibody)] = static_cast<int>(kind);
-      ++count[kind];
+      const auto [known, added] = flight_kind_of_.try_emplace(r, flight_rotors_.size());
+      if (added) flight_rotors_.push_back(r), flight_count_.push_back(0);
+      flight_kind_[static_cast<std::size_t>(ibody)] = static_cast<int>(known->second);
+      ++flight_count_[known->second];
     }
   }
-  // the bodies of each rotor contiguous: first[k] is where kind k starts
-  std::vector<std::size_t> first(count.size() + 1, 0);
-  for (std::size_t k = 0; k < count.size(); ++k) first[k + 1] = first[k] + count[k];
-  flight_states_.resize(first.back());
-  flight_order_.resize(first.back());
-  auto next = first;
+  // the bodies of each rotor contiguous: flight_first_[k] is where kind k starts
+  const std::size_t kinds = flight_rotors_.size();
+  flight_first_.assign(kinds + 1, 0);
+  for (std::size_t k = 0; k < kinds; ++k) flight_first_[k + 1] = flight_first_[k] + flight_count_[k];
+  flight_states_.resize(flight_first_.back());
+  flight_order_.resize(flight_first_.back());
+  flight_next_.assign(flight_first_.begin(), flight_first_.end() - 1);
   for (int ibody = 0; ibody < nlocal_body; ++ibody) {
     const int kind = flight_kind_[static_cast<std::size_t>(ibody)];
     if (kind < 0) continue;
-    const std::size_t slot = next[static_cast<std::size_t>(kind)]++;
+    const std::size_t slot = flight_next_[static_cast<std::size_t>(kind)]++;
     Body* b = &body[ibody];
     to_rotlie(b->ex_space, b->ey_space, b->ez_space, b->angmom, flight_states_[slot]);
     flight_order_[slot] = ibody;
   }
-  for (std::size_t k = 0; k < flight_rotors_.size(); ++k) {
+  for (std::size_t k = 0; k < kinds; ++k) {
     try {
-      flight_rotors_[k]->advance_all(flight_states_.data() + first[k], count[k], t);
+      flight_rotors_[k]->advance_all(flight_states_.data() + flight_first_[k], flight_count_[k], t);
     } catch (const std::exception& e) {
       error->one(FLERR, "Fix " + std::string(style) + ": " + e.what());
     }

@@ -15,6 +15,7 @@
 // post_force of every fix): see mid_step_forces.h.
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "fix_rigid_small.h"
@@ -51,6 +52,8 @@ class FixRigidSierSmall : public LAMMPS_NS::FixRigidSmall {
   std::unique_ptr<body_rotors> rotors_;
   // free_flight's scratch (kept between calls: no allocation once the rank's body count settles)
   std::vector<const body_rotor*> flight_rotors_;  ///< the rotors of this flight's bodies, each once
+  std::unordered_map<const body_rotor*, std::size_t> flight_kind_of_;  ///< a rotor's index in flight_rotors_
+  std::vector<std::size_t> flight_count_, flight_first_, flight_next_;  ///< per rotor: bodies, first slot, next slot
   std::vector<int> flight_kind_;                  ///< per local body: its rotor's index, −1 when turned directly
   std::vector<models::body_state<double>> flight_states_;  ///< the gathered states, grouped by rotor
   std::vector<int> flight_order_;                 ///< the local body of each gathered state

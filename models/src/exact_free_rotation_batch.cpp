@@ -2,10 +2,14 @@
 // body per lane, Highway, the target chosen at run time). Every line mirrors detail::free_flight_step
 // (exact_free_rotation.hpp) with the same operations in the same order (this file is compiled with
 // -ffp-contract=off, so nothing is fused that the scalar step rounds twice); where they differ:
-// Highway's sin, cos and atan (≤ 3 ulp) for glibc's, Carlson's R_J as in elliptic::carlson_rj for
-// Boost's, and the exponent of |G| read from its bits. A lane that leaves the common regime at any
-// test is not stored and goes through exact_free_rotation::advance afterwards, as do all lanes on a
-// target without FMA (the products of the energy difference need it exact).
+// Highway's sin, cos, atan (≤ 3 ulp), tanh (≤ 4 ulp) and sech = 2/(eᵘ + e⁻ᵘ) from its exp for glibc's.
+// So the estimate's gate, which reads the atan terms, may decide a lane within a few ulps of the
+// accuracy otherwise than the scalar step (either answer is within the accuracy); every other test is
+// the same arithmetic. The vector code refuses a little more: |ψ| > 39000 (Highway's sin and cos),
+// more than 6 Gauss or Landen levels, and every lane whose D_y needs the exact sum. A lane that leaves
+// the common regime at any test is not stored and goes through exact_free_rotation::advance
+// afterwards, as do all lanes on a target without FMA (the products of the energy difference need it).
+// Highway's Max and Min do not propagate NaN as std::max does; no NaN reaches them (refused first).
 #ifndef HWY_DISABLED_TARGETS
 // the vector path needs FMA: AVX2 and AVX-512 (and the baseline, which only dispatches to the loop)
 #define HWY_DISABLED_TARGETS (HWY_SSSE3 | HWY_SSE4)
@@ -16,6 +20,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "rotlie/models/exact_free_rotation_batch.hpp"
 
@@ -176,7 +182,7 @@ HWY_INLINE V carlson_rj(V x, V y, V p) {
     const V dm = hn::Mul(hn::Mul(hn::Add(sp, sx), hn::Add(sp, sy)), hn::Add(sp, sz));
     const V em = hn::Div(hn::Mul(hn::Mul(hn::Mul(fac, fac), fac), delta), hn::Mul(dm, dm));
     // R_C(1, 1 + e), e ≥ 0: the series below the bound, atan(√e)/√e above (elliptic::carlson_rc_one)
-    const M series_lanes = hn::Lt(em, rc_bound);
+    const M series_lanes = hn::Lt(hn::Abs(em), rc_bound);
     const V rc_series = hn::Sub(one, hn::Mul(em, hn::Sub(third, hn::Mul(em, hn::Sub(fifth, hn::Mul(em, hn::Sub(seventh, hn::Mul(em, ninth))))))));
     V rc = rc_series;
     if (!hn::AllTrue(d, hn::Or(series_lanes, hn::Not(a)))) {
@@ -442,6 +448,9 @@ HWY_EXPORT(AdvanceBlock);
 HWY_EXPORT(TargetName);
 
 void advance_block(const exact_free_rotation<double>& rotor, free_body_block& block, std::size_t* vectorised, std::size_t* one_by_one) {
+  if (block.n > free_body_block::capacity)
+    throw std::invalid_argument("advance_block: " + std::to_string(block.n) + " bodies in a block of " +
+                                std::to_string(free_body_block::capacity));
   HWY_DYNAMIC_DISPATCH(AdvanceBlock)(rotor, block, vectorised, one_by_one);
 }
 

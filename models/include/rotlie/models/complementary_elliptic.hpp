@@ -94,7 +94,9 @@ jacobi_triple<T> jacobi_functions_gauss(T u, T m, T mc) {
   using std::sin;
   using std::sqrt;
   // the descent, one level at a time (each: √μ, then u/(1 + √μ) at parameter μ), the ascent backwards
-  constexpr int max_levels = 16;  // four levels from m = 3/4 in double, five in float128
+  // four levels from m = 3/4 (m_c = 1/4, the callers' least) in double, five in float128; 16 reach m_c
+  // near 10⁻⁸, below which the caller takes jacobi_functions
+  constexpr int max_levels = 16;
   std::array<T, max_levels> root_mu{};
   int levels = 0;
   const T threshold = sqrt(std::numeric_limits<T>::epsilon()) / 8;
@@ -135,7 +137,9 @@ const T& carlson_spread_factor() {
   static const T factor = pow(std::numeric_limits<T>::epsilon() / 4, T(-1) / 6);
   return factor;
 }
-inline constexpr int carlson_max_duplications = 60;  // 4^60 exceeds any spread of finite arguments over ε
+// Duplications of R_J: about log₄(max(p, x, y, z) / min of them) + 5 are needed, so 60 serve arguments
+// within a ratio of 10³³ of each other; the step's (p ≤ 1 + |n| sn², x, y ≥ 1/4) need fewer than 8.
+inline constexpr int carlson_max_duplications = 60;
 
 /// Where carlson_rc_one's series serves: |e| < ε^(1/5)/16 (4.6e-5 in double), where the first term
 /// left out, e⁵/11, is below 10⁻⁷ ε.
