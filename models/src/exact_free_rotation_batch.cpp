@@ -61,6 +61,11 @@ struct jacobi {
   V sn, cn, dn;
 };
 
+// a where the mask is set, else b, for the three functions at once.
+HWY_INLINE jacobi select(M mask, const jacobi& a, const jacobi& b) {
+  return {hn::IfThenElse(mask, a.sn, b.sn), hn::IfThenElse(mask, a.cn, b.cn), hn::IfThenElse(mask, a.dn, b.dn)};
+}
+
 // The constant of frame 1 where the lane uses it, else of frame 0.
 HWY_INLINE V pick(M f1, double c1, double c0) {
   const D d;
@@ -104,9 +109,7 @@ HWY_INLINE jacobi gauss_functions(V u, V m, V mc, M& ok) {
     const V r = root_mu[level];
     const V s2 = hn::Mul(hn::Mul(r, j.sn), j.sn), inv = hn::Div(one, hn::Add(one, s2));
     const jacobi up{hn::Mul(hn::Mul(hn::Add(one, r), j.sn), inv), hn::Mul(hn::Mul(j.cn, j.dn), inv), hn::Mul(hn::Sub(one, s2), inv)};
-    j.sn = hn::IfThenElse(active[level], up.sn, j.sn);
-    j.cn = hn::IfThenElse(active[level], up.cn, j.cn);
-    j.dn = hn::IfThenElse(active[level], up.dn, j.dn);
+    j = select(active[level], up, j);
   }
   return j;
 }
@@ -144,9 +147,7 @@ HWY_INLINE jacobi landen_functions(V u, V m, V mc, M& ok) {
     const jacobi up{hn::Div(hn::Mul(hn::Mul(hn::Add(one, r), j.sn), j.cn), j.dn),
                     hn::Div(hn::Mul(hn::Div(hn::Add(one, r), mu[level]), hn::Sub(dn2, r)), j.dn),
                     hn::Div(hn::Mul(hn::Div(hn::Sub(one, r), mu[level]), hn::Add(dn2, r)), j.dn)};
-    j.sn = hn::IfThenElse(active[level], up.sn, j.sn);
-    j.cn = hn::IfThenElse(active[level], up.cn, j.cn);
-    j.dn = hn::IfThenElse(active[level], up.dn, j.dn);
+    j = select(active[level], up, j);
   }
   return j;
 }
@@ -334,7 +335,7 @@ void advance_lanes(const constants& c, double accuracy, free_body_block& b, std:
   } else {
     const jacobi g = gauss_functions(u, hn::IfThenElse(gauss, m_safe, hn::Set(d, 0.5)), hn::IfThenElse(gauss, mc_safe, hn::Set(d, 0.5)), ok);
     const jacobi l = landen_functions(u, hn::IfThenElse(gauss, hn::Set(d, 0.9), m_safe), hn::IfThenElse(gauss, hn::Set(d, 0.1), mc_safe), ok);
-    at_v = {hn::IfThenElse(gauss, g.sn, l.sn), hn::IfThenElse(gauss, g.cn, l.cn), hn::IfThenElse(gauss, g.dn, l.dn)};
+    at_v = select(gauss, g, l);
   }
   at_v.sn = hn::IfThenElse(hn::Lt(v_safe, zero), hn::Neg(at_v.sn), at_v.sn);
   const jacobi at_u = jacobi_sum(at_u0, at_v, m_safe);
