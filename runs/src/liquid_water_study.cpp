@@ -13,6 +13,7 @@
 #include "rotlie/models/scenes/water_model.hpp"
 #include "rotlie/runs/number_text.hpp"
 #include "rotlie/runs/scheme_names.hpp"
+#include "liquid_water_run.hpp"
 
 namespace rotlie::runs {
 
@@ -88,7 +89,7 @@ liquid_water_study_result liquid_water_study(const liquid_water_budget& b, bool 
       auto& point = measured.points.emplace_back();
       point.h_fs = h, point.runs = o.runs, point.T_ps = o.T_ps;
       try {
-        point.result = models::run_liquid_water(o, start, {});
+        point.result = liquid_water_runs(o, start, {});
         point.f = point.result.f;
         if (sw.integrator == "SIER2" && h == 1 && point.result.ratio_mean < out.diverged_percent)
           out.v_per_molecule = point.result.potential_per_molecule, out.temperature = point.result.temperature;

@@ -16,6 +16,7 @@
 #include "rotlie/schemes/quad.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 #include "rotlie/solver/scheme_table.hpp"
+#include "md_experiments.hpp"
 
 namespace rotlie::runs {
 

@@ -20,7 +20,8 @@
 
 namespace fs = std::filesystem;
 
-namespace {
+// Named, not anonymous: the folder's test files share one unity source.
+namespace bad_input_support {
 
 constexpr int usage = 2;    // bad arguments
 constexpr int failure = 1;  // the run failed
@@ -430,10 +431,12 @@ struct cleanup {
   }
 };
 
-}  // namespace
+}  // namespace bad_input_support
 
 // The folder's other suites share this executable: the fixture is this suite's, not global.
-BOOST_AUTO_TEST_SUITE(bad_input_test, *boost::unit_test::fixture<cleanup>())
+BOOST_AUTO_TEST_SUITE(bad_input_test, *boost::unit_test::fixture<bad_input_support::cleanup>())
+
+using namespace bad_input_support;
 
 BOOST_AUTO_TEST_CASE(every_bad_input_gets_one_line_and_its_status) {
   make_files();

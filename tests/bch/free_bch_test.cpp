@@ -194,7 +194,7 @@ BOOST_AUTO_TEST_CASE(degree_20_series_matches_the_matrix_logarithm) {
   BOOST_TEST(e20 < 1e-26);
   BOOST_TEST(e20 < e19 / 5);
   // the symmetric series at degree 19 against log(e^{X/2} e^Y e^{X/2})
-  const matrix half = expm(scaled(x, 0.5Q));
+  const matrix half = expm(scaled(x, quad(1) / 2));
   const matrix exact_sym = logm(half * expm(y) * half);
   const auto sym = to_lie_series(compute_free_series(free_series::sym, 19));
   BOOST_TEST(distance(evaluate(sym, std::vector<matrix>{x, y}, algebra), exact_sym) < 1e-26);

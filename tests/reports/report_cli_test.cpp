@@ -23,10 +23,11 @@
 #include "folder_support.hpp"
 
 namespace fs = std::filesystem;
+
+// Named, not anonymous: the folder's test files share one unity source.
+namespace report_cli_support {
 using namespace report_test;
 using namespace std::chrono_literals;
-
-namespace {
 
 // How to start rotlie: its arguments, and optionally a fake gnuplot, a working folder, a file-size limit.
 struct launch {
@@ -178,10 +179,14 @@ std::vector<std::string> quick(const fs::path& out, const std::string& sections)
   return {"report", "--quick", "--sections", sections, "--out", out.string()};
 }
 
-}  // namespace
+}  // namespace report_cli_support
 
 // The folder's other suites share this executable: the fixture is this suite's, not global.
-BOOST_AUTO_TEST_SUITE(report_cli_test, *boost::unit_test::fixture<remove_test_root>())
+BOOST_AUTO_TEST_SUITE(report_cli_test, *boost::unit_test::fixture<report_cli_support::remove_test_root>())
+
+using namespace report_cli_support;
+using namespace report_test;
+using namespace std::chrono_literals;
 
 BOOST_AUTO_TEST_CASE(hostile_folder_names_run_no_command) {
   const fs::path root = test_root() / "hostile";

@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "ensemble_run.hpp"
-#include "rotlie/models/experiments/dipole_field_experiment.hpp"
+#include "../md_experiments.hpp"
 
 namespace rotlie::runs {
 namespace {

@@ -14,6 +14,7 @@
 #include "rotlie/runs/md_json.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
 #include "rotlie/runs/output_file.hpp"
+#include "../liquid_water_run.hpp"
 #include "scene_support.hpp"
 
 namespace rotlie::runs {
@@ -72,7 +73,7 @@ scene_result run(const scene_request& request) {
   };
   models::rigid_bodies_state<double> start;
   as_bad_input([&] { start = models::liquid_water_start(o, show); });  // a state file of another system, overlaps
-  const auto r = models::run_liquid_water(o, start, show);
+  const auto r = liquid_water_runs(o, start, show);
   scene_result out;
   out.json = liquid_water_json(r);
   out.text = line("liquid water: %ld TIP3P molecules, box %.4f Å, %s, h = %g fs (h/f = %g fs), %d run(s) of %g ps\n", r.molecules, r.box,

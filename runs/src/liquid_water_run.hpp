@@ -1,0 +1,11 @@
+#pragma once
+// models::run_liquid_water compiled in one file (liquid_water_run.cpp) for the scene and the study,
+// which would each compile its integrators again.
+#include "rotlie/models/scenes/liquid_water_experiment.hpp"
+
+namespace rotlie::runs {
+
+models::liquid_water_run_result liquid_water_runs(const models::liquid_water_run_options& o, const models::rigid_bodies_state<double>& start,
+                                                  const models::liquid_water_progress& progress);
+
+}  // namespace rotlie::runs
