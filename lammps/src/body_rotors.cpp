@@ -5,12 +5,13 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <type_traits>
 
 #include "map_choice.hpp"
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/lie/rigid_body.hpp"
 #include "rotlie/models/closed_form_rotors.hpp"
-#include "rotlie/models/exact_free_rotation_batch.hpp"
+#include "rotlie/models/exact_free_rotation.hpp"
 #include "rotlie/models/table_rotor.hpp"
 #include "rotlie/runs/md_methods.hpp"
 #include "rotlie/schemes/same_body.hpp"
@@ -24,8 +25,9 @@ class rotor_of final : public body_rotor {
  public:
   explicit rotor_of(Rotor r) : r_(std::move(r)) {}
   void advance(models::body_state<double>& s, double t) const override { r_.advance(s, t); }
-  void advance_all(models::body_state<double>* s, std::size_t n, double t) const override {
-    models::advance_bodies(r_, n, [s](std::size_t i) -> models::body_state<double>& { return s[i]; }, t);
+  const models::exact_free_rotation<double>* exact() const override {
+    if constexpr (std::is_same_v<Rotor, models::exact_free_rotation<double>>) return &r_;
+    else return nullptr;
   }
 
  private:

@@ -18,6 +18,11 @@
 #include "rotlie/models/rigid_body.hpp"
 #include "rotlie/schemes/scheme_table.hpp"
 
+namespace rotlie::models {
+template <class T>
+class exact_free_rotation;
+}  // namespace rotlie::models
+
 namespace rotlie::lammps {
 
 class shipped_map_lines;
@@ -32,8 +37,9 @@ class body_rotor {
  public:
   virtual ~body_rotor() = default;
   virtual void advance(models::body_state<double>& s, double t) const = 0;
-  /// s[0 … n−1] ← each advanced over t: the exact rotor's states at once (vectorised), a table's one by one.
-  virtual void advance_all(models::body_state<double>* s, std::size_t n, double t) const = 0;
+  /// The exact rotor behind this one, or nullptr: the fix advances the bodies of one shape together,
+  /// each with its own moments (models::advance_all with each body's rotor).
+  virtual const models::exact_free_rotation<double>* exact() const { return nullptr; }
 };
 
 /// What `rotor VALUE` asks for.

@@ -25,6 +25,7 @@
 #include "mid_step_forces.h"
 #include "rigid_const.h"
 #include "rotlie/models/composition.hpp"
+#include "rotlie/models/exact_free_rotation_batch.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 #include "update.h"
 #include "utils.h"
@@ -150,6 +151,9 @@ void FixRigidSierSmall::resolve_shapes() {
                               (comm->nprocs > 1 ? ", shared among " + std::to_string(comm->nprocs) + " ranks" : "") + "\n");
   };
   try {
+    body_rotor_.clear();  // the rotors and shapes they point to are rebuilt
+    body_moments_.clear();
+    body_key_.clear();
     rotors_->resolve_shapes(bodies, {mine_to_resolve, [&](std::vector<std::string>& texts) { share_texts(texts); }}, progress);
   } catch (const std::exception& e) {
     error->all(FLERR, "Fix " + std::string(style) + ": " + e.what());
@@ -250,14 +254,18 @@ bool steady(const double* L, const double* const e[3], const double* inertia, do
 
 void FixRigidSierSmall::free_flight(double c) {
   const double t = c * update->dt;
-  // Linear and steady bodies turn here; the others are gathered by rotor (a counting sort over the
-  // shapes) and each rotor advances its bodies at once: the exact rotor vectorised across them.
-  flight_rotors_.clear();
-  flight_kind_of_.clear();
+  // Linear and steady bodies and those of a table's rotor turn here, one by one; the exact rotor's
+  // bodies are gathered by shape (a counting sort) and each shape's advanced at once, vectorised across
+  // them, each body with its own moments (LAMMPS computes them from its atoms: they differ in the last
+  // digits among the molecules of one shape).
+  const auto bodies = static_cast<std::size_t>(nlocal_body);
+  flight_group_of_.clear();
   flight_count_.clear();
-  flight_kind_.assign(static_cast<std::size_t>(nlocal_body), -1);
-  std::array<double, 3> last_moments{};  // the last shape looked up: most bodies repeat it (one map lookup per run)
-  const body_rotor* last = nullptr;
+  flight_group_.assign(bodies, -1);
+  body_rotor_.resize(bodies, nullptr);
+  body_moments_.resize(bodies);
+  body_key_.resize(bodies, nullptr);
+  models::body_state<double> s;
   for (int ibody = 0; ibody < nlocal_body; ++ibody) {
     Body* b = &body[ibody];
     for (int i = 0; i < 3; ++i) b->xcm[i] += t * b->vcm[i];
@@ -267,50 +275,65 @@ void FixRigidSierSmall::free_flight(double c) {
       // a linear body: its free rotation is the uniform rotation about its angular velocity
       MathExtra::angmom_to_omega(b->angmom, b->ex_space, b->ey_space, b->ez_space, b->inertia, b->omega);
       rotate_about(b->omega, t, b->ex_space, b->ey_space, b->ez_space);
-    } else if (steady(b->angmom, axes, b->inertia, w)) {
-      rotate_about(w, t, b->ex_space, b->ey_space, b->ez_space);
-    } else {
-      const body_rotor* r = last;
-      const auto moments = rotlie_moments(b->inertia);
-      if (!last || moments != last_moments) {
-        try {
-          r = &rotors_->rotor_for(moments, atom->tag[b->ilocal]);
-        } catch (const std::exception& e) {
-          error->one(FLERR, "Fix " + std::string(style) + ": " + e.what());
-        }
-        last = r, last_moments = moments;
-      }
-      const auto [known, added] = flight_kind_of_.try_emplace(r, flight_rotors_.size());
-      if (added) flight_rotors_.push_back(r), flight_count_.push_back(0);
-      flight_kind_[static_cast<std::size_t>(ibody)] = static_cast<int>(known->second);
-      ++flight_count_[known->second];
+      continue;
     }
+    if (steady(b->angmom, axes, b->inertia, w)) {
+      rotate_about(w, t, b->ex_space, b->ey_space, b->ez_space);
+      continue;
+    }
+    const auto moments = rotlie_moments(b->inertia);
+    const auto slot = static_cast<std::size_t>(ibody);
+    if (!body_rotor_[slot] || body_moments_[slot] != moments) {
+      try {
+        body_rotor_[slot] = &rotors_->rotor_for(moments, atom->tag[b->ilocal]);
+      } catch (const std::exception& e) {
+        error->one(FLERR, "Fix " + std::string(style) + ": " + e.what());
+      }
+      body_moments_[slot] = moments;
+      const body_shape* shape = rotors_->shape_of(moments);
+      body_key_[slot] = shape ? static_cast<const void*>(shape) : static_cast<const void*>(body_rotor_[slot]);
+    }
+    const body_rotor* r = body_rotor_[slot];
+    if (!r->exact()) {
+      to_rotlie(b->ex_space, b->ey_space, b->ez_space, b->angmom, s);
+      r->advance(s, t);
+      from_rotlie(s, b->ex_space, b->ey_space, b->ez_space, b->angmom);
+      continue;
+    }
+    const auto [known, added] = flight_group_of_.try_emplace(body_key_[slot], flight_count_.size());
+    if (added) flight_count_.push_back(0);
+    flight_group_[slot] = static_cast<int>(known->second);
+    ++flight_count_[known->second];
   }
-  // the bodies of each rotor contiguous: flight_first_[k] is where kind k starts
-  const std::size_t kinds = flight_rotors_.size();
-  flight_first_.assign(kinds + 1, 0);
-  for (std::size_t k = 0; k < kinds; ++k) flight_first_[k + 1] = flight_first_[k] + flight_count_[k];
+  // the bodies of each group contiguous: flight_first_[g] is where group g starts
+  const std::size_t groups = flight_count_.size();
+  flight_first_.assign(groups + 1, 0);
+  for (std::size_t g = 0; g < groups; ++g) flight_first_[g + 1] = flight_first_[g] + flight_count_[g];
   flight_states_.resize(flight_first_.back());
+  flight_exact_.resize(flight_first_.back());
   flight_order_.resize(flight_first_.back());
   flight_next_.assign(flight_first_.begin(), flight_first_.end() - 1);
   for (int ibody = 0; ibody < nlocal_body; ++ibody) {
-    const int kind = flight_kind_[static_cast<std::size_t>(ibody)];
-    if (kind < 0) continue;
-    const std::size_t slot = flight_next_[static_cast<std::size_t>(kind)]++;
+    const int group = flight_group_[static_cast<std::size_t>(ibody)];
+    if (group < 0) continue;
+    const std::size_t at = flight_next_[static_cast<std::size_t>(group)]++;
     Body* b = &body[ibody];
-    to_rotlie(b->ex_space, b->ey_space, b->ez_space, b->angmom, flight_states_[slot]);
-    flight_order_[slot] = ibody;
+    to_rotlie(b->ex_space, b->ey_space, b->ez_space, b->angmom, flight_states_[at]);
+    flight_exact_[at] = body_rotor_[static_cast<std::size_t>(ibody)]->exact();
+    flight_order_[at] = ibody;
   }
-  for (std::size_t k = 0; k < kinds; ++k) {
+  for (std::size_t g = 0; g < groups; ++g) {
+    const std::size_t first = flight_first_[g];
     try {
-      flight_rotors_[k]->advance_all(flight_states_.data() + flight_first_[k], flight_count_[k], t);
+      models::advance_all(flight_exact_.data() + first, flight_count_[g],
+                          [&](std::size_t i) -> models::body_state<double>& { return flight_states_[first + i]; }, t);
     } catch (const std::exception& e) {
       error->one(FLERR, "Fix " + std::string(style) + ": " + e.what());
     }
   }
-  for (std::size_t slot = 0; slot < flight_order_.size(); ++slot) {
-    Body* b = &body[flight_order_[slot]];
-    from_rotlie(flight_states_[slot], b->ex_space, b->ey_space, b->ez_space, b->angmom);
+  for (std::size_t at = 0; at < flight_order_.size(); ++at) {
+    Body* b = &body[flight_order_[at]];
+    from_rotlie(flight_states_[at], b->ex_space, b->ey_space, b->ez_space, b->angmom);
   }
   for (int ibody = 0; ibody < nlocal_body; ++ibody) {
     Body* b = &body[ibody];

@@ -13,6 +13,7 @@
 // the fix itself in initial_integrate, with the sequence of LAMMPS's Verlet (neighbour decision,
 // communication or re-neighbouring, pre_force, pair, bonded, kspace, reverse communication,
 // post_force of every fix): see mid_step_forces.h.
+#include <array>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -51,12 +52,18 @@ class FixRigidSierSmall : public LAMMPS_NS::FixRigidSmall {
   std::string tv_table_;
   std::unique_ptr<body_rotors> rotors_;
   // free_flight's scratch (kept between calls: no allocation once the rank's body count settles)
-  std::vector<const body_rotor*> flight_rotors_;  ///< the rotors of this flight's bodies, each once
-  std::unordered_map<const body_rotor*, std::size_t> flight_kind_of_;  ///< a rotor's index in flight_rotors_
-  std::vector<std::size_t> flight_count_, flight_first_, flight_next_;  ///< per rotor: bodies, first slot, next slot
-  std::vector<int> flight_kind_;                  ///< per local body: its rotor's index, −1 when turned directly
-  std::vector<models::body_state<double>> flight_states_;  ///< the gathered states, grouped by rotor
+  std::unordered_map<const void*, std::size_t> flight_group_of_;  ///< an exact-rotor group's index, by its key
+  std::vector<std::size_t> flight_count_, flight_first_, flight_next_;  ///< per group: bodies, first slot, next slot
+  std::vector<int> flight_group_;                 ///< per local body: its group, −1 when turned directly
+  std::vector<models::body_state<double>> flight_states_;  ///< the gathered states, grouped
+  std::vector<const models::exact_free_rotation<double>*> flight_exact_;  ///< each gathered state's own rotor
   std::vector<int> flight_order_;                 ///< the local body of each gathered state
+  // each local body's rotor as last looked up, the moments it was looked up for and its group key (its
+  // shape, or the rotor itself for a shape met during the run): a body whose moments are unchanged (the
+  // same body, or one of identical moments moved into its slot) skips the lookup; cleared with the rotors
+  std::vector<const body_rotor*> body_rotor_;
+  std::vector<std::array<double, 3>> body_moments_;
+  std::vector<const void*> body_key_;
   bool shapes_resolved_ = false;
 };
 

@@ -25,6 +25,66 @@
 
 #include "rotlie/models/exact_free_rotation_batch.hpp"
 
+#ifndef ROTLIE_BATCH_CONSTANT_TABLES
+#define ROTLIE_BATCH_CONSTANT_TABLES
+namespace rotlie::models::batch_detail {
+
+using frame_constants = detail::free_flight_step<double>::frame_constants;
+using body_constants = detail::free_flight_step<double>::body_constants;
+
+// A working frame's constants as numbered fields: the vector step reads them by number, either one
+// body's for every lane or each lane's own body's.
+enum frame_field : std::size_t {
+  f_n, f_dzx, f_dzy, f_dyx, f_amplification, f_x_amplitude, f_y_amplitude, f_z_amplitude, f_wp_sign, f_wp_square,
+  f_psi_factor, f_rate_factor, f_small_n, f_usable, f_Iw, f_to_x = f_Iw + 3, f_to_z = f_to_x + 3, frame_fields = f_to_z + 3
+};
+// The body's scaled moments along the working x, y, z (the order of its axes) and the smallest.
+enum body_field : std::size_t { b_Ix, b_Iy, b_Iz, b_Imin, body_fields };
+
+inline void flatten(const frame_constants& f, double* out) {
+  out[f_n] = f.n, out[f_dzx] = f.dzx, out[f_dzy] = f.dzy, out[f_dyx] = f.dyx, out[f_amplification] = f.amplification;
+  out[f_x_amplitude] = f.x_amplitude, out[f_y_amplitude] = f.y_amplitude, out[f_z_amplitude] = f.z_amplitude;
+  out[f_wp_sign] = f.wp_sign, out[f_wp_square] = f.wp_square, out[f_psi_factor] = f.psi_factor, out[f_rate_factor] = f.rate_factor;
+  out[f_small_n] = f.small_n ? 1.0 : 0.0, out[f_usable] = f.usable ? 1.0 : 0.0;
+  for (std::size_t r = 0; r < 3; ++r) out[f_Iw + r] = f.Iw[r], out[f_to_x + r] = f.to_x[r], out[f_to_z + r] = f.to_z[r];
+}
+
+inline void flatten(const body_constants& c, double* out) {
+  const auto at = [&](int k) { return c.I[static_cast<std::size_t>(c.order[static_cast<std::size_t>(k)])]; };
+  out[b_Ix] = at(0), out[b_Iy] = at(1), out[b_Iz] = at(2), out[b_Imin] = c.Imin;
+}
+
+// One body's constants, for every lane.
+struct shared_table {
+  double frame[2][frame_fields];
+  double body[body_fields];
+  std::int64_t eI;
+  explicit shared_table(const body_constants& c) : eI(c.eI) {
+    flatten(c.frames[0], frame[0]);
+    flatten(c.frames[1], frame[1]);
+    flatten(c, body);
+  }
+};
+
+// Each lane's own body's constants (structure of arrays).
+struct lane_table {
+  alignas(64) double frame[2][frame_fields][free_body_block::capacity];
+  alignas(64) double body[body_fields][free_body_block::capacity];
+  alignas(64) std::int64_t eI[free_body_block::capacity];
+};
+
+// Whether two bodies' steps share their structure: the order of the axes and the working frames'
+// axes and signs (the vector step's branches and permutations); the numbers may differ.
+inline bool same_structure(const body_constants& a, const body_constants& b) {
+  if (a.order != b.order || a.spherical != b.spherical) return false;
+  for (std::size_t f = 0; f < 2; ++f)
+    if (a.frames[f].axis != b.frames[f].axis || a.frames[f].sign != b.frames[f].sign) return false;
+  return true;
+}
+
+}  // namespace rotlie::models::batch_detail
+#endif
+
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "exact_free_rotation_batch.cpp"
 #include <hwy/foreach_target.h>  // must come before highway.h
@@ -66,11 +126,32 @@ HWY_INLINE jacobi select(M mask, const jacobi& a, const jacobi& b) {
   return {hn::IfThenElse(mask, a.sn, b.sn), hn::IfThenElse(mask, a.cn, b.cn), hn::IfThenElse(mask, a.dn, b.dn)};
 }
 
-// The constant of frame 1 where the lane uses it, else of frame 0.
-HWY_INLINE V pick(M f1, double c1, double c0) {
-  const D d;
-  return hn::IfThenElse(f1, hn::Set(d, c1), hn::Set(d, c0));
-}
+using DI = hn::RebindToSigned<D>;
+using VI = hn::Vec<DI>;
+using namespace batch_detail;
+
+// Where the lanes' constants come from: one body's for every lane …
+struct one_body_source {
+  const shared_table& t;
+  // the field of frame 1 where the lane uses it, else of frame 0
+  HWY_INLINE V frame(M f1, std::size_t field, std::size_t) const {
+    const D d;
+    return hn::IfThenElse(f1, hn::Set(d, t.frame[1][field]), hn::Set(d, t.frame[0][field]));
+  }
+  HWY_INLINE V body(std::size_t field, std::size_t) const { return hn::Set(D(), t.body[field]); }
+  HWY_INLINE VI eI(std::size_t) const { return hn::Set(DI(), t.eI); }
+};
+
+// … or each lane's own body's (lanes i … i + Lanes − 1 of the table).
+struct lane_source {
+  const lane_table& t;
+  HWY_INLINE V frame(M f1, std::size_t field, std::size_t i) const {
+    const D d;
+    return hn::IfThenElse(f1, hn::Load(d, t.frame[1][field] + i), hn::Load(d, t.frame[0][field] + i));
+  }
+  HWY_INLINE V body(std::size_t field, std::size_t i) const { return hn::Load(D(), t.body[field] + i); }
+  HWY_INLINE VI eI(std::size_t i) const { return hn::Load(DI(), t.eI + i); }
+};
 
 // a·b·c·(d − e) in double-double (exact_energy_difference.hpp's product_pair)
 HWY_INLINE void product_pair(V a, V b, V c, V dd, V e, V& hi, V& lo) {
@@ -227,9 +308,12 @@ HWY_INLINE void momentum_frame(const V L[3], V inverse_length, V F[9]) {
 }
 
 // The lanes [i, i + Lanes) of the block: those in the common regime are stored, `done` marks them.
-void advance_lanes(const constants& c, double accuracy, free_body_block& b, std::size_t i, double* done) {
+// c gives the structure (the order of the axes, the frames' axes and signs), shared by every lane; src
+// the numbers, the same body's for every lane or each lane's own.
+template <class Source>
+void advance_lanes(const constants& c, const Source& src, double accuracy, free_body_block& b, std::size_t i, double* done) {
   const D d;
-  const hn::RebindToSigned<D> di;
+  const DI di;
   const V zero = hn::Zero(d), one = hn::Set(d, 1.0);
   const auto& F0c = c.frames[0];
   const auto& F1c = c.frames[1];
@@ -247,18 +331,19 @@ void advance_lanes(const constants& c, double accuracy, free_body_block& b, std:
   const auto biased = hn::ShiftRight<52>(hn::BitCast(di, gmax));  // 1 … 2046 for normal gmax
   const V eG = hn::ConvertTo(d, hn::Sub(biased, hn::Set(di, 1023)));
   constexpr double max_scaling = std::numeric_limits<double>::max_exponent - 8;
-  const V e_time = hn::Sub(eG, hn::Set(d, static_cast<double>(c.eI)));
+  const VI eI = src.eI(i);
+  const V e_time = hn::Sub(eG, hn::ConvertTo(d, eI));
   ok = hn::And(ok, hn::And(hn::Le(hn::Abs(eG), hn::Set(d, max_scaling)), hn::Le(hn::Abs(e_time), hn::Set(d, max_scaling))));
   const auto clamp = [&](auto e) { return hn::Min(hn::Max(e, hn::Set(di, 1)), hn::Set(di, 2046)); };  // valid bits in every lane
   const V down = hn::BitCast(d, hn::ShiftLeft<52>(clamp(hn::Sub(hn::Set(di, 2046), biased))));
   const V up = hn::BitCast(d, hn::ShiftLeft<52>(clamp(biased)));
-  const V time_scale = hn::BitCast(d, hn::ShiftLeft<52>(clamp(hn::Sub(biased, hn::Set(di, c.eI)))));
+  const V time_scale = hn::BitCast(d, hn::ShiftLeft<52>(clamp(hn::Sub(biased, eI))));
   const V Gs[3] = {hn::Mul(G[0], down), hn::Mul(G[1], down), hn::Mul(G[2], down)};
 
   // D_y = L² − 2E I_y (middle_energy_difference); lanes that need the exact sum go one by one
   const std::size_t x = static_cast<std::size_t>(c.order[0]), y = static_cast<std::size_t>(c.order[1]),
                     z = static_cast<std::size_t>(c.order[2]);
-  const V Ix = hn::Set(d, c.I[x]), Iy = hn::Set(d, c.I[y]), Iz = hn::Set(d, c.I[z]);
+  const V Ix = src.body(b_Ix, i), Iy = src.body(b_Iy, i), Iz = src.body(b_Iz, i);
   V ah, al, bh, bl;
   product_pair(Gs[x], Gs[x], Iz, Ix, Iy, ah, al);
   product_pair(Gs[z], Gs[z], Ix, Iz, Iy, bh, bl);
@@ -274,15 +359,14 @@ void advance_lanes(const constants& c, double accuracy, free_body_block& b, std:
 
   // the working frame: 1 where D_y < 0
   const M f1 = hn::Lt(Dy, zero);
-  if (!F0c.usable) ok = hn::And(ok, f1);
-  if (!F1c.usable) ok = hn::AndNot(f1, ok);
+  ok = hn::And(ok, hn::Eq(src.frame(f1, f_usable, i), one));
   V L[3];
   for (std::size_t r = 0; r < 3; ++r)
     L[r] = hn::IfThenElse(f1, hn::Mul(hn::Set(d, F1c.sign[r]), Gs[F1c.axis[r]]), hn::Mul(hn::Set(d, F0c.sign[r]), Gs[F0c.axis[r]]));
   const V l2 = hn::Add(hn::Add(hn::Mul(L[0], L[0]), hn::Mul(L[1], L[1])), hn::Mul(L[2], L[2]));
   const V length = hn::Sqrt(l2);
   V w[3];
-  for (std::size_t r = 0; r < 3; ++r) w[r] = hn::Div(L[r], pick(f1, F1c.Iw[r], F0c.Iw[r]));
+  for (std::size_t r = 0; r < 3; ++r) w[r] = hn::Div(L[r], src.frame(f1, f_Iw + r, i));
   const M steady = hn::And(hn::And(hn::Eq(hn::Sub(hn::Mul(L[0], w[1]), hn::Mul(L[1], w[0])), zero),
                                    hn::Eq(hn::Sub(hn::Mul(L[1], w[2]), hn::Mul(L[2], w[1])), zero)),
                            hn::Eq(hn::Sub(hn::Mul(L[2], w[0]), hn::Mul(L[0], w[2])), zero));
@@ -293,19 +377,19 @@ void advance_lanes(const constants& c, double accuracy, free_body_block& b, std:
   V Dx = zero, Dz = zero;
   for (std::size_t r = 0; r < 3; ++r) {
     const V l_2 = hn::Mul(L[r], L[r]);
-    Dx = hn::Add(Dx, hn::Mul(l_2, pick(f1, F1c.to_x[r], F0c.to_x[r])));
-    Dz = hn::Add(Dz, hn::Mul(l_2, pick(f1, F1c.to_z[r], F0c.to_z[r])));
+    Dx = hn::Add(Dx, hn::Mul(l_2, src.frame(f1, f_to_x + r, i)));
+    Dz = hn::Add(Dz, hn::Mul(l_2, src.frame(f1, f_to_z + r, i)));
   }
-  const V dzy_Dx = hn::Mul(pick(f1, F1c.dzy, F0c.dzy), Dx);
-  const V mc = hn::Max(zero, hn::Div(hn::Mul(pick(f1, F1c.dzx, F0c.dzx), Dy), dzy_Dx));
-  const V m = hn::Min(one, hn::Div(hn::Mul(pick(f1, F1c.dyx, F0c.dyx), Dz), dzy_Dx));
+  const V dzy_Dx = hn::Mul(src.frame(f1, f_dzy, i), Dx);
+  const V mc = hn::Max(zero, hn::Div(hn::Mul(src.frame(f1, f_dzx, i), Dy), dzy_Dx));
+  const V m = hn::Min(one, hn::Div(hn::Mul(src.frame(f1, f_dyx, i), Dz), dzy_Dx));
   ok = hn::And(ok, hn::Gt(mc, zero));
   const V sz = hn::IfThenElse(hn::Lt(L[2], zero), hn::Set(d, -1.0), one);
-  const V Lxm = hn::Sqrt(hn::Mul(Dz, pick(f1, F1c.x_amplitude, F0c.x_amplitude)));
-  const V Lym = hn::Sqrt(hn::Mul(Dz, pick(f1, F1c.y_amplitude, F0c.y_amplitude)));
-  const V Lzm = hn::Mul(sz, hn::Sqrt(hn::Mul(Dx, pick(f1, F1c.z_amplitude, F0c.z_amplitude))));
-  const V wp = hn::Mul(hn::Mul(sz, pick(f1, F1c.wp_sign, F0c.wp_sign)), hn::Sqrt(hn::Mul(Dx, pick(f1, F1c.wp_square, F0c.wp_square))));
-  const V psi_scale = hn::Div(hn::Mul(length, pick(f1, F1c.psi_factor, F0c.psi_factor)), wp);
+  const V Lxm = hn::Sqrt(hn::Mul(Dz, src.frame(f1, f_x_amplitude, i)));
+  const V Lym = hn::Sqrt(hn::Mul(Dz, src.frame(f1, f_y_amplitude, i)));
+  const V Lzm = hn::Mul(sz, hn::Sqrt(hn::Mul(Dx, src.frame(f1, f_z_amplitude, i))));
+  const V wp = hn::Mul(hn::Mul(sz, src.frame(f1, f_wp_sign, i)), hn::Sqrt(hn::Mul(Dx, src.frame(f1, f_wp_square, i))));
+  const V psi_scale = hn::Div(hn::Mul(length, src.frame(f1, f_psi_factor, i)), wp);
   V sn0 = hn::Mul(L[1], Lxm), cn0 = hn::Mul(L[0], Lym);
   const V big = hn::Max(hn::Abs(sn0), hn::Abs(cn0));
   ok = hn::And(ok, hn::And(hn::Gt(big, zero), hn::And(hn::Ne(wp, zero), hn::IsFinite(psi_scale))));
@@ -316,7 +400,7 @@ void advance_lanes(const constants& c, double accuracy, free_body_block& b, std:
 
   // the phase v = ω_p t in scaled units, |v| ≤ π/4 and far from the 2^60 rad limit
   const V tau = hn::Mul(t, time_scale), v = hn::Mul(wp, tau);
-  ok = hn::And(ok, hn::Le(hn::Mul(hn::Abs(tau), length), hn::Set(d, 576460752303423488.0 * c.Imin)));
+  ok = hn::And(ok, hn::Le(hn::Mul(hn::Abs(tau), length), hn::Mul(hn::Set(d, 576460752303423488.0), src.body(b_Imin, i))));
   ok = hn::And(ok, hn::Le(hn::Abs(v), hn::Set(d, boost::math::constants::half_pi<double>() / 2)));
   if (hn::AllFalse(d, ok)) {
     hn::Store(zero, d, done);
@@ -341,7 +425,7 @@ void advance_lanes(const constants& c, double accuracy, free_body_block& b, std:
   const jacobi at_u = jacobi_sum(at_u0, at_v, m_safe);
 
   // D(v) = (n/3) sn³ R_J(cn², dn², 1, 1 − n sn²) and the addition term of the third kind
-  const V n = pick(f1, F1c.n, F0c.n);
+  const V n = src.frame(f1, f_n, i);
   const V one_minus_n_sn2 = hn::Sub(one, hn::Mul(hn::Mul(n, at_v.sn), at_v.sn));
   const M elliptic_terms = hn::And(hn::Ne(n, zero), hn::Ne(at_v.sn, zero));
   const V rj = carlson_rj(hn::Mul(at_v.cn, at_v.cn), hn::Mul(at_v.dn, at_v.dn), hn::IfThenElse(elliptic_terms, one_minus_n_sn2, hn::Set(d, 2.0)));
@@ -359,15 +443,15 @@ void advance_lanes(const constants& c, double accuracy, free_body_block& b, std:
       n_nonzero, hn::Mul(hn::Div(n, root_kappa), hn::Atan(d, hn::Div(hn::Mul(root_kappa, P), hn::Sub(one, hn::Mul(n, W))))));
 
   // ψ and the estimate
-  const M small_n = hn::Eq(pick(f1, F1c.small_n ? 1.0 : 0.0, F0c.small_n ? 1.0 : 0.0), one);
-  const V linear = hn::Mul(hn::Mul(length, pick(f1, F1c.rate_factor, F0c.rate_factor)), tau);
+  const M small_n = hn::Eq(src.frame(f1, f_small_n, i), one);
+  const V linear = hn::Mul(hn::Mul(length, src.frame(f1, f_rate_factor, i)), tau);
   const V elliptic_part = hn::Mul(psi_scale, hn::Add(hn::Add(D_v, D_sum), hn::IfThenZeroElse(small_n, v_safe)));
   const V psi = hn::Add(linear, elliptic_part);
   const V phase = hn::Add(hn::Add(hn::Abs(v_safe), hn::Abs(linear)),
                           hn::Mul(hn::Abs(psi_scale), hn::Add(hn::Add(hn::Abs(D_v), hn::Abs(D_sum)), hn::IfThenZeroElse(small_n, hn::Abs(v_safe)))));
   constexpr double factor = detail::free_flight_step<double>::estimate_factor;
   const V estimate = hn::Mul(hn::Set(d, eps), hn::Add(hn::Set(d, 2 * factor), hn::Mul(hn::Mul(hn::Set(d, factor), phase),
-                                                                                     pick(f1, F1c.amplification, F0c.amplification))));
+                                                                                     src.frame(f1, f_amplification, i))));
   ok = hn::And(ok, hn::Le(estimate, hn::Set(d, accuracy)));
   ok = hn::And(ok, hn::Le(hn::Abs(psi), hn::Set(d, 39000.0)));  // Highway's sin and cos hold there
 
@@ -411,24 +495,63 @@ void advance_lanes(const constants& c, double accuracy, free_body_block& b, std:
 }
 #endif
 
-// The whole block: vectors of lanes, then the lanes they did not take one by one.
-void AdvanceBlock(const exact_free_rotation<double>& rotor, free_body_block& b, std::size_t* vectorised, std::size_t* one_by_one) {
+// The whole block: vectors of lanes, then the lanes they did not take one by one. Lane i's rotor is
+// rotors[i], or `rotor` for every lane when rotors is null.
+void AdvanceBlock(const exact_free_rotation<double>& rotor, const exact_free_rotation<double>* const* rotors, free_body_block& b,
+                  std::size_t* vectorised, std::size_t* one_by_one) {
+  const auto rotor_of = [&](std::size_t i) -> const exact_free_rotation<double>& { return rotors ? *rotors[i] : rotor; };
   std::size_t fast = 0;
 #ifdef ROTLIE_BATCH_VECTOR
   const D d;
   const std::size_t lanes = hn::Lanes(d);
-  const auto& c = rotor.constants();
+  const exact_free_rotation<double>& first = rotor_of(0);
+  const auto& c = first.constants();
+  // a lone body takes the vector step too (a whole vector for it: about 19 rotation stages against the
+  // scalar step's 14–18), so that a body's result never depends on how many bodies share its block
   if (!c.spherical) {
+    // the last vector's lanes beyond n: copies of lane 0 (finite values, computed and ignored); 64 is a
+    // multiple of every vector width
+    const std::size_t filled = (b.n + lanes - 1) / lanes * lanes;
+    for (std::size_t i = b.n; i < filled; ++i) {
+      for (std::size_t k = 0; k < 3; ++k) b.G[k][i] = b.G[k][0];
+      for (std::size_t e = 0; e < 9; ++e) b.Q[e][i] = b.Q[e][0];
+      b.t[i] = b.t[0];
+    }
     HWY_ALIGN double done[free_body_block::capacity];
-    for (std::size_t i = 0; i < b.n; i += lanes) advance_lanes(c, rotor.accuracy(), b, i, done + i);
+    if (!rotors) {
+      const shared_table table(c);
+      const one_body_source src{table};
+      for (std::size_t i = 0; i < b.n; i += lanes) advance_lanes(c, src, first.accuracy(), b, i, done + i);
+    } else {
+      // each lane's numbers; a lane whose step is built otherwise than lane 0's (another order of the
+      // axes, another accuracy) is marked unusable in both frames: the vector code leaves it to its rotor
+      lane_table table;
+      double frame[2][frame_fields], body[body_fields];
+      for (std::size_t i = 0; i < filled; ++i) {
+        const exact_free_rotation<double>& r = rotor_of(i < b.n ? i : 0);
+        const auto& ci = r.constants();
+        const bool alike = same_structure(ci, c) && r.accuracy() == first.accuracy();
+        flatten(ci.frames[0], frame[0]);
+        flatten(ci.frames[1], frame[1]);
+        flatten(ci, body);
+        for (std::size_t f = 0; f < 2; ++f) {
+          if (!alike) frame[f][f_usable] = 0;
+          for (std::size_t field = 0; field < frame_fields; ++field) table.frame[f][field][i] = frame[f][field];
+        }
+        for (std::size_t field = 0; field < body_fields; ++field) table.body[field][i] = body[field];
+        table.eI[i] = ci.eI;
+      }
+      const lane_source src{table};
+      for (std::size_t i = 0; i < b.n; i += lanes) advance_lanes(c, src, first.accuracy(), b, i, done + i);
+    }
     for (std::size_t i = 0; i < b.n; ++i)
       if (done[i] != 0) ++fast;
-      else advance_one(rotor, b, i);
+      else advance_one(rotor_of(i), b, i);
   } else {
-    for (std::size_t i = 0; i < b.n; ++i) advance_one(rotor, b, i);
+    for (std::size_t i = 0; i < b.n; ++i) advance_one(rotor_of(i), b, i);
   }
 #else
-  for (std::size_t i = 0; i < b.n; ++i) advance_one(rotor, b, i);
+  for (std::size_t i = 0; i < b.n; ++i) advance_one(rotor_of(i), b, i);
 #endif
   if (vectorised) *vectorised = fast;
   if (one_by_one) *one_by_one = b.n - fast;
@@ -448,11 +571,28 @@ namespace rotlie::models {
 HWY_EXPORT(AdvanceBlock);
 HWY_EXPORT(TargetName);
 
-void advance_block(const exact_free_rotation<double>& rotor, free_body_block& block, std::size_t* vectorised, std::size_t* one_by_one) {
+namespace {
+void check_count(const free_body_block& block) {
   if (block.n > free_body_block::capacity)
     throw std::invalid_argument("advance_block: " + std::to_string(block.n) + " bodies in a block of " +
                                 std::to_string(free_body_block::capacity));
-  HWY_DYNAMIC_DISPATCH(AdvanceBlock)(rotor, block, vectorised, one_by_one);
+}
+}  // namespace
+
+void advance_block(const exact_free_rotation<double>& rotor, free_body_block& block, std::size_t* vectorised, std::size_t* one_by_one) {
+  check_count(block);
+  HWY_DYNAMIC_DISPATCH(AdvanceBlock)(rotor, nullptr, block, vectorised, one_by_one);
+}
+
+void advance_block(const exact_free_rotation<double>* const* rotors, free_body_block& block, std::size_t* vectorised,
+                   std::size_t* one_by_one) {
+  check_count(block);
+  if (block.n == 0) {
+    if (vectorised) *vectorised = 0;
+    if (one_by_one) *one_by_one = 0;
+    return;
+  }
+  HWY_DYNAMIC_DISPATCH(AdvanceBlock)(*rotors[0], rotors, block, vectorised, one_by_one);
 }
 
 std::string batch_target() {

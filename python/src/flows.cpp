@@ -165,8 +165,8 @@ py::tuple exact_flow(const std::string& body, const rows& G0, const rows& Q0, co
         for (py::ssize_t first = 0; first < in.n; first += static_cast<py::ssize_t>(block.capacity)) {
           if (cancel.requested()) return;
           block.n = static_cast<std::size_t>(std::min<py::ssize_t>(static_cast<py::ssize_t>(block.capacity), in.n - first));
-          for (std::size_t i = 0; i < (block.n + 7) / 8 * 8 && i < block.capacity; ++i) {
-            const py::ssize_t row = first + static_cast<py::ssize_t>(i < block.n ? i : 0);
+          for (std::size_t i = 0; i < block.n; ++i) {
+            const py::ssize_t row = first + static_cast<py::ssize_t>(i);
             for (std::size_t k = 0; k < 3; ++k) block.G[k][i] = in.G[3 * row + static_cast<py::ssize_t>(k)];
             for (std::size_t j = 0; j < 9; ++j) block.Q[j][i] = in.Q[9 * row + static_cast<py::ssize_t>(j)];
             block.t[i] = times[row];

@@ -33,31 +33,37 @@ struct free_body_block {
   std::size_t n = 0;
 };
 
-/// Every body of the block ← its exact free motion over its time. The lanes from n up to the next
-/// multiple of 8 are padding (finite values, computed and ignored); the rest are not read. Counts of the two paths in `vectorised`
-/// and `one_by_one` when not null.
+/// Every body of the block ← its exact free motion over its time (lanes 0 … n−1; the lanes after them
+/// are the block's scratch: the last vector's padding). Counts of the two paths in `vectorised` and
+/// `one_by_one` when not null.
 void advance_block(const exact_free_rotation<double>& rotor, free_body_block& block, std::size_t* vectorised = nullptr,
+                   std::size_t* one_by_one = nullptr);
+
+/// The same with each body's own rotor, rotors[i] for lane i: bodies of one shape whose moments differ
+/// in their last digits (LAMMPS computes each molecule's moments from its atoms), each advanced as
+/// advance_block would with its rotor alone, the vector step reading each lane's constants. A lane
+/// whose rotor orders its axes otherwise than rotors[0]'s, or has another accuracy, takes its scalar step.
+void advance_block(const exact_free_rotation<double>* const* rotors, free_body_block& block, std::size_t* vectorised = nullptr,
                    std::size_t* one_by_one = nullptr);
 
 /// The vector target the blocks use on this CPU ("AVX2", "AVX3", …), or "none" (one by one).
 std::string batch_target();
 
-/// Bodies 0 … n−1 of one kind, each given by state(i) (a body_state<double>&), advanced over the same
-/// time t, block by block; estimate(i, e) receives each error estimate when given.
-template <class State>
-void advance_all(const exact_free_rotation<double>& rotor, std::size_t n, State&& state, double t,
-                 const std::function<void(std::size_t, double)>& estimate = {}) {
+namespace detail {
+// Bodies 0 … n−1, state(i) each, copied into blocks of 64, each block advanced by advance(first, block)
+// and copied back; estimate(i, e) receives each error estimate when given.
+template <class State, class Advance>
+void advance_in_blocks(std::size_t n, State&& state, double t, const std::function<void(std::size_t, double)>& estimate, Advance&& advance) {
   free_body_block block;
   for (std::size_t first = 0; first < n; first += free_body_block::capacity) {
     block.n = std::min(free_body_block::capacity, n - first);
-    const std::size_t filled = std::min(free_body_block::capacity, (block.n + 7) / 8 * 8);
-    for (std::size_t i = 0; i < filled; ++i) {
-      const body_state<double>& s = state(first + (i < block.n ? i : 0));  // padding: copies of the first
+    for (std::size_t i = 0; i < block.n; ++i) {
+      const body_state<double>& s = state(first + i);
       for (std::size_t k = 0; k < 3; ++k) block.G[k][i] = s.G[k];
       for (std::size_t e = 0; e < 9; ++e) block.Q[e][i] = s.Q.a[e];
       block.t[i] = t;
     }
-    advance_block(rotor, block);
+    advance(first, block);
     for (std::size_t i = 0; i < block.n; ++i) {
       body_state<double>& s = state(first + i);
       for (std::size_t k = 0; k < 3; ++k) s.G[k] = block.G[k][i];
@@ -65,6 +71,22 @@ void advance_all(const exact_free_rotation<double>& rotor, std::size_t n, State&
       if (estimate) estimate(first + i, block.estimate[i]);
     }
   }
+}
+}  // namespace detail
+
+/// Bodies 0 … n−1 of one kind, each given by state(i) (a body_state<double>&), advanced over the same
+/// time t, block by block; estimate(i, e) receives each error estimate when given.
+template <class State>
+void advance_all(const exact_free_rotation<double>& rotor, std::size_t n, State&& state, double t,
+                 const std::function<void(std::size_t, double)>& estimate = {}) {
+  detail::advance_in_blocks(n, state, t, estimate, [&](std::size_t, free_body_block& block) { advance_block(rotor, block); });
+}
+
+/// The same with each body's own rotor, rotors[i] (advance_block's lanes of own rotors).
+template <class State>
+void advance_all(const exact_free_rotation<double>* const* rotors, std::size_t n, State&& state, double t,
+                 const std::function<void(std::size_t, double)>& estimate = {}) {
+  detail::advance_in_blocks(n, state, t, estimate, [&](std::size_t first, free_body_block& block) { advance_block(rotors + first, block); });
 }
 
 /// Bodies 0 … n−1 of one kind, each state(i), advanced over t by their rotor: all at once for the
