@@ -10,6 +10,7 @@
 
 #include "random_seed.hpp"
 #include "rotlie/models/md_integrators.hpp"
+#include "rotlie/models/scenes/spin_orbit.hpp"
 #include "rotlie/models/scenes/mutual_gravity.hpp"
 
 BOOST_AUTO_TEST_SUITE(mutual_gravity_test)
@@ -184,6 +185,30 @@ BOOST_AUTO_TEST_CASE(sier2_keeps_the_total_angular_momentum_and_is_of_order_two)
   BOOST_TEST_MESSAGE("energy error slope between h and h/2: " << slope);
   BOOST_TEST(slope > 1.8);
   BOOST_TEST(slope < 2.2);
+}
+
+// The spin–orbit scene's torque (spin_orbit_tide: a point mass G M = 1 on a Kepler orbit) is the
+// torque the pair gives the body when its partner is that point mass, along the orbit: two codes, one
+// formula (MacCullagh's), to round-off.
+BOOST_AUTO_TEST_CASE(the_spin_orbit_torque_is_the_pairs_with_a_point_mass) {
+  const vec3<double> moments{0.8, 0.9, 1.0};
+  const spin_orbit_tide<double> tide(moments, 0.1);
+  mat3<double> I{};
+  for (int k = 0; k < 3; ++k) I(k, k) = moments[static_cast<std::size_t>(k)];
+  const gravitating_body<double> point{1.0, {}}, body{1e-9, I};  // the body's mass moves nothing here
+  const auto Q = rotation<double>({0.3, -0.4, std::sqrt(0.75)}, 1.1);
+  for (int j = 0; j < 12; ++j) {
+    const double t = 0.55 * j;
+    const auto o = tide.orbit().at(t);
+    const vec3<double> r{o.r * o.cos_f, o.r * o.sin_f, 0};  // the body seen from the point mass
+    std::vector<rigid_body_state<double>> bodies(1);
+    bodies[0].rot.Q = Q;
+    std::vector<vec3<double>> force(1), torque(1);
+    tide.evaluate(bodies, force, torque, t);
+    const auto g = mutual_gravity_at(point, mat3<double>::identity(), body, Q, r, 1.0, 2);
+    const double size = std::sqrt(dot(torque[0], torque[0]));
+    for (std::size_t k = 0; k < 3; ++k) BOOST_TEST(std::abs(g.M2[k] - torque[0][k]) <= 1e-14 * size, "t = " << t << ", component " << k);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(an_unknown_order_is_refused) {
