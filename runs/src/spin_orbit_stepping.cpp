@@ -45,13 +45,9 @@ spin_outcome<T> step_spin_orbit(const spin_method& m, const models::vec3<T>& I, 
   models::with_md_integrator<T>(m.splitting, kinds, tide, models::unit_system<T>::natural(), [&](const auto& method) {
     auto x = models::spin_orbit_state(start);
     const double cpu0 = models::thread_cpu_seconds();
-    if (obs) {
-      for (long k = 1; k <= steps; ++k) {
-        method.step(x, h);  // the engine writes the clock: x.t is k h to round-off (step_clock.hpp)
-        obs(k, x.t, x.bodies[0].rot);
-      }
-    } else {
-      for (long k = 1; k <= steps; ++k) method.step(x, h);
+    for (long k = 1; k <= steps; ++k) {
+      method.step(x, h);  // the engine writes the clock: x.t is k h to round-off (step_clock.hpp)
+      if (obs) obs(k, x.t, x.bodies[0].rot);
     }
     out.cpu_s = models::thread_cpu_seconds() - cpu0;
     out.state = x.bodies[0].rot;

@@ -45,11 +45,16 @@ mat3<T> ellipsoid_inertia(const T& mass, const T& a, const T& b, const T& c) {
   return I;
 }
 
+/// Throws std::invalid_argument unless the expansion is written at this order.
+inline void check_gravity_order(int order) {
+  if (order != 0 && order != 2) throw std::invalid_argument("mutual gravity: order " + std::to_string(order) + " (0 or 2)");
+}
+
 /// The mutual potential, force and torques truncated at `order` (0 or 2).
 template <class T>
 mutual_gravity<T> mutual_gravity_at(const gravitating_body<T>& b1, const mat3<T>& Q1, const gravitating_body<T>& b2, const mat3<T>& Q2,
                                     const vec3<T>& r, const T& G, int order) {
-  if (order != 0 && order != 2) throw std::invalid_argument("mutual gravity: order " + std::to_string(order) + " (0 or 2)");
+  check_gravity_order(order);
   using std::sqrt;
   const T r2 = dot(r, r), rn = sqrt(r2), r3 = r2 * rn, r5 = r3 * r2, r7 = r5 * r2;
   mutual_gravity<T> out;
@@ -81,7 +86,7 @@ class full_two_body_gravity {
  public:
   full_two_body_gravity(const T& m1, const vec3<T>& I1, const T& m2, const vec3<T>& I2, const T& G, int order)
       : b1_{m1, principal(I1)}, b2_{m2, principal(I2)}, G_(G), order_(order) {
-    mutual_gravity_at(b1_, mat3<T>::identity(), b2_, mat3<T>::identity(), vec3<T>{T(1), T(0), T(0)}, G_, order_);  // the order checked
+    check_gravity_order(order);
   }
 
   bool acts() const { return true; }
