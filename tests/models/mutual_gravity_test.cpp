@@ -1,7 +1,9 @@
 // The mutual gravity of two rigid bodies (mutual_gravity.hpp) against independent expectations: order
 // 0 is Newton's point masses; the force is −∂U/∂r and each torque −∂U/∂θ (U differentiated by central
 // differences in long double, the bodies turned about inertial axes); r × F + M₁ + M₂ = 0 (the total
-// angular momentum's conservation) to round-off; a sphere has no second-degree term.
+// angular momentum's conservation) to round-off; a sphere has no second-degree term; at order 4 the
+// expansion of two clusters of point masses (their integrals summed directly) against the exact sum of
+// their pairs' potentials, the error falling as the truncation says.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -36,8 +38,8 @@ pair_setup random_pair(std::mt19937_64& rng) {
     return vec3<ld>{a[0] / n, a[1] / n, a[2] / n};
   };
   pair_setup p;
-  p.b1 = {5.2L, ellipsoid_inertia<ld>(5.2L, 0.42L, 0.40L, 0.37L)};
-  p.b2 = {0.048L, ellipsoid_inertia<ld>(0.048L, 0.103L, 0.079L, 0.066L)};
+  p.b1 = ellipsoid_body<ld>(5.2L, 0.42L, 0.40L, 0.37L);
+  p.b2 = ellipsoid_body<ld>(0.048L, 0.103L, 0.079L, 0.066L);
   p.Q1 = rotation<ld>(axis(), 3 * u(rng));
   p.Q2 = rotation<ld>(axis(), 3 * u(rng));
   const vec3<ld> d = axis();
@@ -46,6 +48,70 @@ pair_setup random_pair(std::mt19937_64& rng) {
 }
 
 ld norm(const vec3<ld>& v) { return std::sqrt(dot(v, v)); }
+
+// A body made of point masses: its integrals are sums, Σ m ρ^⊗k about the centre of mass, and its
+// mutual potential with another such body is exactly Σ −G mᵢ mⱼ / |xⱼ − xᵢ|.
+struct point_cluster {
+  std::vector<ld> m;
+  std::vector<vec3<ld>> x;  // about the centre of mass, body frame
+};
+
+point_cluster random_cluster(std::mt19937_64& rng, ld mass, ld size, int points) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  point_cluster c;
+  vec3<ld> centre{};
+  ld total = 0;
+  for (int i = 0; i < points; ++i) {
+    c.m.push_back(1 + 0.5L * u(rng));
+    c.x.push_back({size * u(rng), 0.8L * size * u(rng), 0.6L * size * u(rng)});
+    total += c.m.back();
+    for (std::size_t k = 0; k < 3; ++k) centre[k] += c.m.back() * c.x.back()[k];
+  }
+  for (int i = 0; i < points; ++i) {
+    c.m[static_cast<std::size_t>(i)] *= mass / total;
+    for (std::size_t k = 0; k < 3; ++k) c.x[static_cast<std::size_t>(i)][k] -= centre[k] / total;
+  }
+  return c;
+}
+
+template <int K>
+tensor3<ld, K> cluster_integral(const point_cluster& c) {
+  tensor3<ld, K> t{};
+  for (std::size_t i = 0; i < c.m.size(); ++i)
+    for (std::size_t index = 0; index < t.size(); ++index) {
+      ld product = c.m[i];
+      for (std::size_t rest = index, slot = 0; slot < static_cast<std::size_t>(K); ++slot, rest /= 3) product *= c.x[i][rest % 3];
+      t[index] += product;
+    }
+  return t;
+}
+
+gravitating_body<ld> cluster_body(const point_cluster& c) {
+  gravitating_body<ld> b;
+  for (const ld m : c.m) b.mass += m;
+  mat3<ld> J;
+  J.a = cluster_integral<2>(c);
+  const ld trace = J(0, 0) + J(1, 1) + J(2, 2);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) b.inertia(i, j) = (i == j ? trace : 0.0L) - J(i, j);
+  b.third = cluster_integral<3>(c);
+  b.fourth = cluster_integral<4>(c);
+  b.degree = 4;
+  return b;
+}
+
+gravitating_body<ld> lopsided_cluster(std::mt19937_64& rng, ld mass, ld size) { return cluster_body(random_cluster(rng, mass, size, 7)); }
+
+ld exact_cluster_potential(const point_cluster& c1, const mat3<ld>& Q1, const point_cluster& c2, const mat3<ld>& Q2, const vec3<ld>& r) {
+  ld U = 0;
+  for (std::size_t i = 0; i < c1.m.size(); ++i)
+    for (std::size_t j = 0; j < c2.m.size(); ++j) {
+      const auto a = Q1 * c1.x[i], b = Q2 * c2.x[j];
+      const vec3<ld> d{r[0] + b[0] - a[0], r[1] + b[1] - a[1], r[2] + b[2] - a[2]};
+      U -= c1.m[i] * c2.m[j] / norm(d);
+    }
+  return U;
+}
 
 }  // namespace
 
@@ -63,11 +129,13 @@ BOOST_AUTO_TEST_CASE(order_zero_is_newtons_point_masses) {
 BOOST_AUTO_TEST_CASE(force_and_torques_are_the_potentials_derivatives) {
   std::mt19937_64 rng(rotlie::test::test_seed("force_and_torques_are_the_potentials_derivatives"));
   const ld h = 1e-6L;
-  for (int trial = 0; trial < 20; ++trial) {
-    const auto p = random_pair(rng);
-    const auto g = mutual_gravity_at(p.b1, p.Q1, p.b2, p.Q2, p.r, 1.0L, 2);
+  for (int trial = 0; trial < 40; ++trial) {
+    auto p = random_pair(rng);
+    const int order = trial % 2 ? 4 : 2;
+    if (trial % 4 == 3) p.b2 = lopsided_cluster(rng, 0.048L, 0.1L);  // third-degree integrals too
+    const auto g = mutual_gravity_at(p.b1, p.Q1, p.b2, p.Q2, p.r, 1.0L, order);
     const auto U = [&](const vec3<ld>& r, const mat3<ld>& Q1, const mat3<ld>& Q2) {
-      return mutual_gravity_at(p.b1, Q1, p.b2, Q2, r, 1.0L, 2).U;
+      return mutual_gravity_at(p.b1, Q1, p.b2, Q2, r, 1.0L, order).U;
     };
     vec3<ld> F{}, M1{}, M2{};
     for (std::size_t k = 0; k < 3; ++k) {
@@ -88,20 +156,52 @@ BOOST_AUTO_TEST_CASE(force_and_torques_are_the_potentials_derivatives) {
   }
 }
 
+// The expansion of two random clusters of 7 point masses (all integrals nonzero) against the exact
+// sum over their 49 pairs: the error of order N is the first omitted degree's (a degree-n term falls as
+// 1/r^(n+1)): 1/r³ at order 0 (the first degree vanishes about the centres), 1/r⁴ at order 2 (the
+// third degree), 1/r⁶ at order 4 (the fifth), so doubling r divides it by 2³, 2⁴, 2⁶.
+BOOST_AUTO_TEST_CASE(the_expansion_converges_to_the_exact_potential_of_point_clusters) {
+  std::mt19937_64 rng(rotlie::test::test_seed("the_expansion_converges_to_the_exact_potential_of_point_clusters"));
+  for (int trial = 0; trial < 5; ++trial) {
+    const auto c1 = random_cluster(rng, 3.0L, 0.4L, 7), c2 = random_cluster(rng, 0.5L, 0.2L, 7);
+    const auto b1 = cluster_body(c1), b2 = cluster_body(c2);
+    const auto p = random_pair(rng);  // attitudes and a direction
+    for (const int order : {0, 2, 4}) {
+      ld errors[2];
+      for (int k = 0; k < 2; ++k) {
+        const ld scale = k == 0 ? 32.0L : 64.0L;
+        const vec3<ld> r{scale * p.r[0], scale * p.r[1], scale * p.r[2]};
+        errors[k] = std::abs(mutual_gravity_at(b1, p.Q1, b2, p.Q2, r, 1.0L, order).U - exact_cluster_potential(c1, p.Q1, c2, p.Q2, r));
+      }
+      const ld slope = std::log2(errors[0] / errors[1]);
+      BOOST_TEST_MESSAGE("order " << order << ": error " << static_cast<double>(errors[0]) << " at r = 38.4, slope " << static_cast<double>(slope));
+      const int expected = order == 0 ? 3 : order + 2;
+      BOOST_TEST(std::abs(slope - expected) < 0.25, "trial " << trial << ", order " << order << ": slope " << slope);
+    }
+  }
+}
+
+// All three torque and force terms of order 4 balance: r × F + M₁ + M₂ = 0, in double as a run computes it.
 BOOST_AUTO_TEST_CASE(the_total_angular_momentum_is_conserved) {
   std::mt19937_64 rng(rotlie::test::test_seed("the_total_angular_momentum_is_conserved"));
-  for (int trial = 0; trial < 20; ++trial) {
-    const auto q = random_pair(rng);
+  const auto to_double = [](const auto& from, auto& to) {
+    for (std::size_t i = 0; i < from.size(); ++i) to[i] = static_cast<double>(from[i]);
+  };
+  for (int trial = 0; trial < 40; ++trial) {
+    auto q = random_pair(rng);
+    const int order = trial % 2 ? 4 : 2;
+    if (trial % 4 == 3) q.b1 = lopsided_cluster(rng, 5.2L, 0.4L);
     // in double, as a run computes it
-    gravitating_body<double> b1{static_cast<double>(q.b1.mass), {}}, b2{static_cast<double>(q.b2.mass), {}};
+    gravitating_body<double> b1, b2;
+    b1.mass = static_cast<double>(q.b1.mass), b2.mass = static_cast<double>(q.b2.mass);
+    b1.degree = b2.degree = 4;
+    to_double(q.b1.inertia.a, b1.inertia.a), to_double(q.b2.inertia.a, b2.inertia.a);
+    to_double(q.b1.third, b1.third), to_double(q.b2.third, b2.third);
+    to_double(q.b1.fourth, b1.fourth), to_double(q.b2.fourth, b2.fourth);
     mat3<double> Q1, Q2;
     vec3<double> r;
-    for (std::size_t i = 0; i < 9; ++i) {
-      b1.inertia.a[i] = static_cast<double>(q.b1.inertia.a[i]), b2.inertia.a[i] = static_cast<double>(q.b2.inertia.a[i]);
-      Q1.a[i] = static_cast<double>(q.Q1.a[i]), Q2.a[i] = static_cast<double>(q.Q2.a[i]);
-    }
-    for (std::size_t k = 0; k < 3; ++k) r[k] = static_cast<double>(q.r[k]);
-    const auto g = mutual_gravity_at(b1, Q1, b2, Q2, r, 1.0, 2);
+    to_double(q.Q1.a, Q1.a), to_double(q.Q2.a, Q2.a), to_double(q.r, r);
+    const auto g = mutual_gravity_at(b1, Q1, b2, Q2, r, 1.0, order);
     const auto rF = cross(r, g.F);
     const double scale = std::sqrt(dot(g.M1, g.M1)) + std::sqrt(dot(g.M2, g.M2)) + std::sqrt(dot(r, r)) * std::sqrt(dot(g.F, g.F));
     for (std::size_t k = 0; k < 3; ++k) BOOST_TEST(std::abs(rF[k] + g.M1[k] + g.M2[k]) <= 8e-16 * scale, "trial " << trial);
@@ -261,6 +361,14 @@ BOOST_AUTO_TEST_CASE(an_unknown_order_is_refused) {
   const gravitating_body<double> b{1.0, {}};
   const auto I = mat3<double>::identity();
   BOOST_CHECK_THROW(mutual_gravity_at(b, I, b, I, vec3<double>{1, 0, 0}, 1.0, 3), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(order_four_refuses_a_body_given_by_its_inertia_alone) {
+  const gravitating_body<double> given_by_inertia{1.0, ellipsoid_inertia(1.0, 0.3, 0.2, 0.1)}, point{0.1, {}};
+  const auto full = ellipsoid_body(1.0, 0.3, 0.2, 0.1);
+  const auto I = mat3<double>::identity();
+  BOOST_CHECK_THROW(mutual_gravity_at(given_by_inertia, I, full, I, vec3<double>{1, 0, 0}, 1.0, 4), std::invalid_argument);
+  BOOST_CHECK_NO_THROW(mutual_gravity_at(full, I, point, I, vec3<double>{1, 0, 0}, 1.0, 4));
 }
 
 BOOST_AUTO_TEST_SUITE_END()  // mutual_gravity_test

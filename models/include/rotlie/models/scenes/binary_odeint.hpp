@@ -1,0 +1,116 @@
+#pragma once
+// The full two-body problem's equations of motion (binary_system::derivative) as 30 unknowns (r, v,
+// then each body's Q row-major and G), integrated by an adaptive Runge–Kutta method of Boost.Odeint:
+// Runge–Kutta–Fehlberg 7(8) (GUBAS's adaptive method is a 7(8) pair) or Dormand–Prince 5(4), one
+// tolerance as both the absolute and the relative one, from checkpoint to checkpoint.
+// GCC 12's false -Wmaybe-uninitialized inside Odeint's steppers: see spin_orbit_odeint.hpp.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#endif
+#include <boost/numeric/odeint.hpp>
+
+#include <array>
+#include <limits>
+#include <stdexcept>
+
+#include "rotlie/models/scenes/binary_system.hpp"
+#include "rotlie/models/scenes/spin_orbit_odeint.hpp"
+
+namespace rotlie::models {
+
+template <class T>
+using binary_ode_state = std::array<T, 30>;
+
+template <class T>
+binary_ode_state<T> packed(const binary_state<T>& x) {
+  binary_ode_state<T> y{};
+  for (std::size_t k = 0; k < 3; ++k) y[k] = x.r[k], y[3 + k] = x.v[k];
+  for (std::size_t i = 0; i < 2; ++i) {
+    for (std::size_t k = 0; k < 9; ++k) y[6 + 12 * i + k] = x.body[i].Q.a[k];
+    for (std::size_t k = 0; k < 3; ++k) y[15 + 12 * i + k] = x.body[i].G[k];
+  }
+  return y;
+}
+
+template <class T>
+binary_state<T> unpacked(const binary_ode_state<T>& y) {
+  binary_state<T> x;
+  for (std::size_t k = 0; k < 3; ++k) x.r[k] = y[k], x.v[k] = y[3 + k];
+  for (std::size_t i = 0; i < 2; ++i) {
+    for (std::size_t k = 0; k < 9; ++k) x.body[i].Q.a[k] = y[6 + 12 * i + k];
+    for (std::size_t k = 0; k < 3; ++k) x.body[i].G[k] = y[15 + 12 * i + k];
+  }
+  return x;
+}
+
+template <class T>
+class binary_odeint {
+  using dopri5 = boost::numeric::odeint::runge_kutta_dopri5<binary_ode_state<T>, T>;
+  using rkf78 = boost::numeric::odeint::runge_kutta_fehlberg78<binary_ode_state<T>, T>;
+  using controlled_dopri5 = typename boost::numeric::odeint::result_of::make_controlled<dopri5>::type;
+  using controlled_rkf78 = typename boost::numeric::odeint::result_of::make_controlled<rkf78>::type;
+
+ public:
+  binary_odeint(binary_system<T> system, odeint_method method, const T& tol, const T& first_dt)
+      : system_(std::move(system)),
+        method_(method),
+        dt_(first_dt),
+        dopri5_(boost::numeric::odeint::make_controlled(tol, tol, dopri5())),
+        rkf78_(boost::numeric::odeint::make_controlled(tol, tol, rkf78())) {
+    if (!(tol > 0)) throw std::invalid_argument("the tolerance must be positive");
+  }
+
+  const binary_system<T>& system() const { return system_; }
+  long evaluations() const { return evaluations_; }
+  long steps_tried() const { return tried_; }
+
+  /// Advances x from t to t_next (t is set to t_next).
+  void advance(binary_state<T>& x, T& t, const T& t_next) {
+    auto y = packed(x);
+    if (method_ == odeint_method::dopri5)
+      run(dopri5_, y, t, t_next);
+    else
+      run(rkf78_, y, t, t_next);
+    x = unpacked(y);
+  }
+
+ private:
+  template <class Controlled>
+  void run(Controlled& stepper, binary_ode_state<T>& y, T& t, const T& t_next) {
+    namespace ode = boost::numeric::odeint;
+    const auto rhs = [this](const binary_ode_state<T>& in, binary_ode_state<T>& out, const T&) {
+      out = packed(system_.derivative(unpacked(in)));
+      ++evaluations_;
+    };
+    int refused = 0;
+    while (t < t_next) {
+      ++tried_;
+      const bool last = dt_ >= t_next - t;
+      T dt = last ? t_next - t : dt_;
+      const T kept = dt_;
+      if (stepper.try_step(rhs, y, t, dt) == ode::success) {
+        refused = 0;
+        dt_ = last && dt < kept ? kept : dt;  // a step cut to land on the checkpoint does not shrink the next
+        if (last) t = t_next;
+      } else {
+        dt_ = dt;
+        if (++refused > 500) throw std::runtime_error("the adaptive Runge-Kutta step fell below what the tolerance allows");
+      }
+    }
+  }
+
+  binary_system<T> system_;
+  odeint_method method_;
+  T dt_;
+  controlled_dopri5 dopri5_;
+  controlled_rkf78 rkf78_;
+  long evaluations_ = 0, tried_ = 0;
+};
+
+}  // namespace rotlie::models
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
