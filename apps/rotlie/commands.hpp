@@ -130,4 +130,12 @@ struct spin_options {
 };
 int run_spin(const spin_options& options);
 
+/// The full two-body problem (binary asteroids): the strings as typed, checked by runs::binary_setup_of.
+struct binary_options {
+  std::string system, primary, secondary, density, mass, order = "2", G = "6.67430e-20", separation, primary_period, state, integrator, h, T,
+      every = "0";
+  bool json = false;
+};
+int run_binary(const binary_options& options);
+
 }  // namespace rotlie::app

@@ -61,7 +61,7 @@ std::string reworded(const CLI::ParseError& e, const CLI::App* sub) {
     return flag + " takes no value" + (equals == std::string::npos ? "" : ", got '" + what.substr(equals + 3) + "'");
   }
   if (dynamic_cast<const CLI::RequiredError*>(&e) && what.find("subcommand") != std::string::npos)
-    return "a subcommand is required (dims, stages, remainder, solve, integrate, order, exact, md, map, best, bch, sixth, spin or report; see rotlie --help)";
+    return "a subcommand is required (dims, stages, remainder, solve, integrate, order, exact, md, map, best, bch, sixth, spin, binary or report; see rotlie --help)";
   return what;
 }
 
@@ -299,6 +299,34 @@ subcommand add_spin(CLI::App& app, spin_options& spin) {
   return {spin_cmd, [&spin] { return run_spin(spin); }};
 }
 
+// The full two-body problem: two rigid bodies in mutual gravity (binary asteroids).
+subcommand add_binary(CLI::App& app, binary_options& b) {
+  auto* cmd = app.add_subcommand("binary", "Two rigid bodies in mutual gravity, rotation and orbit coupled both ways (the full two-body problem of "
+                                           "binary asteroids); units km, kg, s");
+  cmd->add_option("--system", b.system, "A named system (didymos): its bodies, densities and start; the options below override it");
+  cmd->add_option("--primary", b.primary, "ellipsoid:a,b,c (semi-axes in km, a >= b >= c along x, y, z) or polyhedron:FILE (a shape model in km: "
+                                          "Wavefront OBJ, or 'N_vertices N_facets' then vertices and 1-based facets)");
+  cmd->add_option("--secondary", b.secondary, "As --primary");
+  cmd->add_option("--density", b.density, "kg/m3: one value for both bodies, or RHO1,RHO2");
+  cmd->add_option("--mass", b.mass, "M1,M2 in kg (instead of --density)");
+  cmd->add_option("--order", b.order, "Truncation of the mutual potential in the inertia integrals: 0, 2 or 4 (default 2)");
+  cmd->add_option("--G", b.G, "Gravitational constant in km3 kg-1 s-2 (default 6.67430e-20)");
+  cmd->add_option("--separation", b.separation, "km: a circular mutual orbit in the primary's equatorial plane, frames aligned, the secondary "
+                                                "synchronous (its long axis at the primary), the rate balancing the mutual pull");
+  cmd->add_option("--primary-period", b.primary_period, "Hours: the primary's spin with --separation (default: synchronous)");
+  cmd->add_option("--state", b.state, "A start from a JSON file with r, v (km, km/s), Q1, Q2 (rows), omega1, omega2 (rad/s, body frames): "
+                                      "a run's --json output starts the next");
+  cmd->add_option("--integrator", b.integrator, "SIER2, SIER4, SIER2/X, SIER4/X (rotor X for both bodies: a listed rotor, a reference "
+                                                "scheme, SCHEME:PERM:LABEL solved for each body), KEPLER2, KEPLER4, KEPLER2/X, KEPLER4/X "
+                                                "(Kepler split), RK4, LGVI, odeint-rkf78[:TOL], odeint-dopri5[:TOL] (default TOL 1e-12)")
+      ->required();
+  cmd->add_option("--h", b.h, "The step in seconds (an adaptive method's first trial step and the spacing of its checks)");
+  cmd->add_option("--T", b.T, "Length of the run in seconds, a whole number of steps --h; 0 gives the start's values")->required();
+  cmd->add_option("--every", b.every, "The trajectory every K steps from the start, one JSON line each (t, r, v, Q1, Q2, omega1, omega2, energy)");
+  cmd->add_flag("--json", b.json, "Machine-readable output on stdout (one line after --every's lines)");
+  return {cmd, [&b] { return run_binary(b); }};
+}
+
 // Every subcommand's options, filled by CLI11 while it parses: it keeps pointers to them, so they
 // live as long as the parse and are never moved.
 struct all_options {
@@ -316,6 +344,7 @@ struct all_options {
   bch_options bch;
   sixth_options sixth;
   spin_options spin;
+  binary_options binary;
 };
 
 // The command tree, in the order of rotlie --help.
@@ -323,7 +352,7 @@ std::vector<subcommand> add_subcommands(CLI::App& app, all_options& o) {
   return {add_dims(app, o.dims), add_stages(app, o.stages), add_remainder(app, o.remainder), add_solve(app, o.solve),
           add_integrate(app, o.integrate), add_order(app, o.order), add_exact(app, o.exact), add_md(app, o.md),
           add_report(app, o.report), add_map(app, o.map), add_best(app, o.best), add_bch(app, o.bch), add_sixth(app, o.sixth),
-          add_spin(app, o.spin)};
+          add_spin(app, o.spin), add_binary(app, o.binary)};
 }
 
 // The subcommand argv[1] names, if any.

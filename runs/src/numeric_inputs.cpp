@@ -1,5 +1,7 @@
 #include "rotlie/runs/numeric_inputs.hpp"
 
+#include <cln/integer.h>
+#include <cln/rational.h>
 #include <cln/real.h>
 
 #include <algorithm>
@@ -9,8 +11,13 @@
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/runs/body_names.hpp"
 #include "rotlie/runs/user_input.hpp"
+#include "rotlie/schemes/message_number.hpp"
 
 namespace rotlie::runs {
+
+namespace {
+constexpr double whole_steps_slack = 1e-9;  // T/h of decimals typed from a float (0.333333333333)
+}  // namespace
 
 double positive_number(const std::string& text, const std::string& what) {
   const auto x = lie::parse_exact_number(text);
@@ -62,6 +69,26 @@ void check_numeric_scales(const std::string& inertia, const std::string& g0, con
   if (rate * T > limit)
     throw bad_input("--T: the body turns by |G0| T / I_min = " + shown(rate * T) + " radians, outside the range " +
                     range_text());
+}
+
+long whole_steps(const std::string& h_text, const std::string& T_text, double h, double T) {
+  const auto exact_h = lie::parse_exact_number(h_text), exact_T = lie::parse_exact_number(T_text);
+  double steps = std::round(T / h);
+  bool whole = false;
+  if (exact_h && exact_T) {
+    const cln::cl_RA q = *exact_T / *exact_h;
+    whole = cln::denominator(q) == 1;
+  }
+  whole = whole || (steps >= 1 && std::abs(T / h - steps) <= whole_steps_slack * steps);
+  if (steps > max_steps || T / h > max_steps) throw bad_input("--T/--h is over the limit of 2e9 steps");
+  if (!whole || steps < 1) {
+    const double below = std::floor(T / h), above = std::ceil(T / h);
+    std::string choices = below >= 1 ? "--T " + schemes::message_number(below * h) + " or " : std::string();
+    choices += "--T " + schemes::message_number(above * h);
+    throw bad_input("--T " + one_line(T_text) + " is not a whole number of steps --h " + one_line(h_text) + " (T/h = " + schemes::message_number(T / h) +
+                    "): take " + choices + ", or a step that divides T");
+  }
+  return static_cast<long>(steps);
 }
 
 }  // namespace rotlie::runs

@@ -25,8 +25,6 @@ namespace {
 
 using quad = boost::multiprecision::float128;
 
-constexpr double max_steps = 2e9;  // T/h: about an hour of SIER2 in double
-constexpr double whole_steps_slack = 1e-9;  // T/h of decimals typed from a float (0.333333333333)
 // An embedded pair's error estimate is a difference of two results, each rounded to a few ε of the
 // state (of size 1 here): a tolerance below 5 ε cannot be met; 1e-18 in long double (9 ε) serves the
 // references of the report and the benches.
@@ -44,27 +42,6 @@ double epsilon_of_scalar(const std::string& scalar) {
   if (scalar == "long-double") return epsilon_of<long double>();
   if (scalar == "float128") return epsilon_of<boost::multiprecision::float128>();
   return epsilon_of<double>();
-}
-
-// T/h as a whole number of steps, or a refusal naming the two nearest runs that are.
-long whole_steps(const std::string& h_text, const std::string& T_text, double h, double T) {
-  const auto exact_h = lie::parse_exact_number(h_text), exact_T = lie::parse_exact_number(T_text);
-  double steps = std::round(T / h);
-  bool whole = false;
-  if (exact_h && exact_T) {
-    const cln::cl_RA q = *exact_T / *exact_h;
-    whole = cln::denominator(q) == 1;
-  }
-  whole = whole || (steps >= 1 && std::abs(T / h - steps) <= whole_steps_slack * steps);
-  if (steps > max_steps || T / h > max_steps) throw bad_input("--T/--h is over the limit of 2e9 steps");
-  if (!whole || steps < 1) {
-    const double below = std::floor(T / h), above = std::ceil(T / h);
-    std::string choices = below >= 1 ? "--T " + schemes::message_number(below * h) + " or " : std::string();
-    choices += "--T " + schemes::message_number(above * h);
-    throw bad_input("--T " + one_line(T_text) + " is not a whole number of steps --h " + one_line(h_text) + " (T/h = " + schemes::message_number(T / h) +
-                    "): take " + choices + ", or a step that divides T");
-  }
-  return static_cast<long>(steps);
 }
 
 // The conserved quantity of spin_check, sampled after each step (see spin_orbit_run.hpp).

@@ -139,6 +139,18 @@ void make_files() {
   fs::create_directories(d / "folder.scheme");
   std::string big(2 << 20, '#');
   write(d / "huge.scheme", big);
+  // shape models: an open one, a tetrahedron turned inside out, one naming vertex 9 of 4, one of quadrilaterals
+  const std::string tetra_vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+  write(d / "open.obj", "v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\n"
+                        "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\n");  // an octahedron less a facet
+  write(d / "inverted.obj", tetra_vertices + "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
+  write(d / "out-of-range.obj", tetra_vertices + "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 9\n");
+  write(d / "quads.obj", tetra_vertices + "f 1 3 2 4\n");
+  // a state falling almost straight at the primary (its pericentre inside both bodies)
+  const std::string aligned = R"("Q1": [[1,0,0],[0,1,0],[0,0,1]], "Q2": [[1,0,0],[0,1,0],[0,0,1]], "omega1": [0,0,0], "omega2": [0,0,0])";
+  write(d / "falling.json", R"({"r": [1.2, 0, 0], "v": [-1e-4, 1e-6, 0], )" + aligned + "}");
+  write(d / "not-rotation.json", R"({"r": [1.2, 0, 0], "v": [0, 1e-4, 0], "Q1": [[1,0,0],[0,1,0],[0,0,2]], "Q2": [[1,0,0],[0,1,0],[0,0,1]], "omega1": [0,0,0], "omega2": [0,0,0]})");
+  write(d / "nan.json", R"({"r": [1.2, 0, 0], "v": [0, NaN, 0], )" + aligned + "}");
 }
 
 // clang-format off
@@ -371,6 +383,34 @@ const std::vector<bad_input> cases = {
   {{"exact", "--inertia", "water,1,1", "--T", "1"}, usage, "--inertia"},
   {{"exact", "--inertia", "1e400,1e400,1e400", "--T", "1"}, usage, "outside the range"},
   {{"exact", "--inertia", "water", "--T", "1", "--T", "2"}, usage, "--T is given more than once"},
+
+  // binary
+  {{"binary", "--integrator", "SIER2", "--T", "0"}, usage, "--primary and --secondary are required"},
+  {{"binary", "--system", "ganymede", "--integrator", "SIER2", "--T", "0"}, usage, "no binary system is called 'ganymede'"},
+  {{"binary", "--system", "didymos", "--separation", "0.4", "--integrator", "SIER2", "--T", "0"}, usage, "the bodies overlap"},
+  {{"binary", "--system", "didymos", "--primary", "ellipsoid:-0.4,0.3,0.2", "--integrator", "SIER2", "--T", "0"}, usage, "--primary ellipsoid: a semi-axis must be positive"},
+  {{"binary", "--system", "didymos", "--primary", "ellipsoid:0.4,0,0", "--integrator", "SIER2", "--T", "0"}, usage, "must be positive"},
+  {{"binary", "--system", "didymos", "--primary", "ellipsoid:0.3,0.4,0.2", "--integrator", "SIER2", "--T", "0"}, usage, "a >= b >= c"},
+  {{"binary", "--system", "didymos", "--secondary", "sphere:0.1", "--integrator", "SIER2", "--T", "0"}, usage, "neither ellipsoid:a,b,c (km) nor polyhedron:FILE"},
+  {{"binary", "--system", "didymos", "--primary", "polyhedron:@DIR@/open.obj", "--integrator", "SIER2", "--T", "0"}, usage, "not a closed, consistently oriented surface"},
+  {{"binary", "--system", "didymos", "--primary", "polyhedron:@DIR@/inverted.obj", "--integrator", "SIER2", "--T", "0"}, usage, "the facets face inward"},
+  {{"binary", "--system", "didymos", "--primary", "polyhedron:@DIR@/out-of-range.obj", "--integrator", "SIER2", "--T", "0"}, usage, "names vertex 9 of 4"},
+  {{"binary", "--system", "didymos", "--primary", "polyhedron:@DIR@/quads.obj", "--integrator", "SIER2", "--T", "0"}, usage, "facets must be triangles"},
+  {{"binary", "--system", "didymos", "--primary", "polyhedron:@DIR@/missing.obj", "--integrator", "SIER2", "--T", "0"}, usage, "missing.obj"},
+  {{"binary", "--system", "didymos", "--state", "@DIR@/falling.json", "--integrator", "SIER2", "--T", "0"}, usage, "they collide"},
+  {{"binary", "--system", "didymos", "--state", "@DIR@/not-rotation.json", "--integrator", "SIER2", "--T", "0"}, usage, "\"Q1\" is not a rotation"},
+  {{"binary", "--system", "didymos", "--state", "@DIR@/nan.json", "--integrator", "SIER2", "--T", "0"}, usage, "not JSON"},
+  {{"binary", "--system", "didymos", "--density", "nan", "--integrator", "SIER2", "--T", "0"}, usage, "--density 'nan' is not a finite number"},
+  {{"binary", "--system", "didymos", "--density", "0", "--integrator", "SIER2", "--T", "0"}, usage, "--density must be positive"},
+  {{"binary", "--system", "didymos", "--mass", "5e11", "--integrator", "SIER2", "--T", "0"}, usage, "--mass takes two values"},
+  {{"binary", "--system", "didymos", "--order", "3", "--integrator", "SIER2", "--T", "0"}, usage, "--order must be 0, 2 or 4"},
+  {{"binary", "--system", "didymos", "--integrator", "SIER3", "--T", "0"}, usage, "unknown integrator 'SIER3'"},
+  {{"binary", "--system", "didymos", "--integrator", "KEPLER3", "--T", "0"}, usage, "the Kepler splits are"},
+  {{"binary", "--system", "didymos", "--integrator", "odeint-rkf78:1e-20", "--T", "0"}, usage, "the tolerance must be within"},
+  {{"binary", "--system", "didymos", "--integrator", "SIER2", "--h", "0", "--T", "100"}, usage, "--h must be positive"},
+  {{"binary", "--system", "didymos", "--integrator", "SIER2", "--h", "7", "--T", "100"}, usage, "is not a whole number of steps"},
+  {{"binary", "--system", "didymos", "--integrator", "SIER2", "--T", "100"}, usage, "--h is required"},
+  {{"binary", "--system", "didymos", "--integrator", "SIER4/NOPE", "--h", "10", "--T", "100"}, usage, "--integrator SIER4/NOPE"},
 
   // md
   {{"md", "--integrator", "SIER2", "--h", "1"}, usage, "--scene is required"},

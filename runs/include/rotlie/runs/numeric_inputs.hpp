@@ -18,4 +18,11 @@ models::vec3<double> initial_momentum(const std::string& text);
 /// |G0| T / I_min stay within the range above. Throws bad_input.
 void check_numeric_scales(const std::string& inertia, const std::string& g0, const std::string& total);
 
+/// The largest T/h a run takes (about an hour of SIER2 in double on the spin-orbit scene).
+inline constexpr double max_steps = 2e9;
+
+/// T/h as a whole number of steps (exactly for exact decimals or rationals, or within 1e-9 relative
+/// for decimals typed from a float), or bad_input naming --T and --h with the two nearest runs that are.
+long whole_steps(const std::string& h_text, const std::string& T_text, double h, double T);
+
 }  // namespace rotlie::runs

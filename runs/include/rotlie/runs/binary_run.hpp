@@ -1,0 +1,111 @@
+#pragma once
+// The full two-body problem on the library floor (`rotlie binary`, `rotlie sweep`, Python's
+// rotlie.binary): two rigid bodies in mutual gravity (binary_bodies.hpp), an integrator named as md
+// and spin name theirs, the run checked, carried out and judged. Units km, kg, s.
+//
+// Integrators:
+//   SIER2, SIER4, SIER2/X, SIER4/X, MRDL, …   TV splittings of H = T_orbit + T_rot + U (md's names; X a
+//                                            rotor or a scheme table, solved for each body's moments)
+//   KEPLER2, KEPLER4, KEPLER2/X, KEPLER4/X    the same compositions of H = H_Kepler + T_rot + (U − U₀):
+//                                            the point masses' Kepler orbit drifts exactly (Wisdom–Holman)
+//   RK4, LGVI                                 GUBAS's fixed-step methods (binary_anchors.hpp)
+//   odeint-rkf78[:TOL], odeint-dopri5[:TOL]   Boost.Odeint's adaptive methods (default TOL 1e-12)
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rotlie/models/md_integrators.hpp"
+#include "rotlie/models/scenes/binary_system.hpp"
+#include "rotlie/models/scenes/spin_orbit_odeint.hpp"
+#include "rotlie/runs/binary_bodies.hpp"
+#include "rotlie/schemes/scheme_table.hpp"
+
+namespace rotlie::runs {
+
+/// What a user types (the command line's contract, the strings as given; empty: not given).
+struct binary_request {
+  std::string system;                   ///< a named system (binary_system_presets), or empty
+  std::string primary, secondary;       ///< ellipsoid:a,b,c | polyhedron:FILE
+  std::string density;                  ///< kg/m³: one value for both, or two
+  std::string mass;                     ///< kg: M1,M2 (instead of the density)
+  std::string order = "2";              ///< 0, 2 or 4
+  std::string G = "6.67430e-20";        ///< km³ kg⁻¹ s⁻²
+  std::string separation;               ///< km: the circular start
+  std::string primary_period;           ///< hours: the primary's spin in the circular start
+  std::string state_file;               ///< JSON with r, v, Q1, Q2, omega1, omega2 (instead of the circular start)
+  std::string integrator, h, T;         ///< h and T in seconds (h not needed with T = 0)
+  std::string every = "0";              ///< a trajectory sample every K steps (0: none)
+};
+
+struct binary_method {
+  enum class kind { splitting, rk4, lgvi, odeint };
+  std::string name;
+  kind family = kind::splitting;
+  models::md_integrator splitting;                    ///< the TV table and the rotor's kind (splittings)
+  bool kepler = false;                                ///< the Kepler split's drift
+  std::optional<schemes::scheme_table> rotor[2];      ///< each body's rotor table (a table rotor)
+  models::odeint_method ode = models::odeint_method::rkf78;
+  double tolerance = 1e-12;
+};
+
+/// The checked run.
+struct binary_setup {
+  std::string system;  ///< the named system, or empty
+  binary_body primary, secondary;
+  double G = 6.67430e-20;
+  int order = 2;
+  models::binary_state<double> start;
+  binary_method method;
+  double h = 0, T = 0;  ///< s (h = T/steps, the step used)
+  long steps = 0;
+  long every = 0;
+
+  models::binary_system<double> system_model() const;
+};
+
+/// Throws bad_input (one line naming the option) for anything that does not describe a run: unknown
+/// names, non-positive sizes or masses, bodies that overlap at the start, an orbit whose pericentre
+/// lies within the bodies' inner radii (it must collide), NaN.
+binary_setup binary_setup_of(const binary_request& request);
+
+/// One sample of the trajectory (and the final state).
+struct binary_sample {
+  double t = 0;
+  models::binary_state<double> x;
+  double energy = 0;
+};
+
+/// What tells whether a run can be trusted: the energy's and the total angular momentum's largest
+/// relative changes over the steps; "unstable" when the energy error reaches the mutual potential's own
+/// fluctuation along the run (as md's dH/dV ≥ 100 %) beyond round-off, or a value is not finite.
+struct binary_check {
+  double max_rel_energy_error = 0, max_rel_angular_momentum_error = 0;
+  double potential_fluctuation = 0;  ///< max − min of U over the samples (J)
+  bool unstable = false;
+  bool round_off_floor = false;  ///< a step moves the pair by less than 1000 ε: lost in round-off
+  std::vector<std::string> warnings;
+};
+
+struct binary_result {
+  binary_setup setup;
+  binary_sample end;
+  models::vec3<double> angular_momentum{};
+  models::mutual_gravity<double> mutual;  ///< at the final state
+  binary_check check;
+  double cpu_s = 0;
+  long evaluations = 0;  ///< mutual-gravity evaluations
+};
+
+/// The bodies came into contact: the run stops (the CLI exits 1 saying when).
+struct binary_contact : std::runtime_error {
+  binary_contact(double t, long step);
+  double t;
+  long step;
+};
+
+/// Runs the setup; `sample` (if given) receives the state at steps 0, every, 2·every, … Throws
+/// binary_contact, or std::runtime_error when an adaptive run exhausts its step budget.
+binary_result binary_run(const binary_setup& setup, const std::function<void(const binary_sample&)>& sample = {});
+
+}  // namespace rotlie::runs

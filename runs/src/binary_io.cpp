@@ -1,0 +1,160 @@
+#include "rotlie/runs/binary_io.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "rotlie/runs/output_file.hpp"
+#include "rotlie/runs/text_file.hpp"
+#include "rotlie/runs/user_input.hpp"
+#include "rotlie/schemes/message_number.hpp"
+
+namespace rotlie::runs {
+
+namespace {
+
+using models::mat3;
+using models::vec3;
+using nlohmann::json;
+
+constexpr std::size_t state_file_limit = std::size_t(1) << 20;
+
+json rows(const mat3<double>& Q) {
+  return json::array({{Q(0, 0), Q(0, 1), Q(0, 2)}, {Q(1, 0), Q(1, 1), Q(1, 2)}, {Q(2, 0), Q(2, 1), Q(2, 2)}});
+}
+
+json state_fields(const models::binary_state<double>& x, const models::binary_system<double>& sys) {
+  return {{"r", x.r},
+          {"v", x.v},
+          {"Q1", rows(x.body[0].Q)},
+          {"Q2", rows(x.body[1].Q)},
+          {"omega1", models::angular_velocity(sys.moments(0), x.body[0].G)},
+          {"omega2", models::angular_velocity(sys.moments(1), x.body[1].G)}};
+}
+
+vec3<double> vector_field(const json& j, const std::string& key, const std::string& where) {
+  if (!j.contains(key)) throw bad_input(where + ": the field \"" + key + "\" is missing");
+  const auto& v = j[key];
+  if (!v.is_array() || v.size() != 3) throw bad_input(where + ": \"" + key + "\" must be three numbers");
+  vec3<double> out;
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (!v[k].is_number()) throw bad_input(where + ": \"" + key + "\" must be three numbers");
+    out[k] = v[k].get<double>();
+    if (!std::isfinite(out[k])) throw bad_input(where + ": \"" + key + "\" is not finite");
+  }
+  return out;
+}
+
+mat3<double> rotation_field(const json& j, const std::string& key, const std::string& where) {
+  if (!j.contains(key)) throw bad_input(where + ": the field \"" + key + "\" is missing");
+  const auto& m = j[key];
+  if (!m.is_array() || m.size() != 3) throw bad_input(where + ": \"" + key + "\" must be a 3x3 matrix, row by row");
+  mat3<double> Q;
+  for (int i = 0; i < 3; ++i) {
+    const auto& row = m[static_cast<std::size_t>(i)];
+    if (!row.is_array() || row.size() != 3) throw bad_input(where + ": \"" + key + "\" must be a 3x3 matrix, row by row");
+    for (int k = 0; k < 3; ++k) {
+      if (!row[static_cast<std::size_t>(k)].is_number()) throw bad_input(where + ": \"" + key + "\" must hold numbers");
+      Q(i, k) = row[static_cast<std::size_t>(k)].get<double>();
+      if (!std::isfinite(Q(i, k))) throw bad_input(where + ": \"" + key + "\" is not finite");
+    }
+  }
+  const auto P = transpose(Q) * Q;
+  double gap = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) gap = std::max(gap, std::abs(P(i, k) - (i == k ? 1.0 : 0.0)));
+  const double det = Q(0, 0) * (Q(1, 1) * Q(2, 2) - Q(1, 2) * Q(2, 1)) - Q(0, 1) * (Q(1, 0) * Q(2, 2) - Q(1, 2) * Q(2, 0)) +
+                     Q(0, 2) * (Q(1, 0) * Q(2, 1) - Q(1, 1) * Q(2, 0));
+  if (gap > 1e-9 || det < 0)
+    throw bad_input(where + ": \"" + key + "\" is not a rotation (|QᵀQ − 1| = " + schemes::message_number(gap) + ", det " + schemes::message_number(det) + ")");
+  for (int pass = 0; pass < 2; ++pass) {  // Newton steps toward the nearest rotation: Q (3 − QᵀQ)/2
+    auto half = transpose(Q) * Q;
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) half(i, k) = ((i == k ? 3.0 : 0.0) - half(i, k)) / 2;
+    Q = Q * half;
+  }
+  return Q;
+}
+
+}  // namespace
+
+json binary_json(const binary_result& r) {
+  const auto& s = r.setup;
+  const auto sys = s.system_model();
+  json j = {{"system", s.system.empty() ? json(nullptr) : json(s.system)},
+            {"primary", s.primary.spec},
+            {"secondary", s.secondary.spec},
+            {"order", s.order},
+            {"G", s.G},
+            {"integrator", s.method.name},
+            {"h", s.h},
+            {"T", s.T},
+            {"steps", s.steps},
+            {"evaluations", r.evaluations},
+            {"masses", {sys.body(0).mass, sys.body(1).mass}},
+            {"moments", {sys.moments(0), sys.moments(1)}},
+            {"densities", {s.primary.density, s.secondary.density}},
+            {"t", r.end.t}};
+  j.update(state_fields(r.end.x, sys));
+  j["energy"] = r.end.energy;
+  j["energy_start"] = sys.energy(s.start);
+  j["angular_momentum"] = r.angular_momentum;
+  j["max_rel_energy_error"] = r.check.max_rel_energy_error;
+  j["max_rel_angular_momentum_error"] = r.check.max_rel_angular_momentum_error;
+  j["cpu_s"] = r.cpu_s;
+  j["mutual"] = {{"U", r.mutual.U}, {"F", r.mutual.F}, {"M1", r.mutual.M1}, {"M2", r.mutual.M2}};
+  j["unstable"] = r.check.unstable;
+  j["round_off_floor"] = r.check.round_off_floor;
+  j["warnings"] = r.check.warnings;
+  return j;
+}
+
+json binary_sample_json(const binary_sample& s, const models::binary_system<double>& sys) {
+  json j = {{"t", s.t}};
+  j.update(state_fields(s.x, sys));
+  j["energy"] = s.energy;
+  return j;
+}
+
+std::string binary_text(const binary_result& r) {
+  using schemes::message_number;
+  const auto& s = r.setup;
+  const auto sys = s.system_model();
+  const double d = std::sqrt(models::dot(r.end.x.r, r.end.x.r));
+  std::ostringstream out;
+  out << "binary" << (s.system.empty() ? "" : " " + s.system) << ": " << s.primary.spec << " (" << message_number(sys.body(0).mass) << " kg) and "
+      << s.secondary.spec << " (" << message_number(sys.body(1).mass) << " kg), order " << s.order << "\n"
+      << s.method.name << ", h = " << message_number(s.h) << " s, T = " << message_number(s.T) << " s (" << s.steps << " steps, " << r.evaluations
+      << " gravity evaluations)\n"
+      << "final separation " << message_number(d) << " km; relative errors: energy " << message_number(r.check.max_rel_energy_error)
+      << ", angular momentum " << message_number(r.check.max_rel_angular_momentum_error) << (r.check.unstable ? ": UNSTABLE" : "") << "\n"
+      << "CPU " << message_number(r.cpu_s) << " s\n";
+  return out.str();
+}
+
+models::binary_state<double> read_binary_state(const std::string& path, const models::binary_system<double>& sys) {
+  const std::string where = "--state " + printable_path(path);
+  std::string text;
+  try {
+    text = read_bounded_file(path, state_file_limit);
+  } catch (const std::runtime_error& e) {
+    throw bad_input("--state: " + one_line(e.what()));
+  }
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw bad_input(where + ": not JSON (" + one_line(e.what()) + ")");
+  }
+  if (!j.is_object()) throw bad_input(where + ": a JSON object with r, v, Q1, Q2, omega1, omega2 is expected");
+  models::binary_state<double> x;
+  x.r = vector_field(j, "r", where);
+  x.v = vector_field(j, "v", where);
+  x.body[0].Q = rotation_field(j, "Q1", where);
+  x.body[1].Q = rotation_field(j, "Q2", where);
+  const auto w1 = vector_field(j, "omega1", where), w2 = vector_field(j, "omega2", where);
+  for (std::size_t k = 0; k < 3; ++k) x.body[0].G[k] = sys.moments(0)[k] * w1[k], x.body[1].G[k] = sys.moments(1)[k] * w2[k];
+  if (!(models::dot(x.r, x.r) > 0)) throw bad_input(where + ": r must not be zero");
+  return x;
+}
+
+}  // namespace rotlie::runs

@@ -1,0 +1,360 @@
+#include "rotlie/runs/binary_run.hpp"
+
+#include <cln/rational.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "rotlie/lie/exact_number.hpp"
+#include "rotlie/models/closed_form_rotors.hpp"
+#include "rotlie/models/composition.hpp"
+#include "rotlie/models/cpu_time.hpp"
+#include "rotlie/models/md_trajectory.hpp"
+#include "rotlie/models/scenes/binary_anchors.hpp"
+#include "rotlie/models/scenes/binary_odeint.hpp"
+#include "rotlie/models/scenes/binary_splitting.hpp"
+#include "rotlie/models/table_rotor.hpp"
+#include "rotlie/runs/binary_io.hpp"
+#include "rotlie/runs/body_names.hpp"
+#include "rotlie/runs/md_methods.hpp"
+#include "rotlie/runs/numeric_inputs.hpp"
+#include "rotlie/runs/user_input.hpp"
+#include "rotlie/schemes/message_number.hpp"
+#include "rotlie/schemes/reference_schemes.hpp"
+
+namespace rotlie::runs {
+
+namespace {
+
+using models::vec3;
+using schemes::message_number;
+
+constexpr double eps = std::numeric_limits<double>::epsilon();
+constexpr double tolerance_floor_eps = 5;     // an embedded pair cannot meet less (spin_orbit_run.cpp)
+constexpr double round_off_turn_eps = 1000;   // a step that moves the pair by less is lost in round-off
+constexpr double round_off_per_step = 10;     // what a step's roundings can add to a sum, in ε
+constexpr double max_checks = 1e4;            // the conserved quantities' samples per run
+constexpr double adaptive_steps_per_orbit = 1e6;  // an adaptive run's budget (tried steps per mutual orbit)
+
+std::string moments_text(const vec3<double>& I) {
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "%.17g,%.17g,%.17g", I[0], I[1], I[2]);
+  return buffer;
+}
+
+binary_method method_named(const std::string& name, const vec3<double>& I1, const vec3<double>& I2) {
+  binary_method m;
+  m.name = name;
+  for (const auto& [prefix, kind] : {std::pair<std::string, models::odeint_method>{"odeint-dopri5", models::odeint_method::dopri5},
+                                     {"odeint-rkf78", models::odeint_method::rkf78}}) {
+    if (name.rfind(prefix, 0) != 0 || (name.size() > prefix.size() && name[prefix.size()] != ':')) continue;
+    m.family = binary_method::kind::odeint;
+    m.ode = kind;
+    if (name.size() > prefix.size()) m.tolerance = positive_number(name.substr(prefix.size() + 1), "--integrator " + one_line(name) + ": the tolerance");
+    const double floor = tolerance_floor_eps * eps;
+    if (m.tolerance > 1e-2 || m.tolerance < floor)
+      throw bad_input("--integrator " + one_line(name) + ": the tolerance must be within " + message_number(floor) + " … 1e-2 (5 ε of double)");
+    return m;
+  }
+  if (name == "RK4") return m.family = binary_method::kind::rk4, m;
+  if (name == "LGVI") return m.family = binary_method::kind::lgvi, m;
+  std::string splitting = name;
+  if (name.rfind("KEPLER", 0) == 0) {
+    m.kepler = true;
+    splitting = "SIER" + name.substr(6);
+    if (splitting != "SIER2" && splitting != "SIER4" && splitting.rfind("SIER2/", 0) != 0 && splitting.rfind("SIER4/", 0) != 0)
+      throw bad_input("--integrator: unknown integrator '" + one_line(name) + "' (the Kepler splits are KEPLER2, KEPLER4, KEPLER2/X, KEPLER4/X)");
+  }
+  const vec3<double>* moments[2] = {&I1, &I2};
+  for (int b = 0; b < 2; ++b) {
+    md_method resolved;
+    try {
+      resolved = md_method_named(splitting, numeric_body(moments_text(*moments[b])));
+    } catch (const bad_input& e) {
+      std::string why = e.what();
+      if (why.rfind("--integrator: unknown integrator", 0) == 0 && why.back() == ')')
+        why = why.substr(0, why.size() - 1) + ", KEPLER2, KEPLER4, KEPLER2/X, KEPLER4/X, RK4, LGVI, odeint-rkf78[:TOL], odeint-dopri5[:TOL])";
+      throw bad_input((b == 1 && why.find("--integrator") == 0 ? "the secondary: " : "") + why);
+    }
+    m.splitting = resolved.spec;
+    m.rotor[b] = std::move(resolved.rotor);
+  }
+  return m;
+}
+
+std::vector<double> number_list(const std::string& text, const std::string& what) {
+  std::vector<double> out;
+  std::size_t start = 0;
+  while (true) {
+    const auto comma = text.find(',', start);
+    out.push_back(positive_number(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start), what));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+double norm(const vec3<double>& v) { return std::sqrt(models::dot(v, v)); }
+
+// The circular start: r along x, the frames aligned (the secondary's long axis at the primary), the
+// orbit's rate balancing the mutual pull at that configuration, the secondary synchronous.
+models::binary_state<double> circular_start(const models::binary_system<double>& sys, double separation, double primary_spin) {
+  models::binary_state<double> x;
+  x.r = {separation, 0, 0};
+  const double pull = -sys.gravity(x).F[0];
+  if (!(pull > 0)) throw bad_input("--separation: the bodies do not attract each other at this separation");
+  const double n = std::sqrt(pull / (sys.reduced_mass() * separation));
+  x.v = {0, n * separation, 0};
+  x.body[0].G = {0, 0, (primary_spin > 0 ? primary_spin : n) * sys.moments(0)[2]};
+  x.body[1].G = {0, 0, n * sys.moments(1)[2]};
+  return x;
+}
+
+}  // namespace
+
+binary_contact::binary_contact(double time, long at_step)
+    : std::runtime_error("the bodies touch at t = " + message_number(time) + " s (step " + std::to_string(at_step) + "): the run stops there"),
+      t(time),
+      step(at_step) {}
+
+models::binary_system<double> binary_setup::system_model() const { return {primary.body, secondary.body, G, order}; }
+
+binary_setup binary_setup_of(const binary_request& given) {
+  binary_request r = given;
+  binary_setup s;
+  if (!r.system.empty()) {
+    const auto& preset = binary_system_named(r.system);
+    s.system = preset.name;
+    if (r.primary.empty()) r.primary = preset.primary;
+    if (r.secondary.empty()) r.secondary = preset.secondary;
+    if (r.density.empty() && r.mass.empty()) r.density = message_number(preset.density1) + "," + message_number(preset.density2);
+    if (r.separation.empty() && r.state_file.empty()) r.separation = message_number(preset.separation);
+    if (r.primary_period.empty() && r.state_file.empty()) r.primary_period = message_number(preset.primary_period);
+  }
+  if (r.primary.empty() || r.secondary.empty()) throw bad_input("--primary and --secondary are required (or --system NAME)");
+  s.primary = binary_shape_named(r.primary, "--primary");
+  s.secondary = binary_shape_named(r.secondary, "--secondary");
+  if (!r.density.empty() && !r.mass.empty()) throw bad_input("--density and --mass exclude each other: give one");
+  if (r.density.empty() && r.mass.empty()) throw bad_input("--density RHO (kg/m3, one or two values) or --mass M1,M2 (kg) is required");
+  if (!r.density.empty()) {
+    const auto rho = number_list(r.density, "--density");
+    if (rho.size() > 2) throw bad_input("--density takes one value (both bodies) or two, got '" + one_line(r.density) + "'");
+    s.primary = with_density(s.primary, rho[0]);
+    s.secondary = with_density(s.secondary, rho.back());
+  } else {
+    const auto m = number_list(r.mass, "--mass");
+    if (m.size() != 2) throw bad_input("--mass takes two values M1,M2 in kg, got '" + one_line(r.mass) + "'");
+    s.primary = with_mass(s.primary, m[0]);
+    s.secondary = with_mass(s.secondary, m[1]);
+  }
+  s.order = static_cast<int>(integer_in_range(r.order, "--order", 0, 4));
+  if (s.order % 2) throw bad_input("--order must be 0, 2 or 4, got '" + one_line(r.order) + "'");
+  s.G = positive_number(r.G, "--G");
+  const auto sys = s.system_model();
+  if (!r.state_file.empty() && !r.separation.empty()) throw bad_input("--state and --separation exclude each other: give one");
+  if (!r.state_file.empty()) {
+    s.start = read_binary_state(r.state_file, sys);
+  } else if (!r.separation.empty()) {
+    const double R = positive_number(r.separation, "--separation");
+    const double spin = r.primary_period.empty() ? 0 : 2 * std::acos(-1.0) / (3600 * positive_number(r.primary_period, "--primary-period"));
+    if (R <= s.primary.inner_radius + s.secondary.inner_radius || bodies_touch(s.primary, models::mat3<double>::identity(), s.secondary, models::mat3<double>::identity(), {R, 0, 0}))
+      throw bad_input("--separation " + one_line(r.separation) + " km: the bodies overlap (their bounding radii are " + message_number(s.primary.bounding_radius) +
+                      " and " + message_number(s.secondary.bounding_radius) + " km)");
+    s.start = circular_start(sys, R, spin);
+  } else {
+    throw bad_input("the start is required: --separation R (km) or --state FILE");
+  }
+  if (!r.primary_period.empty() && r.separation.empty()) throw bad_input("--primary-period goes with --separation (a --state file gives omega1)");
+  // the start: apart, and on an orbit that does not surely collide
+  if (bodies_touch(s.primary, s.start.body[0].Q, s.secondary, s.start.body[1].Q, s.start.r))
+    throw bad_input("--state: the bodies overlap at the start (|r| = " + message_number(norm(s.start.r)) + " km)");
+  {
+    const double GM = s.G * sys.total_mass(), d = norm(s.start.r), v2 = models::dot(s.start.v, s.start.v);
+    const auto L = models::cross(s.start.r, s.start.v);
+    const double energy = v2 / 2 - GM / d, p = models::dot(L, L) / GM;
+    const double e = std::sqrt(std::max(0.0, 1 + 2 * energy * p / GM));
+    const double pericentre = p / (1 + e);
+    const bool reaches = energy < 0 || models::dot(s.start.r, s.start.v) < 0;
+    if (reaches && pericentre < s.primary.inner_radius + s.secondary.inner_radius)
+      throw bad_input("the orbit's pericentre (" + message_number(pericentre) + " km, e = " + message_number(e) + ") lies within the bodies' inner radii (" +
+                      message_number(s.primary.inner_radius + s.secondary.inner_radius) + " km): they collide");
+  }
+  if (r.integrator.empty()) throw bad_input("--integrator is required");
+  s.method = method_named(r.integrator, sys.moments(0), sys.moments(1));
+  if (r.T.empty()) throw bad_input("--T is required (seconds; 0 for the start's values)");
+  const auto T_exact = lie::parse_exact_number(r.T);
+  if (T_exact && cln::zerop(*T_exact)) {
+    s.T = 0, s.steps = 0;
+    if (!r.h.empty()) s.h = positive_number(r.h, "--h");
+  } else {
+    s.T = positive_number(r.T, "--T");
+    if (r.h.empty()) throw bad_input("--h is required (seconds) when --T is not 0");
+    s.h = positive_number(r.h, "--h");
+    s.steps = whole_steps(r.h, r.T, s.h, s.T);
+    s.h = s.T / static_cast<double>(s.steps);
+  }
+  s.every = integer_in_range(r.every, "--every", 0, std::numeric_limits<long>::max());
+  if (s.every > 0 && static_cast<double>(s.steps / s.every) > models::max_trajectory_samples)
+    throw bad_input("--every " + one_line(r.every) + " keeps " + message_number(static_cast<double>(s.steps / s.every)) +
+                    " samples of the trajectory, over the limit of 1e7: take a larger --every");
+  return s;
+}
+
+namespace {
+
+// The conserved quantities, sampled; CPU spent here is not the method's.
+class conservation_watch {
+ public:
+  conservation_watch(const models::binary_system<double>& sys, const models::binary_state<double>& start) : sys_(sys) {
+    E0_ = sys.energy(start);
+    L0_ = sys.angular_momentum(start);
+    U_low_ = U_high_ = sys.gravity(start).U;
+    scale_ = std::abs(sys.kinetic_energy(start)) + std::abs(U_low_);
+  }
+
+  double sample(const models::binary_state<double>& x) {
+    const double before = models::thread_cpu_seconds();
+    const double U = sys_.gravity(x).U, E = sys_.kinetic_energy(x) + U;
+    const auto L = sys_.angular_momentum(x);
+    const double dL = norm({L[0] - L0_[0], L[1] - L0_[1], L[2] - L0_[2]}) / norm(L0_);
+    max_dE_ = std::max(max_dE_, std::isfinite(E) ? std::abs(E - E0_) : std::numeric_limits<double>::infinity());
+    max_dL_ = std::max(max_dL_, std::isfinite(dL) ? dL : std::numeric_limits<double>::infinity());
+    U_low_ = std::min(U_low_, U), U_high_ = std::max(U_high_, U);
+    ++samples_;
+    spent_ += models::thread_cpu_seconds() - before;
+    return E;
+  }
+
+  double spent() const { return spent_; }
+
+  binary_check judged(const binary_setup& s) const {
+    binary_check c;
+    c.max_rel_energy_error = max_dE_ / std::abs(E0_);
+    c.max_rel_angular_momentum_error = max_dL_;
+    c.potential_fluctuation = U_high_ - U_low_;
+    const auto sys = s.system_model();
+    double fastest = norm(s.start.v) / norm(s.start.r);
+    for (int b = 0; b < 2; ++b) fastest = std::max(fastest, norm(models::angular_velocity(sys.moments(b), s.start.body[b].G)));
+    c.round_off_floor = s.steps > 0 && fastest * s.h < round_off_turn_eps * eps;
+    if (c.round_off_floor)
+      c.warnings.push_back("one step moves the pair by " + message_number(fastest * s.h / eps) + " ε only: the step's change is lost in round-off (take a larger step)");
+    const double reach = std::max(1000.0, round_off_per_step * static_cast<double>(s.steps)) * eps * scale_;
+    const bool finite = std::isfinite(max_dE_) && std::isfinite(max_dL_);
+    c.unstable = !finite || (!c.round_off_floor && max_dE_ > reach && max_dE_ >= c.potential_fluctuation && s.steps > 0);
+    if (c.unstable)
+      c.warnings.push_back(finite ? "the energy changed by " + message_number(max_dE_) + " J, as much as the mutual potential's own fluctuation (" +
+                                        message_number(c.potential_fluctuation) + " J): the step is beyond the integrator's stable or accurate range; the result cannot be trusted"
+                                  : std::string("the energy or the angular momentum is no longer finite: the run diverged; the result cannot be trusted"));
+    return c;
+  }
+
+ private:
+  const models::binary_system<double>& sys_;
+  double E0_, U_low_, U_high_, scale_;
+  vec3<double> L0_;
+  double max_dE_ = 0, max_dL_ = 0, spent_ = 0;
+  long samples_ = 0;
+};
+
+// The stepping loop, whatever the method: contact after every step, the conserved quantities at most
+// max_checks times (and at the end), samples every K steps.
+template <class Step>
+binary_result run_loop(const binary_setup& s, Step&& step, const std::function<void(const binary_sample&)>& sample) {
+  const auto sys = s.system_model();
+  binary_result out;
+  out.setup = s;
+  conservation_watch watch(sys, s.start);
+  auto x = s.start;
+  if (sample && s.every > 0) sample({0.0, x, sys.energy(x)});
+  const long check_every = std::max(1L, static_cast<long>(std::ceil(static_cast<double>(s.steps) / max_checks)));
+  double sampling = 0;
+  const double begin = models::thread_cpu_seconds();
+  for (long k = 1; k <= s.steps; ++k) {
+    step(x);
+    if (bodies_touch(s.primary, x.body[0].Q, s.secondary, x.body[1].Q, x.r)) throw binary_contact(static_cast<double>(k) * s.h, k);
+    if (k % check_every == 0 || k == s.steps) watch.sample(x);
+    if (sample && s.every > 0 && k % s.every == 0) {
+      const double before = models::thread_cpu_seconds();
+      sample({static_cast<double>(k) * s.h, x, sys.energy(x)});
+      sampling += models::thread_cpu_seconds() - before;
+    }
+  }
+  out.cpu_s = std::max(0.0, models::thread_cpu_seconds() - begin - watch.spent() - sampling);
+  out.end = {s.T, x, sys.energy(x)};
+  out.angular_momentum = sys.angular_momentum(x);
+  out.mutual = sys.gravity(x);
+  out.check = watch.judged(s);
+  return out;
+}
+
+}  // namespace
+
+binary_result binary_run(const binary_setup& s, const std::function<void(const binary_sample&)>& sample) {
+  const auto sys = s.system_model();
+  const auto& m = s.method;
+  switch (m.family) {
+    case binary_method::kind::rk4: {
+      const models::binary_rk4<double> rk4(sys);
+      auto r = run_loop(s, [&](models::binary_state<double>& x) { rk4.step(x, s.h); }, sample);
+      r.evaluations = 4 * s.steps;
+      return r;
+    }
+    case binary_method::kind::lgvi: {
+      const models::binary_lgvi<double> lgvi(sys);
+      models::mutual_gravity<double> g;
+      bool valid = false;
+      auto r = run_loop(s, [&](models::binary_state<double>& x) { lgvi.step(x, s.h, g, valid); }, sample);
+      r.evaluations = s.steps + (s.steps > 0 ? 1 : 0);
+      return r;
+    }
+    case binary_method::kind::odeint: {
+      models::binary_odeint<double> ode(sys, m.ode, m.tolerance, s.h > 0 ? s.h : 1.0);
+      const double period = 2 * std::acos(-1.0) * norm(s.start.r) / std::max(norm(s.start.v), std::numeric_limits<double>::min());
+      const double budget = adaptive_steps_per_orbit * (s.T / period + 1);
+      double t = 0;
+      auto r = run_loop(
+          s,
+          [&](models::binary_state<double>& x) {
+            ode.advance(x, t, t + s.h);
+            if (static_cast<double>(ode.steps_tried()) > budget)
+              throw std::runtime_error("the adaptive run used its budget of " + message_number(budget) + " steps by t = " + message_number(t) +
+                                       " s: the tolerance asks for more steps than the run can afford (raise it)");
+          },
+          sample);
+      r.evaluations = ode.evaluations();
+      return r;
+    }
+    case binary_method::kind::splitting:
+      break;
+  }
+  const auto tv = *schemes::reference_scheme(m.splitting.tv_table);
+  const auto drift = m.kepler ? models::binary_drift::kepler : models::binary_drift::straight;
+  const auto with_rotors = [&](auto rotor_of) {
+    using rotor = decltype(rotor_of(0));
+    const models::composition<models::binary_splitting<double, rotor>> method(tv, models::binary_splitting<double, rotor>(sys, rotor_of(0), rotor_of(1), drift));
+    models::binary_split_state<double> state{s.start};
+    auto r = run_loop(
+        s,
+        [&](models::binary_state<double>& x) {
+          state.x = x;
+          method.step(state, s.h);
+          x = state.x;
+        },
+        sample);
+    r.evaluations = static_cast<long>(method.cost()) * s.steps + (s.steps > 0 ? 1 : 0);
+    return r;
+  };
+  if (!m.splitting.table_rotor())
+    return models::with_closed_form_rotor<double>(m.splitting.rotor, [&](auto type) {
+      using R = typename decltype(type)::type;
+      return with_rotors([&](int b) { return R(sys.moments(b)); });
+    });
+  return with_rotors([&](int b) {
+    if (!m.rotor[b]) throw std::logic_error("binary_run: the rotor table was not resolved");
+    return models::table_rotor<double>(*m.rotor[b], sys.moments(b));
+  });
+}
+
+}  // namespace rotlie::runs

@@ -1,0 +1,124 @@
+// `rotlie binary` end to end: the JSON contract (issue 33) and the start's values at --T 0 against
+// closed forms, every integrator family on the Didymos system against a tight RKF78 run, a run
+// continued from its own output, a polyhedron against the ellipsoid it approximates, bodies that
+// touch in mid-run (exit 1, saying when), and bad input as one line with exit status 2.
+#include <boost/test/unit_test.hpp>
+
+#include "cli_support.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+BOOST_AUTO_TEST_SUITE(binary_cli_test)
+
+using namespace rotlie::test_cli;
+
+namespace {
+
+nlohmann::json binary_json(const std::string& args) {
+  const auto r = run("binary " + args + " --json");
+  BOOST_TEST_REQUIRE(r.status == 0, "rotlie binary " << args << ": " << r.err);
+  return nlohmann::json::parse(r.out);
+}
+
+double distance(const nlohmann::json& a, const nlohmann::json& b) {
+  double d = 0;
+  for (const char* key : {"r", "v"})
+    for (std::size_t k = 0; k < 3; ++k) d = std::max(d, std::abs(a[key][k].get<double>() - b[key][k].get<double>()) * (key[0] == 'v' ? 1e4 : 1.0));
+  for (const char* key : {"Q1", "Q2"})
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t k = 0; k < 3; ++k) d = std::max(d, std::abs(a[key][i][k].get<double>() - b[key][i][k].get<double>()));
+  return d;
+}
+
+const std::string didymos = "--system didymos --order 2";
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(the_json_has_the_contracts_fields_and_the_start_at_T_0) {
+  const auto j = binary_json("--primary ellipsoid:0.4,0.38,0.35 --secondary ellipsoid:0.1,0.08,0.06 --density 2000,2500 --separation 1.3 "
+                             "--primary-period 2.5 --integrator SIER2 --T 0");
+  for (const char* key : {"masses", "moments", "t", "r", "v", "Q1", "Q2", "omega1", "omega2", "energy", "angular_momentum", "max_rel_energy_error",
+                          "max_rel_angular_momentum_error", "cpu_s", "mutual"})
+    BOOST_TEST(j.contains(key), key);
+  for (const char* key : {"U", "F", "M1", "M2"}) BOOST_TEST(j["mutual"].contains(key), key);
+  const double pi = std::acos(-1.0), G = 6.67430e-20;
+  const double M1 = 2000 * 1e9 * 4 * pi / 3 * 0.4 * 0.38 * 0.35, M2 = 2500 * 1e9 * 4 * pi / 3 * 0.1 * 0.08 * 0.06;
+  BOOST_TEST(j["masses"][0].get<double>() == M1, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(j["masses"][1].get<double>() == M2, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(j["moments"][0][2].get<double>() == M1 * (0.4 * 0.4 + 0.38 * 0.38) / 5, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(j["t"].get<double>() == 0.0);
+  BOOST_TEST(j["r"][0].get<double>() == 1.3);
+  BOOST_TEST(j["Q1"][0][0].get<double>() == 1.0);
+  BOOST_TEST(j["omega1"][2].get<double>() == 2 * pi / (2.5 * 3600), boost::test_tools::tolerance(1e-14));
+  // the circular rate balances the pull: μ n² R = −F_x, and the secondary turns with it
+  const double mu = M1 * M2 / (M1 + M2), n = j["v"][1].get<double>() / 1.3;
+  BOOST_TEST(mu * n * n * 1.3 == -j["mutual"]["F"][0].get<double>(), boost::test_tools::tolerance(1e-13));
+  BOOST_TEST(j["omega2"][2].get<double>() == n, boost::test_tools::tolerance(1e-13));
+  // MacCullagh: U = −G M1 M2 / R (1 + the bodies' second-degree terms, here a few per cent)
+  const double U0 = -G * M1 * M2 / 1.3;
+  BOOST_TEST(j["mutual"]["U"].get<double>() < U0);
+  BOOST_TEST(j["mutual"]["U"].get<double>() > 1.05 * U0);
+  // aligned frames on the x axis: no torque
+  for (std::size_t k = 0; k < 3; ++k) BOOST_TEST(std::abs(j["mutual"]["M2"][k].get<double>()) <= 1e-20 * std::abs(U0));
+}
+
+BOOST_AUTO_TEST_CASE(every_integrator_family_agrees_with_rkf78_on_didymos) {
+  // five mutual orbits (11.9 h each) of the Didymos system at order 2
+  const std::string T = "214200";
+  const auto reference = binary_json(didymos + " --integrator odeint-rkf78:1e-13 --h 600 --T " + T);
+  for (const auto& [name, h, tolerance] : {std::tuple{"SIER2", "10", 2e-3}, std::tuple{"SIER4", "60", 1e-5}, std::tuple{"KEPLER2", "30", 1e-3},
+                                           std::tuple{"KEPLER4", "120", 1e-5}, std::tuple{"SIER4/ABCBA2:ABC", "60", 1e-2}, std::tuple{"RK4", "20", 1e-5},
+                                           std::tuple{"LGVI", "10", 2e-3}, std::tuple{"odeint-dopri5:1e-11", "600", 1e-5}}) {
+    const auto j = binary_json(didymos + " --integrator " + name + " --h " + h + " --T " + T);
+    const double d = distance(j, reference);
+    BOOST_TEST_MESSAGE(name << " at h = " << h << " s: distance from RKF78 " << d << ", energy error " << j["max_rel_energy_error"] << ", angular momentum "
+                            << j["max_rel_angular_momentum_error"] << ", " << j["cpu_s"] << " s");
+    BOOST_TEST(d < tolerance, name);
+    BOOST_TEST(j["unstable"] == false, name);
+    const std::string n = name;
+    if (n != "RK4" && n.rfind("odeint", 0) != 0) BOOST_TEST(j["max_rel_angular_momentum_error"].get<double>() < 1e-13, name);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_run_continues_from_its_own_output) {
+  const auto whole = binary_json(didymos + " --integrator SIER4 --h 60 --T 7200");
+  const auto half = binary_json(didymos + " --integrator SIER4 --h 60 --T 3600");
+  const auto path = fs::temp_directory_path() / ("rotlie-binary-state-" + std::to_string(::getpid()) + ".json");
+  std::ofstream(path) << half.dump();
+  const auto rest = binary_json(didymos + " --integrator SIER4 --h 60 --T 3600 --state " + path.string());
+  fs::remove(path);
+  BOOST_TEST(distance(rest, whole) < 1e-12);
+}
+
+BOOST_AUTO_TEST_CASE(the_trajectory_lines_start_at_the_start) {
+  const auto r = run("binary " + didymos + " --integrator KEPLER2 --h 60 --T 600 --every 5 --json");
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  std::istringstream lines(r.out);
+  std::string line;
+  std::vector<nlohmann::json> rows;
+  while (std::getline(lines, line)) rows.push_back(nlohmann::json::parse(line));
+  BOOST_TEST_REQUIRE(rows.size() == 4u);  // t = 0, 300, 600, then the run's JSON
+  BOOST_TEST(rows[0]["t"].get<double>() == 0.0);
+  BOOST_TEST(rows[2]["t"].get<double>() == 600.0);
+  BOOST_TEST(rows[3]["t"].get<double>() == 600.0);
+  BOOST_TEST(distance(rows[2], rows[3]) == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(bodies_that_touch_stop_the_run_and_say_when) {
+  // a secondary ball grazing the primary's equator (pericentre 0.3 km, inside the primary's
+  // cross-section of radius b = 0.3 km plus the ball's 0.05 km): contact before the pericentre
+  const auto path = fs::temp_directory_path() / ("rotlie-binary-graze-" + std::to_string(::getpid()) + ".json");
+  std::ofstream(path) << R"({"r": [1.0, 0, 0], "v": [0, 7.9e-5, 0], "Q1": [[1,0,0],[0,1,0],[0,0,1]], "Q2": [[1,0,0],[0,1,0],[0,0,1]],
+                          "omega1": [0, 0, 0], "omega2": [0, 0, 0]})";
+  const auto r = run("binary --primary ellipsoid:0.4,0.3,0.2 --secondary ellipsoid:0.05,0.05,0.05 --density 2000 --integrator SIER2 --h 10 --T 20000 --state " +
+                     path.string());
+  fs::remove(path);
+  BOOST_TEST(r.status == 1, r.err);
+  BOOST_TEST(r.err.find("the bodies touch at t = ") != std::string::npos, r.err);
+  BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+}
+
+BOOST_AUTO_TEST_SUITE_END()  // binary_cli_test
