@@ -9,8 +9,11 @@
 namespace rotlie::app {
 
 int run_binary(const binary_options& o) {
-  const auto setup = runs::binary_setup_of({o.system, o.primary, o.secondary, o.density, o.mass, o.order, o.G, o.separation, o.primary_period, o.state,
-                                            o.integrator, o.h, o.T, o.every});
+  runs::binary_request request;
+  request.system = o.system, request.primary = o.primary, request.secondary = o.secondary, request.density = o.density, request.mass = o.mass;
+  request.order = o.order, request.G = o.G, request.separation = o.separation, request.primary_period = o.primary_period;
+  request.state_file = o.state, request.integrator = o.integrator, request.h = o.h, request.T = o.T, request.every = o.every;
+  const auto setup = runs::binary_setup_of(request);
   const auto sys = setup.system_model();
   const auto r = runs::binary_run(setup, [&](const runs::binary_sample& s) { std::cout << runs::binary_sample_json(s, sys).dump() << "\n"; });
   for (const auto& w : r.check.warnings) std::cerr << "rotlie: warning: " << w << "\n";

@@ -138,4 +138,10 @@ struct binary_options {
 };
 int run_binary(const binary_options& options);
 
+struct sweep_options {
+  std::string in, out;
+  bool resume = false;
+};
+int run_sweep(const sweep_options& options);
+
 }  // namespace rotlie::app

@@ -61,7 +61,7 @@ std::string reworded(const CLI::ParseError& e, const CLI::App* sub) {
     return flag + " takes no value" + (equals == std::string::npos ? "" : ", got '" + what.substr(equals + 3) + "'");
   }
   if (dynamic_cast<const CLI::RequiredError*>(&e) && what.find("subcommand") != std::string::npos)
-    return "a subcommand is required (dims, stages, remainder, solve, integrate, order, exact, md, map, best, bch, sixth, spin, binary or report; see rotlie --help)";
+    return "a subcommand is required (dims, stages, remainder, solve, integrate, order, exact, md, map, best, bch, sixth, spin, binary, sweep or report; see rotlie --help)";
   return what;
 }
 
@@ -327,6 +327,17 @@ subcommand add_binary(CLI::App& app, binary_options& b) {
   return {cmd, [&b] { return run_binary(b); }};
 }
 
+// Many binary runs, one line each, over MPI ranks when started by mpirun.
+subcommand add_sweep(CLI::App& app, sweep_options& s) {
+  auto* cmd = app.add_subcommand("sweep", "Many binary runs from a JSON-lines file (one object of binary's options per line, "
+                                          "\"state\" a file or the state itself), one result line each in the input's order; shared among "
+                                          "MPI ranks under mpirun; resumable");
+  cmd->add_option("--in", s.in, "The runs: a JSON-lines file")->required();
+  cmd->add_option("--out", s.out, "The results: a JSON-lines file (a header naming the input, then one line per run)")->required();
+  cmd->add_flag("--resume", s.resume, "Continue the results file of the same input after a kill");
+  return {cmd, [&s] { return run_sweep(s); }};
+}
+
 // Every subcommand's options, filled by CLI11 while it parses: it keeps pointers to them, so they
 // live as long as the parse and are never moved.
 struct all_options {
@@ -345,6 +356,7 @@ struct all_options {
   sixth_options sixth;
   spin_options spin;
   binary_options binary;
+  sweep_options sweep;
 };
 
 // The command tree, in the order of rotlie --help.
@@ -352,7 +364,8 @@ std::vector<subcommand> add_subcommands(CLI::App& app, all_options& o) {
   return {add_dims(app, o.dims), add_stages(app, o.stages), add_remainder(app, o.remainder), add_solve(app, o.solve),
           add_integrate(app, o.integrate), add_order(app, o.order), add_exact(app, o.exact), add_md(app, o.md),
           add_report(app, o.report), add_map(app, o.map), add_best(app, o.best), add_bch(app, o.bch), add_sixth(app, o.sixth),
-          add_spin(app, o.spin), add_binary(app, o.binary)};
+          add_spin(app, o.spin), add_binary(app, o.binary),
+          add_sweep(app, o.sweep)};
 }
 
 // The subcommand argv[1] names, if any.

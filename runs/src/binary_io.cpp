@@ -139,6 +139,10 @@ models::binary_state<double> read_binary_state(const std::string& path, const mo
   } catch (const std::runtime_error& e) {
     throw bad_input("--state: " + one_line(e.what()));
   }
+  return parse_binary_state(text, where, sys);
+}
+
+models::binary_state<double> parse_binary_state(const std::string& text, const std::string& where, const models::binary_system<double>& sys) {
   json j;
   try {
     j = json::parse(text);

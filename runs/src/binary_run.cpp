@@ -130,8 +130,9 @@ binary_setup binary_setup_of(const binary_request& given) {
     if (r.primary.empty()) r.primary = preset.primary;
     if (r.secondary.empty()) r.secondary = preset.secondary;
     if (r.density.empty() && r.mass.empty()) r.density = message_number(preset.density1) + "," + message_number(preset.density2);
-    if (r.separation.empty() && r.state_file.empty()) r.separation = message_number(preset.separation);
-    if (r.primary_period.empty() && r.state_file.empty()) r.primary_period = message_number(preset.primary_period);
+    const bool own_start = !r.state_file.empty() || !r.state_text.empty();
+    if (r.separation.empty() && !own_start) r.separation = message_number(preset.separation);
+    if (r.primary_period.empty() && !own_start) r.primary_period = message_number(preset.primary_period);
   }
   if (r.primary.empty() || r.secondary.empty()) throw bad_input("--primary and --secondary are required (or --system NAME)");
   s.primary = binary_shape_named(r.primary, "--primary");
@@ -153,8 +154,11 @@ binary_setup binary_setup_of(const binary_request& given) {
   if (s.order % 2) throw bad_input("--order must be 0, 2 or 4, got '" + one_line(r.order) + "'");
   s.G = positive_number(r.G, "--G");
   const auto sys = s.system_model();
-  if (!r.state_file.empty() && !r.separation.empty()) throw bad_input("--state and --separation exclude each other: give one");
-  if (!r.state_file.empty()) {
+  if (!r.state_file.empty() && !r.state_text.empty()) throw bad_input("the state is given twice (a file and inline)");
+  if ((!r.state_file.empty() || !r.state_text.empty()) && !r.separation.empty()) throw bad_input("--state and --separation exclude each other: give one");
+  if (!r.state_text.empty()) {
+    s.start = parse_binary_state(r.state_text, "state", sys);
+  } else if (!r.state_file.empty()) {
     s.start = read_binary_state(r.state_file, sys);
   } else if (!r.separation.empty()) {
     const double R = positive_number(r.separation, "--separation");

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "ordered_lines.hpp"
 #include "rotlie/runs/family_names.hpp"
 #include "rotlie/runs/map_rows.hpp"
 #include "rotlie/runs/number_text.hpp"
@@ -16,36 +17,6 @@ namespace {
 
 // Rows (K bodies each) are dealt out to the processes in turn.
 int owner_of_row(std::size_t row, int processes) { return static_cast<int>(row % static_cast<std::size_t>(processes)); }
-
-// Rank 0's collector: lines arrive in any order and leave in the grid's order.
-class ordered_lines {
- public:
-  ordered_lines(std::vector<std::size_t> todo, map_file_writer* file, const std::function<void(const std::string&)>* echo,
-                std::vector<std::string>* keep)
-      : todo_(std::move(todo)), file_(file), echo_(echo), keep_(keep) {}
-  void add(std::size_t index, std::string line) {
-    pending_.emplace(index, std::move(line));
-    while (next_ < todo_.size()) {
-      const auto found = pending_.find(todo_[next_]);
-      if (found == pending_.end()) break;
-      if (file_) file_->append(found->second);
-      if (echo_) (*echo_)(found->second);
-      if (keep_) (*keep_)[found->first] = found->second;
-      pending_.erase(found);
-      ++next_;
-    }
-  }
-  std::size_t written() const { return next_; }
-  bool complete() const { return next_ == todo_.size(); }
-
- private:
-  std::vector<std::size_t> todo_;
-  map_file_writer* file_;
-  const std::function<void(const std::string&)>* echo_;
-  std::vector<std::string>* keep_;
-  std::map<std::size_t, std::string> pending_;
-  std::size_t next_ = 0;
-};
 
 // The neighbour check's tasks shared among the processes: task n is done by process n mod size. Rank
 // 0 hands out each batch (a broadcast); the workers answer as they answer with rows.

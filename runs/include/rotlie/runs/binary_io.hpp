@@ -29,4 +29,7 @@ std::string binary_text(const binary_result& r);
 /// binary_json, so a run's output starts the next. Throws bad_input naming --state.
 models::binary_state<double> read_binary_state(const std::string& path, const models::binary_system<double>& sys);
 
+/// The same from the JSON text; `where` names it in messages.
+models::binary_state<double> parse_binary_state(const std::string& text, const std::string& where, const models::binary_system<double>& sys);
+
 }  // namespace rotlie::runs

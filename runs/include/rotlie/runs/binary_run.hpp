@@ -34,6 +34,7 @@ struct binary_request {
   std::string separation;               ///< km: the circular start
   std::string primary_period;           ///< hours: the primary's spin in the circular start
   std::string state_file;               ///< JSON with r, v, Q1, Q2, omega1, omega2 (instead of the circular start)
+  std::string state_text;               ///< the same JSON as text (a sweep's inline start)
   std::string integrator, h, T;         ///< h and T in seconds (h not needed with T = 0)
   std::string every = "0";              ///< a trajectory sample every K steps (0: none)
 };

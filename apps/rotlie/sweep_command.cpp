@@ -1,0 +1,113 @@
+// rotlie sweep: many `binary` runs from a JSON-lines file, one result line each, resumable, shared
+// among MPI ranks when started by mpirun: the map's machinery (its processes, its file writer, its
+// folder lock and resume rules) with runs::run_sweep_rank0 and run_sweep_worker doing the work.
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "arguments.hpp"
+#include "commands.hpp"
+#include "map_distribution.hpp"
+#include "progress.hpp"
+#include "rotlie/runs/exclusive_use.hpp"
+#include "rotlie/runs/output_file.hpp"
+#include "rotlie/runs/sweep_run.hpp"
+#include "rotlie/runs/user_input.hpp"
+
+namespace rotlie::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct prepared_sweep {
+  runs::sweep_plan plan;
+  runs::resumed_map existing;
+  fs::path path;
+  std::shared_ptr<runs::exclusive_use> lock;  ///< the output's folder, held until the sweep is written
+};
+
+prepared_sweep prepare(const sweep_options& o) {
+  if (o.in.empty()) throw usage_error("--in is required (a JSON-lines file of binary runs)");
+  if (o.out.empty()) throw usage_error("--out is required (the results file)");
+  prepared_sweep p;
+  p.plan = runs::plan_sweep(o.in);
+  p.path = o.out;
+  const fs::path folder = p.path.has_parent_path() ? p.path.parent_path() : fs::path(".");
+  check_output_folder(folder.string(), "--out");
+  fs::create_directories(folder);
+  p.lock = std::make_shared<runs::exclusive_use>(folder, "--out");  // a second sweep into the folder stops here
+  p.existing.done.assign(p.plan.inputs.size(), 0);
+  const bool exists = fs::exists(p.path);
+  if (exists && !o.resume)
+    throw usage_error("--out: " + runs::printable_path(p.path) + " exists: continue it with --resume, or choose another file; it is left as it is");
+  if (exists) {
+    p.existing = runs::resume_sweep_file(p.path, p.plan);
+    p.plan.done = p.existing.done;
+  }
+  return p;
+}
+
+int run_rank0(const sweep_options& o, process_group& group) {
+  prepared_sweep p;
+  try {
+    p = prepare(o);
+  } catch (const usage_error&) {
+    group.broadcast(std::to_string(exit_usage));
+    throw;
+  } catch (const runs::bad_input&) {
+    group.broadcast(std::to_string(exit_usage));
+    throw;
+  } catch (...) {
+    group.broadcast(std::to_string(exit_failure));
+    throw;
+  }
+  group.broadcast("0" + std::string(p.plan.done.begin(), p.plan.done.end()));
+  progress_line progress;
+  runs::sweep_output out;
+  out.path = p.path;
+  out.existing = &p.existing;
+  out.progress = [&progress](const std::string& line) { progress.show(line); };
+  const auto computed = runs::run_sweep_rank0(p.plan, group, out);
+  std::cout << "sweep of " << p.plan.inputs.size() << " runs: " << computed << " computed now by " << group.size()
+            << (group.size() == 1 ? " process" : " processes") << ", in " << runs::printable_path(p.path) << "\n";
+  return 0;
+}
+
+int run_worker(const sweep_options& o, process_group& group) {
+  const std::string verdict = group.broadcast("");
+  if (verdict.empty() || verdict[0] != '0') return verdict.empty() ? exit_failure : verdict[0] - '0';  // rank 0 says why
+  auto plan = runs::plan_sweep(o.in);
+  plan.done.assign(verdict.begin() + 1, verdict.end());
+  runs::run_sweep_worker(plan, group);
+  return 0;
+}
+
+}  // namespace
+
+int run_sweep(const sweep_options& options) {
+  process_group group;
+  if (group.rank() == 0) {
+    if (group.size() == 1) return run_rank0(options, group);
+    try {
+      return run_rank0(options, group);
+    } catch (const usage_error&) {
+      throw;  // before any work was handed out: the other ranks were told and have ended
+    } catch (const runs::bad_input&) {
+      throw;
+    } catch (const runs::folder_in_use&) {
+      throw;
+    } catch (const std::exception& e) {
+      // after the work was handed out the other ranks would wait for ever: end the whole job
+      std::cerr << "rotlie: error: " << one_line(e.what()) << "\n";
+      group.abort(exit_failure);
+    }
+  }
+  try {
+    return run_worker(options, group);
+  } catch (const std::exception& e) {
+    std::cerr << "rotlie: error: rank " << group.rank() << ": " << one_line(e.what()) << "\n";
+    group.abort(exit_failure);
+  }
+}
+
+}  // namespace rotlie::app

@@ -1,0 +1,196 @@
+#include "rotlie/runs/sweep_run.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+#include "ordered_lines.hpp"
+#include "rotlie/runs/binary_io.hpp"
+#include "rotlie/runs/binary_run.hpp"
+#include "rotlie/runs/number_text.hpp"
+#include "rotlie/runs/output_file.hpp"
+#include "rotlie/runs/text_file.hpp"
+#include "rotlie/runs/user_input.hpp"
+
+namespace rotlie::runs {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr int sweep_format_version = 1;
+constexpr std::size_t input_limit = std::size_t(64) << 20;  // 64 MiB of runs
+const std::set<std::string> known_options = {"system", "primary", "secondary", "density", "mass", "order", "G", "separation",
+                                             "primary-period", "primary_period", "state", "integrator", "h", "T"};
+
+std::string fnv1a(const std::string& text) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (const unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+  char buffer[17];
+  std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(h));
+  return buffer;
+}
+
+// An option's value as the command line would have it: text as is, a number as JSON writes it.
+std::string option_text(const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
+
+binary_request request_of(const json& j) {
+  binary_request r;
+  const auto take = [&](const char* key, std::string& into) {
+    if (j.contains(key)) into = option_text(j[key]);
+  };
+  take("system", r.system), take("primary", r.primary), take("secondary", r.secondary), take("density", r.density), take("mass", r.mass);
+  take("order", r.order), take("G", r.G), take("separation", r.separation), take("primary_period", r.primary_period);
+  take("primary-period", r.primary_period), take("integrator", r.integrator), take("h", r.h), take("T", r.T);
+  if (j.contains("state")) {
+    if (j["state"].is_object())
+      r.state_text = j["state"].dump();
+    else
+      r.state_file = option_text(j["state"]);
+  }
+  return r;
+}
+
+int owner_of(std::size_t run, int processes) { return static_cast<int>(run % static_cast<std::size_t>(processes)); }
+
+}  // namespace
+
+sweep_plan plan_sweep(const std::filesystem::path& input) {
+  std::string text;
+  try {
+    text = read_bounded_file(input, input_limit);
+  } catch (const std::runtime_error& e) {
+    throw bad_input("--in: " + one_line(e.what()));
+  }
+  sweep_plan plan;
+  plan.input_hash = fnv1a(text);
+  std::istringstream lines(text);
+  std::string line;
+  for (long number = 1; std::getline(lines, line); ++number) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    const auto j = json::parse(line, nullptr, false);
+    const std::string where = "--in " + printable_path(input) + ", line " + std::to_string(number);
+    if (j.is_discarded() || !j.is_object()) throw bad_input(where + ": not a JSON object of binary's options");
+    for (const auto& [key, value] : j.items()) {
+      if (!known_options.count(key)) throw bad_input(where + ": '" + one_line(key) + "' is not an option of binary (a sweep takes no --every or --json)");
+      if (!(value.is_string() || value.is_number() || (key == "state" && value.is_object())))
+        throw bad_input(where + ": '" + one_line(key) + "' must be text or a number");
+    }
+    plan.inputs.push_back(j.dump());
+  }
+  if (plan.inputs.empty()) throw bad_input("--in " + printable_path(input) + " holds no runs");
+  plan.done.assign(plan.inputs.size(), 0);
+  return plan;
+}
+
+std::string sweep_header(const sweep_plan& plan) {
+  nlohmann::ordered_json h = {{"rotlie_sweep", sweep_format_version}, {"runs", plan.inputs.size()}, {"input", plan.input_hash}};
+  return h.dump();
+}
+
+resumed_map resume_sweep_file(const std::filesystem::path& path, const sweep_plan& plan) {
+  resumed_map out;
+  out.done.assign(plan.inputs.size(), 0);
+  map_file_text text;
+  try {
+    text = read_map_file(path);
+  } catch (const std::runtime_error& e) {
+    throw bad_input(std::string("--resume: ") + e.what());
+  }
+  out.whole_length = text.whole_length;
+  const std::string refusal = "--resume: " + printable_path(path) + " ";
+  const auto& tail = text.torn_tail;
+  const bool a_cut_line = tail.empty() || (tail.front() == '{' && std::none_of(tail.begin(), tail.end(), [](char c) {
+                                             return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+                                           }));
+  if (!a_cut_line)
+    throw bad_input(refusal + "ends with " + std::to_string(tail.size()) + " bytes that are not the start of a result line (not a write cut by a kill); it is left as it is");
+  for (std::size_t n = 0; n < text.lines.size(); ++n) {
+    const auto j = json::parse(text.lines[n], nullptr, false);
+    if (n == 0) {
+      if (text.lines[n] != sweep_header(plan)) {
+        const bool ours = !j.is_discarded() && j.is_object() && j.contains("rotlie_sweep");
+        throw bad_input(refusal + (ours ? "holds the results of another input file (its header names another one)" : "is not a rotlie sweep file") +
+                        "; it is left as it is");
+      }
+      out.has_header = true;
+      continue;
+    }
+    const std::size_t index = n - 1;
+    if (j.is_discarded() || !j.is_object() || !j.contains("index") || !j["index"].is_number_unsigned() || j["index"].get<std::size_t>() != index ||
+        index >= plan.inputs.size())
+      throw bad_input(refusal + "line " + std::to_string(n + 1) + " is not run " + std::to_string(index) + " of this sweep; it is left as it is");
+    out.done[index] = 1;
+    out.lines.push_back(text.lines[n]);
+  }
+  return out;
+}
+
+std::string sweep_line(const sweep_plan& plan, std::size_t index) {
+  const auto options = json::parse(plan.inputs.at(index));
+  json line;
+  try {
+    const auto setup = binary_setup_of(request_of(options));
+    line = binary_json(binary_run(setup));
+  } catch (const bad_input& e) {
+    line = {{"status", "refused"}, {"error", one_line(e.what())}};
+  } catch (const binary_contact& e) {
+    line = {{"status", "contact"}, {"error", one_line(e.what())}, {"contact_t", e.t}};
+  } catch (const std::exception& e) {
+    line = {{"status", "failed"}, {"error", one_line(e.what())}};
+  }
+  nlohmann::ordered_json ordered = {{"index", index}};
+  for (const auto& [key, value] : line.items()) ordered[key] = value;
+  return ordered.dump();
+}
+
+std::size_t run_sweep_rank0(const sweep_plan& plan, map_processes& processes, const sweep_output& out) {
+  static const resumed_map nothing_yet;
+  map_file_writer file(out.path, out.existing ? *out.existing : nothing_yet, sweep_header(plan));
+  std::vector<std::size_t> todo;
+  for (std::size_t k = 0; k < plan.inputs.size(); ++k)
+    if (!plan.done[k]) todo.push_back(k);
+  ordered_lines collected(todo, &file, nullptr, nullptr);
+  const auto start = std::chrono::steady_clock::now();
+  const auto show = [&] {
+    if (!out.progress) return;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::size_t done = collected.written();
+    std::ostringstream s;
+    s << "sweep: " << done << "/" << todo.size() << " runs on " << processes.size() << " process(es)";
+    if (done > 0) s << ", about " << duration_text(elapsed / static_cast<double>(done) * static_cast<double>(todo.size() - done)) << " left";
+    out.progress(s.str());
+  };
+  int workers_left = processes.size() - 1;
+  const auto drain = [&](bool wait) {
+    auto d = processes.receive(wait);
+    for (auto& m : d.lines) collected.add(m.index, std::move(m.payload));
+    workers_left -= d.done;
+  };
+  for (const std::size_t k : todo) {
+    if (owner_of(k, processes.size()) != 0) continue;
+    collected.add(k, sweep_line(plan, k));
+    if (processes.size() > 1) drain(false);
+    show();
+  }
+  while (workers_left > 0) {
+    drain(true);
+    show();
+  }
+  if (!collected.complete()) throw std::runtime_error("a process of the MPI job did not deliver all its runs");
+  file.finish();
+  return todo.size();
+}
+
+void run_sweep_worker(const sweep_plan& plan, map_processes& processes) {
+  for (std::size_t k = 0; k < plan.inputs.size(); ++k)
+    if (!plan.done[k] && owner_of(k, processes.size()) == processes.rank()) processes.send_results({{k, sweep_line(plan, k)}});
+  processes.send_done();
+}
+
+}  // namespace rotlie::runs
