@@ -6,7 +6,7 @@ their measurements) and its numeric core, with NumPy arrays in and out:
 - ``Body``, ``scheme``, ``load_table``, ``Scheme.save`` and ``solve``: bodies and scheme tables, the
   dedicated schemes of a family solved for a body (Laskar & Vaillant), ranked by ||H_R5||;
 - ``exact_flow``, ``integrate`` and ``order``: the free rigid body, vectorised over N states;
-- ``remainder``, ``best``, ``map_line``, ``bch``, ``md`` and ``spin``: the command line's runs with typed
+- ``remainder``, ``best``, ``map_line``, ``bch``, ``md``, ``spin`` and ``binary``: the command line's runs with typed
   results (fields as attributes, arrays as NumPy arrays, ``to_dict()`` the command's JSON).
 
 Bad arguments raise ``ValueError`` and a failed run ``RuntimeError``, with the command line's
@@ -28,7 +28,7 @@ from ._rotlie import Scheme
 
 __all__ = [
     "Body", "Scheme", "scheme", "load_table", "solve", "exact_flow", "integrate", "order",
-    "remainder", "Remainder", "best", "map_line", "bch", "md", "spin", "SpinResult", "SpinTrajectory",
+    "remainder", "Remainder", "best", "map_line", "bch", "md", "spin", "SpinResult", "SpinTrajectory", "binary", "BinaryResult", "BinaryTrajectory",
     "Result", "MdResult", "MdTrajectory", "OrderResult", "BestResult", "MapLine",
 ]
 __version__ = "0.1.0"
@@ -165,3 +165,4 @@ def order(scheme, body, G0=(1, 1, 1), T=1, min_level: int = 1, max_level: int = 
 from ._remainder import Remainder, remainder  # noqa: E402
 from ._commands import best, map_line, bch, md  # noqa: E402
 from ._rotlie import spin, SpinResult, SpinTrajectory  # noqa: E402  (typed in C++: python/src/spin.cpp)
+from ._rotlie import binary, BinaryResult, BinaryTrajectory  # noqa: E402  (typed in C++: python/src/binary.cpp)

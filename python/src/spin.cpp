@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "arguments.hpp"
 #include "bindings.hpp"
 #include "interruption.hpp"
 #include "rotlie/runs/spin_io.hpp"
@@ -23,30 +24,6 @@ struct spin_object {
   std::string json;  ///< `rotlie spin --json`'s text
 };
 
-// A TypeError as Python raises it (the module's translator would make a C++ exception a RuntimeError).
-[[noreturn]] void type_error(const std::string& message) {
-  PyErr_SetString(PyExc_TypeError, message.c_str());
-  throw py::error_already_set();
-}
-
-// A number as the command line reads it: str, int, float or Fraction, as str() writes it.
-std::string number_argument(const py::handle& value, const char* what) {
-  if (py::isinstance<py::bool_>(value) || PyComplex_Check(value.ptr()))
-    type_error(std::string(what) + " must be a real number, a Fraction or its text");
-  const auto fractions = py::module_::import("fractions");
-  if (py::isinstance<py::str>(value) || py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value) ||
-      py::isinstance(value, fractions.attr("Fraction")))
-    return py::str(value);
-  type_error(std::string(what) + " must be a real number, a Fraction or its text, got " + std::string(py::str(value.get_type().attr("__name__"))));
-}
-
-// every=K: None (no trajectory) or an integer, never a float truncated to one.
-std::string every_argument(const py::handle& every) {
-  if (every.is_none()) return "0";
-  if (!py::isinstance<py::int_>(every) || py::isinstance<py::bool_>(every)) type_error("every must be an integer or None");
-  return py::str(every);
-}
-
 // A body as `--body` takes it: a name or "A,B,C" as text, a Body, or three moments.
 std::string body_argument(const py::handle& body) {
   if (py::isinstance<py::str>(body)) return py::str(body);
@@ -60,23 +37,6 @@ struct trajectory_object {
   runs::spin_trajectory samples;
   long every = 0;
 };
-
-py::array_t<double> vector_array(const std::vector<double>& v) { return py::array_t<double>(py::ssize_t(v.size()), v.data()); }
-
-// Rows of N fixed-size arrays as one array of shape (N, tail...).
-template <std::size_t n>
-py::array_t<double> rows_array(const std::vector<std::array<double, n>>& rows, std::vector<py::ssize_t> tail) {
-  tail.insert(tail.begin(), py::ssize_t(rows.size()));
-  py::array_t<double> a(tail);
-  for (std::size_t k = 0; k < rows.size(); ++k) std::copy(rows[k].begin(), rows[k].end(), a.mutable_data() + n * k);
-  return a;
-}
-
-py::array_t<double> matrix(const std::array<double, 9>& Q) {
-  py::array_t<double> a({3, 3});
-  std::copy(Q.begin(), Q.end(), a.mutable_data());
-  return a;
-}
 
 spin_object spin(const py::object& body, const py::object& e, const std::string& integrator, const py::object& h, const py::object& T,
                  const py::object& theta0, const py::object& omega0, const py::object& obliquity, const std::string& scalar,

@@ -1,0 +1,57 @@
+#pragma once
+// What the typed calls (spin.cpp, binary.cpp) share: numbers and every=K as the command line reads
+// them, TypeErrors as Python raises them, and the results' arrays.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
+
+namespace rotlie::python {
+
+namespace py = pybind11;
+
+// A TypeError as Python raises it (the module's translator would make a C++ exception a RuntimeError).
+[[noreturn]] inline void type_error(const std::string& message) {
+  PyErr_SetString(PyExc_TypeError, message.c_str());
+  throw py::error_already_set();
+}
+
+// A number as the command line reads it: str, int, float or Fraction, as str() writes it.
+inline std::string number_argument(const py::handle& value, const char* what) {
+  if (py::isinstance<py::bool_>(value) || PyComplex_Check(value.ptr()))
+    type_error(std::string(what) + " must be a real number, a Fraction or its text");
+  const auto fractions = py::module_::import("fractions");
+  if (py::isinstance<py::str>(value) || py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value) ||
+      py::isinstance(value, fractions.attr("Fraction")))
+    return py::str(value);
+  type_error(std::string(what) + " must be a real number, a Fraction or its text, got " + std::string(py::str(value.get_type().attr("__name__"))));
+}
+
+// every=K: None (no trajectory) or an integer, never a float truncated to one.
+inline std::string every_argument(const py::handle& every) {
+  if (every.is_none()) return "0";
+  if (!py::isinstance<py::int_>(every) || py::isinstance<py::bool_>(every)) type_error("every must be an integer or None");
+  return py::str(every);
+}
+
+inline py::array_t<double> vector_array(const std::vector<double>& v) { return py::array_t<double>(py::ssize_t(v.size()), v.data()); }
+
+// Rows of N fixed-size arrays as one array of shape (N, tail...).
+template <std::size_t n>
+py::array_t<double> rows_array(const std::vector<std::array<double, n>>& rows, std::vector<py::ssize_t> tail) {
+  tail.insert(tail.begin(), py::ssize_t(rows.size()));
+  py::array_t<double> a(tail);
+  for (std::size_t k = 0; k < rows.size(); ++k) std::copy(rows[k].begin(), rows[k].end(), a.mutable_data() + n * k);
+  return a;
+}
+
+inline py::array_t<double> matrix(const std::array<double, 9>& Q) {
+  py::array_t<double> a({3, 3});
+  std::copy(Q.begin(), Q.end(), a.mutable_data());
+  return a;
+}
+
+}  // namespace rotlie::python

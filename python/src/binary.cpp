@@ -1,0 +1,155 @@
+// binary: the full two-body problem (runs::binary_run, `rotlie binary`) as rotlie.binary(...) with typed
+// keywords; its result a BinaryResult whose attributes are the JSON's fields (vectors and attitudes as
+// arrays, the trajectory's samples as arrays) and whose to_dict() is `rotlie binary --json`'s object.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <string>
+
+#include "arguments.hpp"
+#include "bindings.hpp"
+#include "interruption.hpp"
+#include "rotlie/runs/binary_io.hpp"
+#include "rotlie/runs/binary_run.hpp"
+
+namespace rotlie::python {
+namespace {
+
+struct binary_trajectory {
+  std::vector<double> t, energy;
+  std::vector<std::array<double, 3>> r, v, omega1, omega2;
+  std::vector<std::array<double, 9>> Q1, Q2;
+  long every = 0;
+};
+
+struct binary_object {
+  runs::binary_result result;
+  binary_trajectory trajectory;
+  std::string json;  ///< `rotlie binary --json`'s text
+};
+
+// One value or a pair, as the command line's "A" or "A,B".
+std::string pair_argument(const py::handle& value, const char* what) {
+  if (value.is_none()) return "";
+  if (py::isinstance<py::tuple>(value) || py::isinstance<py::list>(value)) {
+    std::string text;
+    for (const auto& x : value) text += (text.empty() ? "" : ",") + number_argument(x, what);
+    return text;
+  }
+  return number_argument(value, what);
+}
+
+std::string optional_number(const py::handle& value, const char* what) { return value.is_none() ? "" : number_argument(value, what); }
+
+std::string optional_text(const py::handle& value, const char* what) {
+  if (value.is_none()) return "";
+  if (!py::isinstance<py::str>(value)) type_error(std::string(what) + " must be text or None");
+  return py::str(value);
+}
+
+std::array<double, 3> vec(const models::vec3<double>& x) { return {x[0], x[1], x[2]}; }
+
+py::array_t<double> array3(const models::vec3<double>& x) { return py::array_t<double>(3, x.data()); }
+
+binary_object binary(const py::object& system, const py::object& primary, const py::object& secondary, const py::object& density,
+                     const py::object& mass, int order, const py::object& G, const py::object& separation, const py::object& primary_period,
+                     const py::object& state, const std::string& integrator, const py::object& h, const py::object& T, const py::object& every) {
+  runs::binary_request q;
+  q.system = optional_text(system, "system"), q.primary = optional_text(primary, "primary"), q.secondary = optional_text(secondary, "secondary");
+  q.density = pair_argument(density, "density"), q.mass = pair_argument(mass, "mass"), q.order = std::to_string(order);
+  q.G = number_argument(G, "G"), q.separation = optional_number(separation, "separation");
+  q.primary_period = optional_number(primary_period, "primary_period");
+  if (py::isinstance<py::dict>(state))
+    q.state_text = py::str(py::module_::import("json").attr("dumps")(state));
+  else
+    q.state_file = optional_text(state, "state (a file's path or a dict)");
+  q.integrator = integrator, q.h = optional_number(h, "h"), q.T = number_argument(T, "T"), q.every = every_argument(every);
+  auto out = std::make_shared<binary_object>();
+  run_symbolic([q, out] {  // a rotor SCHEME:PERM:LABEL is solved symbolically
+    const auto setup = runs::binary_setup_of(q);
+    const auto sys = setup.system_model();
+    auto& tr = out->trajectory;
+    tr.every = setup.every;
+    out->result = runs::binary_run(setup, [&](const runs::binary_sample& s) {
+      tr.t.push_back(s.t), tr.energy.push_back(s.energy), tr.r.push_back(vec(s.x.r)), tr.v.push_back(vec(s.x.v));
+      tr.Q1.push_back(s.x.body[0].Q.a), tr.Q2.push_back(s.x.body[1].Q.a);
+      tr.omega1.push_back(vec(models::angular_velocity(sys.moments(0), s.x.body[0].G)));
+      tr.omega2.push_back(vec(models::angular_velocity(sys.moments(1), s.x.body[1].G)));
+    });
+    out->json = runs::binary_json(out->result).dump();
+  });
+  for (const auto& w : out->result.check.warnings)
+    if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 2) != 0) throw py::error_already_set();
+  return std::move(*out);
+}
+
+py::object field(const binary_object& b, const char* key) { return py::module_::import("json").attr("loads")(b.json)[key]; }
+
+}  // namespace
+
+void bind_binary(py::module_& m) {
+  py::class_<binary_trajectory>(m, "BinaryTrajectory", "The state every K steps from the start, as arrays")
+      .def_readonly("every", &binary_trajectory::every)
+      .def_property_readonly("t", [](const binary_trajectory& s) { return vector_array(s.t); }, "times in s, shape (N,)")
+      .def_property_readonly("r", [](const binary_trajectory& s) { return rows_array(s.r, {3}); }, "x2 - x1 in km, inertial, shape (N, 3)")
+      .def_property_readonly("v", [](const binary_trajectory& s) { return rows_array(s.v, {3}); }, "its rate in km/s, shape (N, 3)")
+      .def_property_readonly("Q1", [](const binary_trajectory& s) { return rows_array(s.Q1, {3, 3}); }, "the primary's attitudes, shape (N, 3, 3)")
+      .def_property_readonly("Q2", [](const binary_trajectory& s) { return rows_array(s.Q2, {3, 3}); }, "the secondary's attitudes, shape (N, 3, 3)")
+      .def_property_readonly("omega1", [](const binary_trajectory& s) { return rows_array(s.omega1, {3}); }, "rad/s, body frame, shape (N, 3)")
+      .def_property_readonly("omega2", [](const binary_trajectory& s) { return rows_array(s.omega2, {3}); }, "rad/s, body frame, shape (N, 3)")
+      .def_property_readonly("energy", [](const binary_trajectory& s) { return vector_array(s.energy); }, "kg km2 s-2, shape (N,)");
+  py::class_<binary_object>(m, "BinaryResult", "The result of rotlie.binary: the fields of `rotlie binary --json` as attributes")
+      .def_property_readonly("system", [](const binary_object& b) { return field(b, "system"); })
+      .def_property_readonly("integrator", [](const binary_object& b) { return b.result.setup.method.name; })
+      .def_property_readonly("order", [](const binary_object& b) { return b.result.setup.order; })
+      .def_property_readonly("G", [](const binary_object& b) { return b.result.setup.G; })
+      .def_property_readonly("h", [](const binary_object& b) { return b.result.setup.h; }, "the step taken, s")
+      .def_property_readonly("T", [](const binary_object& b) { return b.result.setup.T; })
+      .def_property_readonly("steps", [](const binary_object& b) { return b.result.setup.steps; })
+      .def_property_readonly("evaluations", [](const binary_object& b) { return b.result.evaluations; })
+      .def_property_readonly("masses", [](const binary_object& b) { return py::array(field(b, "masses")).attr("astype")("float64"); }, "kg, shape (2,)")
+      .def_property_readonly("moments", [](const binary_object& b) { return py::array(field(b, "moments")).attr("astype")("float64"); },
+                             "principal moments, kg km2, shape (2, 3)")
+      .def_property_readonly("t", [](const binary_object& b) { return b.result.end.t; })
+      .def_property_readonly("r", [](const binary_object& b) { return array3(b.result.end.x.r); }, "x2 - x1, km, inertial")
+      .def_property_readonly("v", [](const binary_object& b) { return array3(b.result.end.x.v); }, "km/s")
+      .def_property_readonly("Q1", [](const binary_object& b) { return matrix(b.result.end.x.body[0].Q.a); }, "columns the primary's axes")
+      .def_property_readonly("Q2", [](const binary_object& b) { return matrix(b.result.end.x.body[1].Q.a); }, "columns the secondary's axes")
+      .def_property_readonly("omega1", [](const binary_object& b) { return py::array(field(b, "omega1")).attr("astype")("float64"); }, "rad/s, body frame")
+      .def_property_readonly("omega2", [](const binary_object& b) { return py::array(field(b, "omega2")).attr("astype")("float64"); }, "rad/s, body frame")
+      .def_property_readonly("energy", [](const binary_object& b) { return b.result.end.energy; })
+      .def_property_readonly("energy_start", [](const binary_object& b) { return field(b, "energy_start"); })
+      .def_property_readonly("angular_momentum", [](const binary_object& b) { return array3(b.result.angular_momentum); })
+      .def_property_readonly("max_rel_energy_error", [](const binary_object& b) { return b.result.check.max_rel_energy_error; })
+      .def_property_readonly("max_rel_angular_momentum_error", [](const binary_object& b) { return b.result.check.max_rel_angular_momentum_error; })
+      .def_property_readonly("cpu_s", [](const binary_object& b) { return b.result.cpu_s; })
+      .def_property_readonly("mutual", [](const binary_object& b) { return field(b, "mutual"); }, "{U, F, M1, M2} at the final state")
+      .def_property_readonly("unstable", [](const binary_object& b) { return b.result.check.unstable; })
+      .def_property_readonly("round_off_floor", [](const binary_object& b) { return b.result.check.round_off_floor; })
+      .def_property_readonly("trajectory", [](const binary_object& b) -> py::object {
+        if (b.trajectory.every <= 0) return py::none();
+        return py::cast(b.trajectory);
+      }, "the samples every K steps (every=K), or None")
+      .def("to_dict", [](const binary_object& b) { return py::module_::import("json").attr("loads")(b.json); }, "the object `rotlie binary --json` prints")
+      .def("__repr__", [](const binary_object& b) {
+        return "<BinaryResult " + b.result.setup.method.name + ", order " + std::to_string(b.result.setup.order) + ", " +
+               std::to_string(b.result.setup.steps) + " steps" + (b.result.check.unstable ? ", unstable>" : ">");
+      });
+  m.def("binary", &binary, py::kw_only(), py::arg("system") = py::none(), py::arg("primary") = py::none(), py::arg("secondary") = py::none(),
+        py::arg("density") = py::none(), py::arg("mass") = py::none(), py::arg("order") = 2, py::arg("G") = "6.67430e-20",
+        py::arg("separation") = py::none(), py::arg("primary_period") = py::none(), py::arg("state") = py::none(), py::arg("integrator") = "SIER4",
+        py::arg("h") = py::none(), py::arg("T") = 0, py::arg("every") = py::none(),
+        R"(binary(*, system=None, primary=None, secondary=None, density=None, mass=None, order=2, G="6.67430e-20", separation=None,
+       primary_period=None, state=None, integrator="SIER4", h=None, T=0, every=None) -> BinaryResult
+
+Two rigid bodies in mutual gravity (the full two-body problem), as ``rotlie binary`` (docs/binary.md); units km, kg, s.
+system: "didymos" or None; primary, secondary: "ellipsoid:a,b,c" (km) or "polyhedron:FILE"; density: kg/m3, one value
+or a pair; mass: (M1, M2) in kg; order: 0, 2 or 4; separation (km) with primary_period (hours): the circular start;
+state: a dict with r, v, Q1, Q2, omega1, omega2 or a JSON file's path; integrator: SIER2, SIER4, SIER2/X, SIER4/X,
+KEPLER2, KEPLER4, KEPLER2/X, KEPLER4/X, RK4, LGVI, odeint-rkf78[:TOL], odeint-dopri5[:TOL]; h, T: seconds (T a whole
+number of steps; T=0 the start's values); every: a trajectory sample every K steps (BinaryResult.trajectory).
+An untrusted run (BinaryResult.unstable) also raises a UserWarning; bodies that touch raise RuntimeError.)");
+}
+
+}  // namespace rotlie::python
