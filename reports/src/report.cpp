@@ -52,6 +52,7 @@ const std::vector<report_section_entry>& report_sections() {
       {"beyond", "dedicated 6th-order schemes for water against the general compositions", beyond_section},
       {"two-parameter", "the Q and QRS families with two free parameters, for water", two_parameter_section},
       {"spin-orbit", "a body on a fixed Kepler orbit: surfaces of section, resonances, cost", spin_orbit_section},
+      {"binary", "two rigid bodies in mutual gravity (Didymos): benchmark, DART, cost", binary_section},
       {"audit", "LV sections 4-5's statements against this run's numbers (last)", audit_section}};
   return sections;
 }

@@ -1,0 +1,124 @@
+#include "rotlie/runs/binary_study.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "rotlie/schemes/message_number.hpp"
+
+namespace rotlie::runs {
+
+namespace {
+
+constexpr double pi = 3.141592653589793;
+constexpr double hour = 3600;
+
+double norm(const models::vec3<double>& v) { return std::sqrt(models::dot(v, v)); }
+
+// The angle of R = Aᵀ B: acos((tr R − 1)/2), by atan2 so that small angles keep their digits.
+double rotation_angle(const models::mat3<double>& A, const models::mat3<double>& B) {
+  const auto R = transpose(A) * B;
+  const double c = (R(0, 0) + R(1, 1) + R(2, 2) - 1) / 2;
+  const double s = std::sqrt((R(2, 1) - R(1, 2)) * (R(2, 1) - R(1, 2)) + (R(0, 2) - R(2, 0)) * (R(0, 2) - R(2, 0)) + (R(1, 0) - R(0, 1)) * (R(1, 0) - R(0, 1))) / 2;
+  return std::atan2(s, c);
+}
+
+binary_setup setup_named(const std::string& system, int order, const std::string& integrator, double h, double T) {
+  binary_request r;
+  r.system = system;
+  r.order = std::to_string(order);
+  r.integrator = integrator;
+  r.h = schemes::message_number(h);
+  r.T = schemes::message_number(T);
+  return binary_setup_of(r);
+}
+
+}  // namespace
+
+double binary_state_error(const models::binary_state<double>& x, const models::binary_state<double>& ref) {
+  double e = norm({x.r[0] - ref.r[0], x.r[1] - ref.r[1], x.r[2] - ref.r[2]}) / norm(ref.r);
+  for (int b = 0; b < 2; ++b) e = std::max(e, rotation_angle(x.body[b].Q, ref.body[b].Q));
+  return e;
+}
+
+binary_observables observe_binary(binary_setup setup, long every) {
+  setup.every = std::max(1L, every);
+  std::vector<double> t, theta, phi;
+  binary_observables o;
+  o.separation_min_km = std::numeric_limits<double>::infinity();
+  double unwrapped = 0, last = 0;
+  const auto result = binary_run(setup, [&](const binary_sample& s) {
+    const double angle = std::atan2(s.x.r[1], s.x.r[0]);
+    if (!theta.empty()) {
+      double d = angle - last;
+      d -= 2 * pi * std::round(d / (2 * pi));
+      unwrapped += d;
+    } else {
+      unwrapped = angle;
+    }
+    last = angle;
+    // the secondary's long axis (body x, inertial) against the line of centres, in the orbit's plane
+    const auto& Q = s.x.body[1].Q;
+    double lib = std::atan2(Q(1, 0), Q(0, 0)) - angle;
+    lib -= pi * std::round(lib / pi);  // the axis has no arrow
+    t.push_back(s.t), theta.push_back(unwrapped), phi.push_back(lib);
+    const double d = norm(s.x.r);
+    o.separation_min_km = std::min(o.separation_min_km, d), o.separation_max_km = std::max(o.separation_max_km, d);
+  });
+  // the orbital angle's least-squares slope
+  const double n = static_cast<double>(t.size());
+  double st = 0, sa = 0, stt = 0, sta = 0;
+  for (std::size_t k = 0; k < t.size(); ++k) st += t[k], sa += theta[k], stt += t[k] * t[k], sta += t[k] * theta[k];
+  const double slope = (n * sta - st * sa) / (n * stt - st * st);
+  o.orbit_period_h = 2 * pi / slope / hour;
+  const auto [low, high] = std::minmax_element(phi.begin(), phi.end());
+  o.libration_amplitude_deg = (*high - *low) / 2 * 180 / pi;
+  double mean = 0;
+  for (const double p : phi) mean += p;
+  mean /= n;
+  o.libration_mean_deg = mean * 180 / pi;
+  std::vector<double> ups;
+  for (std::size_t k = 1; k < phi.size(); ++k)
+    if (phi[k - 1] < mean && phi[k] >= mean) ups.push_back(t[k - 1] + (t[k] - t[k - 1]) * (mean - phi[k - 1]) / (phi[k] - phi[k - 1]));
+  if (ups.size() >= 2) o.libration_period_h = (ups.back() - ups.front()) / static_cast<double>(ups.size() - 1) / hour;
+  const auto w = models::angular_velocity(setup.system_model().moments(0), result.end.x.body[0].G);
+  o.primary_period_h = 2 * pi / norm(w) / hour;
+  return o;
+}
+
+binary_setup with_impulse(binary_setup setup, double dv) {
+  auto& v = setup.start.v;
+  const double speed = norm(v);
+  for (auto& c : v) c *= (speed - dv) / speed;
+  return setup;
+}
+
+binary_cost_result binary_cost_study(const binary_cost_plan& plan, const std::function<void(const std::string&)>& progress) {
+  binary_cost_result out;
+  for (const int order : plan.orders) {
+    if (progress) progress("Binary asteroid: the reference at order " + std::to_string(order));
+    const auto reference = binary_run(setup_named(plan.system, order, plan.reference, plan.reference_h, plan.T));
+    const auto check = binary_run(setup_named(plan.system, order, plan.reference, plan.reference_h / 2, plan.T));
+    out.reference_error.push_back(binary_state_error(reference.end.x, check.end.x));
+    const auto add = [&](const std::string& name, double h) {
+      if (progress) progress("Binary asteroid: " + name + " at order " + std::to_string(order) + ", h = " + schemes::message_number(h) + " s");
+      binary_cost_row row{name, order, h};
+      try {
+        const auto r = binary_run(setup_named(plan.system, order, name, h, plan.T));
+        row.steps = r.setup.steps, row.evaluations = r.evaluations, row.cpu_s = r.cpu_s;
+        row.error = binary_state_error(r.end.x, reference.end.x);
+        row.energy_error = r.check.max_rel_energy_error, row.angular_momentum_error = r.check.max_rel_angular_momentum_error;
+        row.unstable = r.check.unstable;
+      } catch (const std::exception&) {
+        row.unstable = true, row.error = std::numeric_limits<double>::infinity();
+      }
+      out.rows.push_back(row);
+    };
+    for (const auto& name : plan.integrators)
+      for (const double h : plan.steps) add(name, h);
+    for (const auto& name : plan.adaptive) add(name, plan.adaptive_h);
+  }
+  return out;
+}
+
+}  // namespace rotlie::runs
