@@ -316,8 +316,8 @@ subcommand add_binary(CLI::App& app, binary_options& b) {
   cmd->add_option("--primary-period", b.primary_period, "Hours: the primary's spin with --separation (default: synchronous)");
   cmd->add_option("--state", b.state, "A start from a JSON file with r, v (km, km/s), Q1, Q2 (rows), omega1, omega2 (rad/s, body frames): "
                                       "a run's --json output starts the next");
-  cmd->add_option("--integrator", b.integrator, "SIER2, SIER4, SIER2/X, SIER4/X (rotor X for both bodies: a listed rotor, a reference "
-                                                "scheme, SCHEME:PERM:LABEL solved for each body), KEPLER2, KEPLER4, KEPLER2/X, KEPLER4/X "
+  cmd->add_option("--integrator", b.integrator, "SIER2, SIER4, SIER6, SIER2/X, SIER4/X, SIER6/X (rotor X for both bodies: a listed rotor, a "
+                                                "reference scheme, SCHEME:PERM:LABEL solved for each body), KEPLER2, KEPLER4, KEPLER6, KEPLER…/X "
                                                 "(Kepler split), RK4, LGVI, odeint-rkf78[:TOL], odeint-dopri5[:TOL] (default TOL 1e-12)")
       ->required();
   cmd->add_option("--h", b.h, "The step in seconds (an adaptive method's first trial step and the spacing of its checks)");

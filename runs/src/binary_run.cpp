@@ -37,6 +37,7 @@ constexpr double round_off_turn_eps = 1000;   // a step that moves the pair by l
 constexpr double round_off_per_step = 10;     // what a step's roundings can add to a sum, in ε
 constexpr double max_checks = 1e4;            // the conserved quantities' samples per run
 constexpr double adaptive_steps_per_orbit = 1e6;  // an adaptive run's budget (tried steps per mutual orbit)
+constexpr const char* sixth_order_tv = "KahanLi6-TV";  // SIER6, KEPLER6
 
 std::string moments_text(const vec3<double>& I) {
   char buffer[96];
@@ -64,9 +65,13 @@ binary_method method_named(const std::string& name, const vec3<double>& I1, cons
   if (name.rfind("KEPLER", 0) == 0) {
     m.kepler = true;
     splitting = "SIER" + name.substr(6);
-    if (splitting != "SIER2" && splitting != "SIER4" && splitting.rfind("SIER2/", 0) != 0 && splitting.rfind("SIER4/", 0) != 0)
-      throw bad_input("--integrator: unknown integrator '" + one_line(name) + "' (the Kepler splits are KEPLER2, KEPLER4, KEPLER2/X, KEPLER4/X)");
+    if (splitting != "SIER2" && splitting != "SIER4" && splitting != "SIER6" && splitting.rfind("SIER2/", 0) != 0 && splitting.rfind("SIER4/", 0) != 0 &&
+        splitting.rfind("SIER6/", 0) != 0)
+      throw bad_input("--integrator: unknown integrator '" + one_line(name) + "' (the Kepler splits are KEPLER2, KEPLER4, KEPLER6, KEPLER2/X, KEPLER4/X, KEPLER6/X)");
   }
+  // sixth order: Kahan & Li's composition of Strang-TV, with SIER4's rotors
+  const bool sixth = splitting == "SIER6" || splitting.rfind("SIER6/", 0) == 0;
+  if (sixth) splitting = "SIER4" + splitting.substr(5);
   const vec3<double>* moments[2] = {&I1, &I2};
   for (int b = 0; b < 2; ++b) {
     md_method resolved;
@@ -75,11 +80,16 @@ binary_method method_named(const std::string& name, const vec3<double>& I1, cons
     } catch (const bad_input& e) {
       std::string why = e.what();
       if (why.rfind("--integrator: unknown integrator", 0) == 0 && why.back() == ')')
-        why = why.substr(0, why.size() - 1) + ", KEPLER2, KEPLER4, KEPLER2/X, KEPLER4/X, RK4, LGVI, odeint-rkf78[:TOL], odeint-dopri5[:TOL])";
+        why = why.substr(0, why.size() - 1) + ", SIER6, SIER6/X, KEPLER2, KEPLER4, KEPLER6, KEPLER2/X, KEPLER4/X, KEPLER6/X, RK4, LGVI, odeint-rkf78[:TOL], odeint-dopri5[:TOL])";
       throw bad_input((b == 1 && why.find("--integrator") == 0 ? "the secondary: " : "") + why);
     }
     m.splitting = resolved.spec;
     m.rotor[b] = std::move(resolved.rotor);
+  }
+  if (sixth) {
+    m.splitting.name = name;
+    m.splitting.tv_table = sixth_order_tv;
+    m.splitting.f = schemes::force_evaluations(*schemes::reference_scheme(sixth_order_tv));
   }
   return m;
 }

@@ -159,6 +159,13 @@ scheme_table build(const std::string& name) {
   if (name == "PEFRL-TV")
     return make(name, split::tv, 4, "VTVTVTVTV", pefrl_tv(),
                 "Omelyan, Mryglod & Folk (2002) PEFRL as van Zon & Schofield (2007) eq. (8), with h5 = 1 - 2(h1 + h3)");
+  // sixth-order TV compositions of Strang-TV (the rigid bodies of the binary scene): Kahan & Li (1997)'s
+  // s9odr6a, nine kicks; Yoshida (1990)'s solution A, seven
+  if (name == "KahanLi6-TV" || name == "Yoshida6-TV") {
+    compose_xyx(name == "KahanLi6-TV" ? kahan_li_s9odr6a() : yoshida_solution_a(), 'V', 'T', word, c);
+    return make(name, split::tv, 6, word, c,
+                name == "KahanLi6-TV" ? "Kahan & Li (1997) s9odr6a composition of Strang-TV" : "Yoshida (1990) Table 1 solution A composition of Strang-TV");
+  }
   const std::string ss_source = "LV eq. (13) composition of ABCBA / RSR";
   if (name == "ABCBA2") return make(name, split::abc, 2, "ABCBA", {0.5, 0.5, 1, 0.5, 0.5}, "leapfrog, LV eqs. (13)-(15)");
   if (name == "RSR2") return make(name, split::rs, 2, "RSR", {0.5, 1, 0.5}, "leapfrog, LV eqs. (13)-(15)");
@@ -229,7 +236,7 @@ const std::vector<std::string>& reference_sixth_order_scheme_names() {
 }
 
 const std::vector<std::string>& reference_tv_scheme_names() {
-  static const std::vector<std::string> names = {"Strang-TV", "PEFRL-TV"};
+  static const std::vector<std::string> names = {"Strang-TV", "PEFRL-TV", "KahanLi6-TV", "Yoshida6-TV"};
   return names;
 }
 

@@ -6,7 +6,8 @@
 // Integrators:
 //   SIER2, SIER4, SIER2/X, SIER4/X, MRDL, …   TV splittings of H = T_orbit + T_rot + U (md's names; X a
 //                                            rotor or a scheme table, solved for each body's moments)
-//   KEPLER2, KEPLER4, KEPLER2/X, KEPLER4/X    the same compositions of H = H_Kepler + T_rot + (U − U₀):
+//   SIER6, SIER6/X                            sixth order: Kahan & Li's s9odr6a composition of Strang-TV
+//   KEPLER2, KEPLER4, KEPLER6, KEPLER…/X      the same compositions of H = H_Kepler + T_rot + (U − U₀):
 //                                            the point masses' Kepler orbit drifts exactly (Wisdom–Holman)
 //   RK4, LGVI                                 GUBAS's fixed-step methods (binary_anchors.hpp)
 //   odeint-rkf78[:TOL], odeint-dopri5[:TOL]   Boost.Odeint's adaptive methods (default TOL 1e-12)
