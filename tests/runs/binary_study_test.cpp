@@ -116,4 +116,18 @@ BOOST_AUTO_TEST_CASE(a_polyhedron_of_an_ellipsoid_moves_as_the_ellipsoid) {
   BOOST_TEST(d < 1e-2);
 }
 
+// Every splitting (and the LGVI) keeps the total angular momentum within 1e-13 relative over 10³ mutual
+// orbits of the Didymos system (order 2, h = 480 s: 88,000 steps), sampled 10⁴ times along the run.
+BOOST_AUTO_TEST_CASE(every_splitting_keeps_the_angular_momentum_over_a_thousand_orbits) {
+  for (const char* name : {"SIER2", "SIER4", "SIER6", "KEPLER2", "KEPLER4", "KEPLER6", "SIER4/ABCBA2:ABC", "LGVI"}) {
+    runs::binary_request r;
+    r.system = "didymos", r.integrator = name, r.h = "480", r.T = "42240000";
+    const auto result = runs::binary_run(runs::binary_setup_of(r));
+    BOOST_TEST_MESSAGE(name << ": largest relative change of L over 1000 orbits " << result.check.max_rel_angular_momentum_error << ", of E "
+                            << result.check.max_rel_energy_error);
+    BOOST_TEST(result.check.max_rel_angular_momentum_error < 1e-13, name);
+    BOOST_TEST(!result.check.unstable, name);
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()  // binary_study_test
