@@ -159,7 +159,7 @@ BOOST_AUTO_TEST_CASE(force_and_torques_are_the_potentials_derivatives) {
 // The expansion of two random clusters of 7 point masses (all integrals nonzero) against the exact
 // sum over their 49 pairs: the error of order N is the first omitted degree's (a degree-n term falls as
 // 1/r^(n+1)): 1/r³ at order 0 (the first degree vanishes about the centres), 1/r⁴ at order 2 (the
-// third degree), 1/r⁶ at order 4 (the fifth), so doubling r divides it by 2³, 2⁴, 2⁶.
+// third degree), 1/r⁶ at order 4 (the fifth), so doubling r divides it by 2³, 2⁴, 2⁶ at least.
 BOOST_AUTO_TEST_CASE(the_expansion_converges_to_the_exact_potential_of_point_clusters) {
   std::mt19937_64 rng(rotlie::test::test_seed("the_expansion_converges_to_the_exact_potential_of_point_clusters"));
   for (int trial = 0; trial < 5; ++trial) {
@@ -175,8 +175,10 @@ BOOST_AUTO_TEST_CASE(the_expansion_converges_to_the_exact_potential_of_point_clu
       }
       const ld slope = std::log2(errors[0] / errors[1]);
       BOOST_TEST_MESSAGE("order " << order << ": error " << static_cast<double>(errors[0]) << " at r = 38.4, slope " << static_cast<double>(slope));
+      // at least as fast as the first omitted degree (a random cluster may make that term small here,
+      // and the next one, one power faster, show); a missing or wrong term of the expansion falls slower
       const int expected = order == 0 ? 3 : order + 2;
-      BOOST_TEST(std::abs(slope - expected) < 0.25, "trial " << trial << ", order " << order << ": slope " << slope);
+      BOOST_TEST(slope > expected - 0.25, "trial " << trial << ", order " << order << ": slope " << slope);
     }
   }
 }
