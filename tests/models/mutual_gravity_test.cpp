@@ -159,26 +159,29 @@ BOOST_AUTO_TEST_CASE(force_and_torques_are_the_potentials_derivatives) {
 // The expansion of two random clusters of 7 point masses (all integrals nonzero) against the exact
 // sum over their 49 pairs: the error of order N is the first omitted degree's (a degree-n term falls as
 // 1/r^(n+1)): 1/r³ at order 0 (the first degree vanishes about the centres), 1/r⁴ at order 2 (the
-// third degree), 1/r⁶ at order 4 (the fifth), so doubling r divides it by 2³, 2⁴, 2⁶ at least.
+// third degree), 1/r⁶ at order 4 (the fifth), so doubling r divides it by 2³, 2⁴, 2⁶. The error is
+// taken as the largest over 16 random configurations (attitudes and direction) at each distance: in
+// one configuration the leading term can nearly vanish and the next ones, of either sign, show.
 BOOST_AUTO_TEST_CASE(the_expansion_converges_to_the_exact_potential_of_point_clusters) {
   std::mt19937_64 rng(rotlie::test::test_seed("the_expansion_converges_to_the_exact_potential_of_point_clusters"));
-  for (int trial = 0; trial < 5; ++trial) {
+  for (int trial = 0; trial < 3; ++trial) {
     const auto c1 = random_cluster(rng, 3.0L, 0.4L, 7), c2 = random_cluster(rng, 0.5L, 0.2L, 7);
     const auto b1 = cluster_body(c1), b2 = cluster_body(c2);
-    const auto p = random_pair(rng);  // attitudes and a direction
+    std::vector<pair_setup> configurations;
+    for (int k = 0; k < 16; ++k) configurations.push_back(random_pair(rng));  // attitudes and a direction
     for (const int order : {0, 2, 4}) {
-      ld errors[2];
+      ld errors[2] = {0, 0};
       for (int k = 0; k < 2; ++k) {
         const ld scale = k == 0 ? 32.0L : 64.0L;
-        const vec3<ld> r{scale * p.r[0], scale * p.r[1], scale * p.r[2]};
-        errors[k] = std::abs(mutual_gravity_at(b1, p.Q1, b2, p.Q2, r, 1.0L, order).U - exact_cluster_potential(c1, p.Q1, c2, p.Q2, r));
+        for (const auto& p : configurations) {
+          const vec3<ld> r{scale * p.r[0], scale * p.r[1], scale * p.r[2]};
+          errors[k] = std::max(errors[k], std::abs(mutual_gravity_at(b1, p.Q1, b2, p.Q2, r, 1.0L, order).U - exact_cluster_potential(c1, p.Q1, c2, p.Q2, r)));
+        }
       }
       const ld slope = std::log2(errors[0] / errors[1]);
-      BOOST_TEST_MESSAGE("order " << order << ": error " << static_cast<double>(errors[0]) << " at r = 38.4, slope " << static_cast<double>(slope));
-      // at least as fast as the first omitted degree (a random cluster may make that term small here,
-      // and the next one, one power faster, show); a missing or wrong term of the expansion falls slower
+      BOOST_TEST_MESSAGE("order " << order << ": largest error " << static_cast<double>(errors[0]) << " at r = 38.4, slope " << static_cast<double>(slope));
       const int expected = order == 0 ? 3 : order + 2;
-      BOOST_TEST(slope > expected - 0.25, "trial " << trial << ", order " << order << ": slope " << slope);
+      BOOST_TEST(std::abs(slope - expected) < 0.3, "trial " << trial << ", order " << order << ": slope " << slope);
     }
   }
 }
