@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "progress.hpp"
 #include "rotlie/runs/binary_io.hpp"
 #include "rotlie/runs/binary_run.hpp"
 
@@ -15,7 +16,10 @@ int run_binary(const binary_options& o) {
   request.state_file = o.state, request.integrator = o.integrator, request.h = o.h, request.T = o.T, request.every = o.every;
   const auto setup = runs::binary_setup_of(request);
   const auto sys = setup.system_model();
-  const auto r = runs::binary_run(setup, [&](const runs::binary_sample& s) { std::cout << runs::binary_sample_json(s, sys).dump() << "\n"; });
+  progress_line progress;  // on a terminal only
+  const auto r = runs::binary_run(
+      setup, [&](const runs::binary_sample& s) { std::cout << runs::binary_sample_json(s, sys).dump() << "\n"; },
+      [&](double done) { progress.show("binary: " + std::to_string(static_cast<int>(100 * done)) + " % of " + std::to_string(setup.steps) + " steps"); });
   for (const auto& w : r.check.warnings) std::cerr << "rotlie: warning: " << w << "\n";
   if (o.json)
     std::cout << (setup.every > 0 ? runs::binary_json(r).dump() : runs::binary_json(r).dump(2)) << "\n";

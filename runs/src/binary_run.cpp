@@ -275,7 +275,8 @@ class conservation_watch {
 // The stepping loop, whatever the method: contact after every step, the conserved quantities at most
 // max_checks times (and at the end), samples every K steps.
 template <class Step>
-binary_result run_loop(const binary_setup& s, Step&& step, const std::function<void(const binary_sample&)>& sample) {
+binary_result run_loop(const binary_setup& s, Step&& step, const std::function<void(const binary_sample&)>& sample,
+                       const std::function<void(double)>& progress) {
   const auto sys = s.system_model();
   binary_result out;
   out.setup = s;
@@ -283,12 +284,14 @@ binary_result run_loop(const binary_setup& s, Step&& step, const std::function<v
   auto x = s.start;
   if (sample && s.every > 0) sample({0.0, x, sys.energy(x)});
   const long check_every = std::max(1L, static_cast<long>(std::ceil(static_cast<double>(s.steps) / max_checks)));
+  const long progress_every = std::max(1L, s.steps / 100);
   double sampling = 0;
   const double begin = models::thread_cpu_seconds();
   for (long k = 1; k <= s.steps; ++k) {
     step(x);
     if (bodies_touch(s.primary, x.body[0].Q, s.secondary, x.body[1].Q, x.r)) throw binary_contact(static_cast<double>(k) * s.h, k);
     if (k % check_every == 0 || k == s.steps) watch.sample(x);
+    if (progress && k % progress_every == 0) progress(static_cast<double>(k) / static_cast<double>(s.steps));
     if (sample && s.every > 0 && k % s.every == 0) {
       const double before = models::thread_cpu_seconds();
       sample({static_cast<double>(k) * s.h, x, sys.energy(x)});
@@ -305,13 +308,13 @@ binary_result run_loop(const binary_setup& s, Step&& step, const std::function<v
 
 }  // namespace
 
-binary_result binary_run(const binary_setup& s, const std::function<void(const binary_sample&)>& sample) {
+binary_result binary_run(const binary_setup& s, const std::function<void(const binary_sample&)>& sample, const std::function<void(double)>& progress) {
   const auto sys = s.system_model();
   const auto& m = s.method;
   switch (m.family) {
     case binary_method::kind::rk4: {
       const models::binary_rk4<double> rk4(sys);
-      auto r = run_loop(s, [&](models::binary_state<double>& x) { rk4.step(x, s.h); }, sample);
+      auto r = run_loop(s, [&](models::binary_state<double>& x) { rk4.step(x, s.h); }, sample, progress);
       r.evaluations = 4 * s.steps;
       return r;
     }
@@ -319,7 +322,7 @@ binary_result binary_run(const binary_setup& s, const std::function<void(const b
       const models::binary_lgvi<double> lgvi(sys);
       models::mutual_gravity<double> g;
       bool valid = false;
-      auto r = run_loop(s, [&](models::binary_state<double>& x) { lgvi.step(x, s.h, g, valid); }, sample);
+      auto r = run_loop(s, [&](models::binary_state<double>& x) { lgvi.step(x, s.h, g, valid); }, sample, progress);
       r.evaluations = s.steps + (s.steps > 0 ? 1 : 0);
       return r;
     }
@@ -336,7 +339,7 @@ binary_result binary_run(const binary_setup& s, const std::function<void(const b
               throw std::runtime_error("the adaptive run used its budget of " + message_number(budget) + " steps by t = " + message_number(t) +
                                        " s: the tolerance asks for more steps than the run can afford (raise it)");
           },
-          sample);
+          sample, progress);
       r.evaluations = ode.evaluations();
       return r;
     }
@@ -356,7 +359,7 @@ binary_result binary_run(const binary_setup& s, const std::function<void(const b
           method.step(state, s.h);
           x = state.x;
         },
-        sample);
+        sample, progress);
     r.evaluations = static_cast<long>(method.cost()) * s.steps + (s.steps > 0 ? 1 : 0);
     return r;
   };

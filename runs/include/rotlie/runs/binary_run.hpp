@@ -106,8 +106,10 @@ struct binary_contact : std::runtime_error {
   long step;
 };
 
-/// Runs the setup; `sample` (if given) receives the state at steps 0, every, 2·every, … Throws
-/// binary_contact, or std::runtime_error when an adaptive run exhausts its step budget.
-binary_result binary_run(const binary_setup& setup, const std::function<void(const binary_sample&)>& sample = {});
+/// Runs the setup; `sample` (if given) receives the state at steps 0, every, 2·every, …, and `progress`
+/// (if given) the fraction done about every 1 % of the steps. Throws binary_contact, or
+/// std::runtime_error when an adaptive run exhausts its step budget.
+binary_result binary_run(const binary_setup& setup, const std::function<void(const binary_sample&)>& sample = {},
+                         const std::function<void(double)>& progress = {});
 
 }  // namespace rotlie::runs
