@@ -142,28 +142,8 @@ int run_worker(const map_options& o, process_group& group) {
 
 int run_map(const map_options& options) {
   process_group group;
-  if (group.rank() == 0) {
-    if (group.size() == 1) return run_rank0(options, group);
-    try {
-      return run_rank0(options, group);
-    } catch (const usage_error&) {
-      throw;  // before any work was handed out: the other ranks were told and have ended
-    } catch (const runs::bad_input&) {
-      throw;  // before any work was handed out: the other ranks were told and have ended
-    } catch (const runs::folder_in_use&) {
-      throw;  // likewise (prepare's refusal, exit 1)
-    } catch (const std::exception& e) {
-      // After the work was handed out the other ranks would wait for ever: end the whole job.
-      std::cerr << "rotlie: error: " << one_line(e.what()) << "\n";
-      group.abort(exit_failure);
-    }
-  }
-  try {
-    return run_worker(options, group);
-  } catch (const std::exception& e) {
-    std::cerr << "rotlie: error: rank " << group.rank() << ": " << one_line(e.what()) << "\n";
-    group.abort(exit_failure);
-  }
+  return run_shared(
+      group, [&] { return run_rank0(options, group); }, [&] { return run_worker(options, group); });
 }
 
 }  // namespace rotlie::app

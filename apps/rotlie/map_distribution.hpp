@@ -8,7 +8,12 @@
 #include <utility>
 #include <vector>
 
+#include <iostream>
+
+#include "arguments.hpp"
+#include "rotlie/runs/exclusive_use.hpp"
 #include "rotlie/runs/map_run.hpp"
+#include "rotlie/runs/user_input.hpp"
 
 namespace rotlie::app {
 
@@ -40,5 +45,34 @@ class process_group final : public runs::map_processes {
 
 /// True when this binary was built with MPI.
 bool built_with_mpi();
+
+/// A run shared among the job's processes (map, sweep): `rank0` on rank 0, `worker` on the others. A
+/// refusal on rank 0 before any work is handed out (bad arguments, a folder in use: `rank0` tells the
+/// workers, which end) is thrown as it is; any later failure ends the whole job at once, since the
+/// other ranks would wait for ever.
+template <class Rank0, class Worker>
+int run_shared(process_group& group, Rank0&& rank0, Worker&& worker) {
+  if (group.rank() == 0) {
+    if (group.size() == 1) return rank0();
+    try {
+      return rank0();
+    } catch (const usage_error&) {
+      throw;
+    } catch (const runs::bad_input&) {
+      throw;
+    } catch (const runs::folder_in_use&) {
+      throw;
+    } catch (const std::exception& e) {
+      std::cerr << "rotlie: error: " << runs::one_line(e.what()) << "\n";
+      group.abort(exit_failure);
+    }
+  }
+  try {
+    return worker();
+  } catch (const std::exception& e) {
+    std::cerr << "rotlie: error: rank " << group.rank() << ": " << runs::one_line(e.what()) << "\n";
+    group.abort(exit_failure);
+  }
+}
 
 }  // namespace rotlie::app

@@ -19,7 +19,7 @@ namespace {
 using models::vec3;
 
 constexpr std::size_t shape_file_limit = std::size_t(256) << 20;  // 256 MiB: millions of facets
-constexpr double km3_to_m3 = 1e9;
+constexpr double m3_per_km3 = 1e9;  // a density in kg/m³ times this is kg/km³
 const double pi = std::acos(-1.0);
 
 vec3<double> minus(const vec3<double>& a, const vec3<double>& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
@@ -100,18 +100,6 @@ bool inside(const binary_body& b, const vec3<double>& p) {
     total += 2 * std::atan2(numerator, denominator);
   }
   return total > 2 * pi;
-}
-
-std::vector<double> numbers_in(const std::string& text, const std::string& what) {
-  std::vector<double> out;
-  std::size_t start = 0;
-  while (true) {
-    const auto comma = text.find(',', start);
-    out.push_back(positive_number(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start), what));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return out;
 }
 
 }  // namespace
@@ -204,7 +192,7 @@ binary_body binary_shape_named(const std::string& spec, const std::string& optio
   const auto colon = spec.find(':');
   const std::string kind = spec.substr(0, colon), rest = colon == std::string::npos ? "" : spec.substr(colon + 1);
   if (kind == "ellipsoid") {
-    const auto axes = numbers_in(rest, option + " ellipsoid: a semi-axis");
+    const auto axes = positive_numbers(rest, option + " ellipsoid: a semi-axis");
     if (axes.size() != 3) throw bad_input(option + ": ellipsoid:a,b,c takes three semi-axes in km, got '" + one_line(spec) + "'");
     if (!(axes[0] >= axes[1] && axes[1] >= axes[2]))
       throw bad_input(option + ": the semi-axes must satisfy a >= b >= c (a along the body x), got '" + one_line(spec) + "'");
@@ -253,11 +241,11 @@ binary_body binary_shape_named(const std::string& spec, const std::string& optio
 
 binary_body with_density(binary_body b, double density) {
   b.density = density;
-  const double mass = density * km3_to_m3 * b.volume;
+  const double mass = density * m3_per_km3 * b.volume;
   if (b.kind == "ellipsoid") {
     b.body = models::ellipsoid_body(mass, b.semi_axes[0], b.semi_axes[1], b.semi_axes[2]);
   } else {
-    const double scale = density * km3_to_m3;  // the integrals were taken at unit density (kg/km³)
+    const double scale = density * m3_per_km3;  // the integrals were taken at unit density (kg/km³)
     b.body.mass = mass;
     for (auto& x : b.body.inertia.a) x *= scale;
     for (auto& x : b.body.third) x *= scale;
@@ -266,7 +254,7 @@ binary_body with_density(binary_body b, double density) {
   return b;
 }
 
-binary_body with_mass(binary_body b, double mass) { return with_density(std::move(b), mass / (km3_to_m3 * b.volume)); }
+binary_body with_mass(binary_body b, double mass) { return with_density(std::move(b), mass / (m3_per_km3 * b.volume)); }
 
 bool bodies_touch(const binary_body& primary, const models::mat3<double>& Q1, const binary_body& secondary, const models::mat3<double>& Q2,
                   const models::vec3<double>& r) {

@@ -94,18 +94,6 @@ binary_method method_named(const std::string& name, const vec3<double>& I1, cons
   return m;
 }
 
-std::vector<double> number_list(const std::string& text, const std::string& what) {
-  std::vector<double> out;
-  std::size_t start = 0;
-  while (true) {
-    const auto comma = text.find(',', start);
-    out.push_back(positive_number(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start), what));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return out;
-}
-
 double norm(const vec3<double>& v) { return std::sqrt(models::dot(v, v)); }
 
 // The circular start: r along x, the frames aligned (the secondary's long axis at the primary), the
@@ -150,12 +138,12 @@ binary_setup binary_setup_of(const binary_request& given) {
   if (!r.density.empty() && !r.mass.empty()) throw bad_input("--density and --mass exclude each other: give one");
   if (r.density.empty() && r.mass.empty()) throw bad_input("--density RHO (kg/m3, one or two values) or --mass M1,M2 (kg) is required");
   if (!r.density.empty()) {
-    const auto rho = number_list(r.density, "--density");
+    const auto rho = positive_numbers(r.density, "--density");
     if (rho.size() > 2) throw bad_input("--density takes one value (both bodies) or two, got '" + one_line(r.density) + "'");
     s.primary = with_density(s.primary, rho[0]);
     s.secondary = with_density(s.secondary, rho.back());
   } else {
-    const auto m = number_list(r.mass, "--mass");
+    const auto m = positive_numbers(r.mass, "--mass");
     if (m.size() != 2) throw bad_input("--mass takes two values M1,M2 in kg, got '" + one_line(r.mass) + "'");
     s.primary = with_mass(s.primary, m[0]);
     s.secondary = with_mass(s.secondary, m[1]);

@@ -31,6 +31,16 @@ double positive_number(const std::string& text, const std::string& what) {
   return cln::double_approx(*x);
 }
 
+std::vector<double> positive_numbers(const std::string& text, const std::string& what) {
+  std::vector<double> out;
+  for (std::size_t start = 0;;) {
+    const auto comma = text.find(',', start);
+    out.push_back(positive_number(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start), what));
+    if (comma == std::string::npos) return out;
+    start = comma + 1;
+  }
+}
+
 models::vec3<double> initial_momentum(const std::string& text) {
   models::vec3<double> g{};
   std::size_t start = 0;

@@ -2,6 +2,7 @@
 // The numbers of a numeric run as a user types them (a step, a time span, an initial angular
 // momentum), checked so that no energy, rate or phase of the run overflows double.
 #include <string>
+#include <vector>
 
 #include "rotlie/models/small_matrix.hpp"
 
@@ -10,6 +11,9 @@ namespace rotlie::runs {
 /// A positive number within 1e-150 … 1e150 given as a decimal or a rational (1/64); `what` names
 /// the option. Throws bad_input.
 double positive_number(const std::string& text, const std::string& what);
+
+/// A comma-separated list of such numbers ("2000" or "2000,2500"), each checked as positive_number.
+std::vector<double> positive_numbers(const std::string& text, const std::string& what);
 
 /// g1,g2,g3 (decimals or rationals), not all zero, |G0| within 1e-150 … 1e150. Throws bad_input.
 models::vec3<double> initial_momentum(const std::string& text);
