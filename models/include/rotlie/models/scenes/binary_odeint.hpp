@@ -3,20 +3,18 @@
 // then each body's Q row-major and G), integrated by an adaptive Runge–Kutta method of Boost.Odeint:
 // Runge–Kutta–Fehlberg 7(8) (GUBAS's adaptive method is a 7(8) pair) or Dormand–Prince 5(4), one
 // tolerance as both the absolute and the relative one, from checkpoint to checkpoint.
-// GCC 12's false -Wmaybe-uninitialized inside Odeint's steppers: see spin_orbit_odeint.hpp.
+// GCC 12's false -Wmaybe-uninitialized inside Odeint's steppers: see odeint_checkpoints.hpp.
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #endif
-#include <boost/numeric/odeint.hpp>
-
 #include <array>
 #include <limits>
 #include <stdexcept>
 
 #include "rotlie/models/scenes/binary_system.hpp"
-#include "rotlie/models/scenes/spin_orbit_odeint.hpp"
+#include "rotlie/models/odeint_checkpoints.hpp"
 
 namespace rotlie::models {
 
@@ -79,26 +77,11 @@ class binary_odeint {
  private:
   template <class Controlled>
   void run(Controlled& stepper, binary_ode_state<T>& y, T& t, const T& t_next) {
-    namespace ode = boost::numeric::odeint;
     const auto rhs = [this](const binary_ode_state<T>& in, binary_ode_state<T>& out, const T&) {
       out = packed(system_.derivative(unpacked(in)));
       ++evaluations_;
     };
-    int refused = 0;
-    while (t < t_next) {
-      ++tried_;
-      const bool last = dt_ >= t_next - t;
-      T dt = last ? t_next - t : dt_;
-      const T kept = dt_;
-      if (stepper.try_step(rhs, y, t, dt) == ode::success) {
-        refused = 0;
-        dt_ = last && dt < kept ? kept : dt;  // a step cut to land on the checkpoint does not shrink the next
-        if (last) t = t_next;
-      } else {
-        dt_ = dt;
-        if (++refused > 500) throw std::runtime_error("the adaptive Runge-Kutta step fell below what the tolerance allows");
-      }
-    }
+    advance_to_checkpoint(stepper, rhs, y, t, t_next, dt_, [&] { ++tried_; });
   }
 
   binary_system<T> system_;

@@ -12,19 +12,16 @@
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #endif
-#include <boost/numeric/odeint.hpp>
-
 #include <array>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
+#include "rotlie/models/odeint_checkpoints.hpp"
 #include "rotlie/models/scenes/spin_orbit.hpp"
 #include "rotlie/schemes/message_number.hpp"
 
 namespace rotlie::models {
-
-enum class odeint_method { dopri5, rkf78 };
 
 template <class T>
 using spin_ode_state = std::array<T, 12>;
@@ -86,26 +83,12 @@ class spin_odeint_stepper {
  private:
   template <class Controlled>
   void run(Controlled& stepper, spin_ode_state<T>& x, T& t, const T& t_next) {
-    namespace ode = boost::numeric::odeint;
     const spin_orbit_ode<T> rhs{&tide_, &evaluations_};
-    int refused = 0;
-    while (t < t_next) {
+    advance_to_checkpoint(stepper, rhs, x, t, t_next, dt_, [&] {
       if (++tried_ > budget_)
-        throw std::runtime_error("the adaptive run used its budget of " + schemes::message_number(budget_) + " steps by t = " + schemes::message_number(static_cast<double>(t)) +
-                                 ": the tolerance asks for more steps than the run can afford (raise it)");
-      const bool last = dt_ >= t_next - t;
-      T dt = last ? t_next - t : dt_;
-      const T kept = dt_;
-      if (stepper.try_step(rhs, x, t, dt) == ode::success) {
-        refused = 0;
-        // a step cut to land on the checkpoint does not shrink the next one
-        dt_ = last && dt < kept ? kept : dt;
-        if (last) t = t_next;
-      } else {
-        dt_ = dt;
-        if (++refused > 500) throw std::runtime_error("the adaptive Runge-Kutta step fell below what the tolerance allows");
-      }
-    }
+        throw std::runtime_error("the adaptive run used its budget of " + schemes::message_number(budget_) + " steps by t = " +
+                                 schemes::message_number(static_cast<double>(t)) + ": the tolerance asks for more steps than the run can afford (raise it)");
+    });
   }
 
   const spin_orbit_tide<T>& tide_;
