@@ -1,7 +1,6 @@
 #include "rotlie/runs/binary_run.hpp"
 
 #include <cln/rational.h>
-#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -16,7 +15,7 @@
 #include "rotlie/models/scenes/binary_odeint.hpp"
 #include "rotlie/models/scenes/binary_splitting.hpp"
 #include "rotlie/models/table_rotor.hpp"
-#include "rotlie/runs/binary_io.hpp"
+#include "rotlie/runs/binary_state_file.hpp"
 #include "rotlie/runs/body_names.hpp"
 #include "rotlie/runs/md_methods.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"

@@ -1,12 +1,13 @@
 #pragma once
-// The JSON of `rotlie binary` (a contract: fields are added, never renamed), its trajectory lines,
-// its human summary, and the reader of a start state (--state FILE).
+// The JSON of `rotlie binary` (a contract: fields are added, never renamed), its trajectory lines and
+// its human summary; the reader of a start state is binary_state_file.hpp.
 #include <nlohmann/json.hpp>
 
 #include <string>
 
 #include "rotlie/models/scenes/binary_system.hpp"
 #include "rotlie/runs/binary_run.hpp"
+#include "rotlie/runs/binary_state_file.hpp"
 
 namespace rotlie::runs {
 
@@ -24,12 +25,5 @@ nlohmann::json binary_sample_json(const binary_sample& s, const models::binary_s
 /// The summary `rotlie binary` prints without --json.
 std::string binary_text(const binary_result& r);
 
-/// A start from a JSON file with "r", "v" (km, km/s), "Q1", "Q2" (3×3, rows; proper rotations to 1e-9,
-/// then made orthogonal to round-off) and "omega1", "omega2" (rad/s, body frames): the fields of
-/// binary_json, so a run's output starts the next. Throws bad_input naming --state.
-models::binary_state<double> read_binary_state(const std::string& path, const models::binary_system<double>& sys);
-
-/// The same from the JSON text; `where` names it in messages.
-models::binary_state<double> parse_binary_state(const std::string& text, const std::string& where, const models::binary_system<double>& sys);
 
 }  // namespace rotlie::runs
