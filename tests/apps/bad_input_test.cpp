@@ -151,6 +151,9 @@ void make_files() {
   write(d / "falling.json", R"({"r": [1.2, 0, 0], "v": [-1e-4, 1e-6, 0], )" + aligned + "}");
   write(d / "not-rotation.json", R"({"r": [1.2, 0, 0], "v": [0, 1e-4, 0], "Q1": [[1,0,0],[0,1,0],[0,0,2]], "Q2": [[1,0,0],[0,1,0],[0,0,1]], "omega1": [0,0,0], "omega2": [0,0,0]})");
   write(d / "nan.json", R"({"r": [1.2, 0, 0], "v": [0, NaN, 0], )" + aligned + "}");
+  // a sweep's results file that is a link to nothing
+  write(d / "runs.jsonl", R"({"system": "didymos", "integrator": "SIER2", "h": 10, "T": 100})" "\n");
+  fs::create_symlink(d / "nowhere.jsonl", d / "dangling.jsonl");
 }
 
 // clang-format off
@@ -411,6 +414,8 @@ const std::vector<bad_input> cases = {
   {{"binary", "--system", "didymos", "--integrator", "SIER2", "--h", "7", "--T", "100"}, usage, "is not a whole number of steps"},
   {{"binary", "--system", "didymos", "--integrator", "SIER2", "--T", "100"}, usage, "--h is required"},
   {{"binary", "--system", "didymos", "--integrator", "SIER4/NOPE", "--h", "10", "--T", "100"}, usage, "--integrator SIER4/NOPE"},
+
+  {{"sweep", "--in", "@DIR@/runs.jsonl", "--out", "@DIR@/dangling.jsonl"}, usage, "which does not exist"},
 
   // md
   {{"md", "--integrator", "SIER2", "--h", "1"}, usage, "--scene is required"},
