@@ -206,6 +206,22 @@ void exact_free_rotation_advance_canonical(benchmark::State& state, bool old_pat
   state.counters["stages"] = meter.stages(state);
 }
 
+// advance_all(rotors, …) of `states` over t = 0.05 per iteration; counters per body, in ns and in
+// rotation stages, and the vector target as the label.
+template <class Rotors>
+void advance_all_timed(benchmark::State& state, const Rotors& rotors, std::vector<models::body_state<double>>& states) {
+  const std::size_t n = states.size();
+  const stage_meter meter;
+  for (auto _ : state) {
+    models::advance_all(rotors, n, [&](std::size_t i) -> models::body_state<double>& { return states[i]; }, 0.05);
+    benchmark::ClobberMemory();
+  }
+  state.counters["stages_per_body"] = meter.stages(state) / static_cast<double>(n);
+  state.counters["ns_per_body"] = benchmark::Counter(static_cast<double>(state.iterations()) * static_cast<double>(n),
+                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.SetLabel(models::batch_target());
+}
+
 // The exact flow of N water bodies at once (advance_all: blocks of 64, vectorised across bodies,
 // exact_free_rotation_batch.hpp): canonical states advanced over t = 0.05 each call (every free
 // flight starts from a new state); counters per body, in ns and in rotation stages.
@@ -216,16 +232,7 @@ void exact_free_rotation_batch(benchmark::State& state) {
   std::vector<models::body_state<double>> states(n);
   for (auto& s : states)
     for (std::size_t k = 0; k < 3; ++k) s.G[k] = std::sqrt(water[k]) * normal(rng);
-  const models::exact_free_rotation<double> rotor(water);
-  const stage_meter meter;
-  for (auto _ : state) {
-    models::advance_all(rotor, n, [&](std::size_t i) -> models::body_state<double>& { return states[i]; }, 0.05);
-    benchmark::ClobberMemory();
-  }
-  state.counters["stages_per_body"] = meter.stages(state) / static_cast<double>(n);
-  state.counters["ns_per_body"] = benchmark::Counter(static_cast<double>(state.iterations()) * static_cast<double>(n),
-                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.SetLabel(models::batch_target());
+  advance_all_timed(state, models::exact_free_rotation<double>(water), states);
 }
 
 // The same with each body's own rotor, its moments water's within 1e-13 (LAMMPS's molecules of one
@@ -244,15 +251,7 @@ void exact_free_rotation_batch_own_rotors(benchmark::State& state) {
     rotors.emplace_back(models::vec3<double>{water[0] * (1 + spread(rng)), water[1] * (1 + spread(rng)), water[2] * (1 + spread(rng))});
     own[i] = &rotors.back();
   }
-  const stage_meter meter;
-  for (auto _ : state) {
-    models::advance_all(own.data(), n, [&](std::size_t i) -> models::body_state<double>& { return states[i]; }, 0.05);
-    benchmark::ClobberMemory();
-  }
-  state.counters["stages_per_body"] = meter.stages(state) / static_cast<double>(n);
-  state.counters["ns_per_body"] = benchmark::Counter(static_cast<double>(state.iterations()) * static_cast<double>(n),
-                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.SetLabel(models::batch_target());
+  advance_all_timed(state, own.data(), states);
 }
 
 // The float128 path: what an evaluation costs when the estimate asks for it (long times).

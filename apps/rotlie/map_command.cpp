@@ -100,50 +100,32 @@ std::string summary(const prepared_map& p, double seconds, std::size_t computed,
 }
 
 int run_rank0(const map_options& o, process_group& group) {
-  prepared_map p;
-  try {
-    p = prepare(o);
-  } catch (const usage_error&) {
-    group.broadcast(std::to_string(exit_usage));
-    throw;
-  } catch (const runs::bad_input&) {
-    group.broadcast(std::to_string(exit_usage));
-    throw;
-  } catch (...) {
-    group.broadcast(std::to_string(exit_failure));
-    throw;
-  }
-  group.broadcast("0" + std::string(p.existing.done.begin(), p.existing.done.end()));
-
+  prepared_map p = prepared_on_rank0(group, [&] { return prepare(o); });
+  tell_workers_to_start(group, p.existing.done);
   const runs::map_plan plan{p.family, p.K, p.method, p.bodies, p.existing.done};
   progress_line progress;
-  runs::map_run_output out;
-  out.path = p.path;
-  if (!p.path.empty()) out.existing = &p.existing;  // --json alone: no file, nothing resumed
+  runs::map_run_output out{.path = p.path,
+                           .existing = p.path.empty() ? nullptr : &p.existing,  // --json alone: no file, nothing resumed
+                           .line = nullptr,
+                           .progress = [&progress](const std::string& line) { progress.show(line); }};
   if (o.json) out.line = [](const std::string& line) { std::cout << line << "\n" << std::flush; };
-  out.progress = [&progress](const std::string& line) { progress.show(line); };
   const auto r = runs::run_map_rank0(plan, group, out);
   if (!o.json) std::cout << summary(p, r.seconds, r.computed, group.size());
   return 0;
 }
 
 int run_worker(const map_options& o, process_group& group) {
-  const std::string verdict = group.broadcast("");
-  if (verdict.empty() || verdict[0] != '0') return verdict.empty() ? exit_failure : verdict[0] - '0';  // rank 0 says why
-  const auto& descriptor = runs::family_to_map(o.family);
-  const int K = checked_grid(o.grid);
-  auto plan = runs::plan_map(std::string(descriptor.name), K, runs::map_method_asked(descriptor, K, o.exact, o.fast));
-  plan.done.assign(verdict.begin() + 1, verdict.end());
-  runs::run_map_worker(plan, group);
-  return 0;
+  return when_rank0_starts(group, [&](std::vector<char> done) {
+    const auto& descriptor = runs::family_to_map(o.family);
+    const int K = checked_grid(o.grid);
+    auto plan = runs::plan_map(std::string(descriptor.name), K, runs::map_method_asked(descriptor, K, o.exact, o.fast));
+    plan.done = std::move(done);
+    runs::run_map_worker(plan, group);
+  });
 }
 
 }  // namespace
 
-int run_map(const map_options& options) {
-  process_group group;
-  return run_shared(
-      group, [&] { return run_rank0(options, group); }, [&] { return run_worker(options, group); });
-}
+int run_map(const map_options& options) { return run_shared(options, run_rank0, run_worker); }
 
 }  // namespace rotlie::app

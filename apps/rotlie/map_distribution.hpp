@@ -46,16 +46,50 @@ class process_group final : public runs::map_processes {
 /// True when this binary was built with MPI.
 bool built_with_mpi();
 
-/// A run shared among the job's processes (map, sweep): `rank0` on rank 0, `worker` on the others. A
-/// refusal on rank 0 before any work is handed out (bad arguments, a folder in use: `rank0` tells the
-/// workers, which end) is thrown as it is; any later failure ends the whole job at once, since the
-/// other ranks would wait for ever.
-template <class Rank0, class Worker>
-int run_shared(process_group& group, Rank0&& rank0, Worker&& worker) {
+/// Rank 0's preparation of a shared run: what `prepare()` returns, or, when it throws, the workers told
+/// to end with the matching exit status (2 for a refused input, 1 otherwise) and the exception passed on.
+template <class Prepare>
+auto prepared_on_rank0(process_group& group, Prepare&& prepare) -> decltype(prepare()) {
+  try {
+    return prepare();
+  } catch (const usage_error&) {
+    group.broadcast(std::to_string(exit_usage));
+    throw;
+  } catch (const runs::bad_input&) {
+    group.broadcast(std::to_string(exit_usage));
+    throw;
+  } catch (...) {
+    group.broadcast(std::to_string(exit_failure));
+    throw;
+  }
+}
+
+/// Rank 0's word that the run goes ahead, with the rows already done (one mark per row).
+inline void tell_workers_to_start(process_group& group, const std::vector<char>& done) {
+  group.broadcast("0" + std::string(done.begin(), done.end()));
+}
+
+/// A worker's part once rank 0 says the run goes ahead: `work(done)`, the rows already done; or, when
+/// rank 0 refused, the exit status it gave (1 when it said nothing).
+template <class Work>
+int when_rank0_starts(process_group& group, Work&& work) {
+  const std::string verdict = group.broadcast("");
+  if (verdict.empty() || verdict[0] != '0') return verdict.empty() ? exit_failure : verdict[0] - '0';
+  work(std::vector<char>(verdict.begin() + 1, verdict.end()));
+  return 0;
+}
+
+/// A run shared among the job's processes (map, sweep), which it joins: `rank0` on rank 0, `worker` on
+/// the others. A refusal on rank 0 before any work is handed out (bad arguments, a folder in use:
+/// `rank0` tells the workers, which end) is thrown as it is; any later failure ends the whole job at
+/// once, since the other ranks would wait for ever.
+template <class Options>
+int run_shared(const Options& options, int (*rank0)(const Options&, process_group&), int (*worker)(const Options&, process_group&)) {
+  process_group group;
   if (group.rank() == 0) {
-    if (group.size() == 1) return rank0();
+    if (group.size() == 1) return rank0(options, group);
     try {
-      return rank0();
+      return rank0(options, group);
     } catch (const usage_error&) {
       throw;
     } catch (const runs::bad_input&) {
@@ -68,7 +102,7 @@ int run_shared(process_group& group, Rank0&& rank0, Worker&& worker) {
     }
   }
   try {
-    return worker();
+    return worker(options, group);
   } catch (const std::exception& e) {
     std::cerr << "rotlie: error: rank " << group.rank() << ": " << runs::one_line(e.what()) << "\n";
     group.abort(exit_failure);

@@ -54,25 +54,10 @@ prepared_sweep prepare(const sweep_options& o) {
 }
 
 int run_rank0(const sweep_options& o, process_group& group) {
-  prepared_sweep p;
-  try {
-    p = prepare(o);
-  } catch (const usage_error&) {
-    group.broadcast(std::to_string(exit_usage));
-    throw;
-  } catch (const runs::bad_input&) {
-    group.broadcast(std::to_string(exit_usage));
-    throw;
-  } catch (...) {
-    group.broadcast(std::to_string(exit_failure));
-    throw;
-  }
-  group.broadcast("0" + std::string(p.plan.done.begin(), p.plan.done.end()));
+  prepared_sweep p = prepared_on_rank0(group, [&] { return prepare(o); });
+  tell_workers_to_start(group, p.plan.done);
   progress_line progress;
-  runs::sweep_output out;
-  out.path = p.path;
-  out.existing = &p.existing;
-  out.progress = [&progress](const std::string& line) { progress.show(line); };
+  const runs::sweep_output out{.path = p.path, .existing = &p.existing, .progress = [&progress](const std::string& line) { progress.show(line); }};
   const auto computed = runs::run_sweep_rank0(p.plan, group, out);
   std::cout << "sweep of " << p.plan.inputs.size() << " runs: " << computed << " computed now by " << group.size()
             << (group.size() == 1 ? " process" : " processes") << ", in " << runs::printable_path(p.path) << "\n";
@@ -80,20 +65,15 @@ int run_rank0(const sweep_options& o, process_group& group) {
 }
 
 int run_worker(const sweep_options& o, process_group& group) {
-  const std::string verdict = group.broadcast("");
-  if (verdict.empty() || verdict[0] != '0') return verdict.empty() ? exit_failure : verdict[0] - '0';  // rank 0 says why
-  auto plan = runs::plan_sweep(o.in);
-  plan.done.assign(verdict.begin() + 1, verdict.end());
-  runs::run_sweep_worker(plan, group);
-  return 0;
+  return when_rank0_starts(group, [&](std::vector<char> done) {
+    auto plan = runs::plan_sweep(o.in);
+    plan.done = std::move(done);
+    runs::run_sweep_worker(plan, group);
+  });
 }
 
 }  // namespace
 
-int run_sweep(const sweep_options& options) {
-  process_group group;
-  return run_shared(
-      group, [&] { return run_rank0(options, group); }, [&] { return run_worker(options, group); });
-}
+int run_sweep(const sweep_options& options) { return run_shared(options, run_rank0, run_worker); }
 
 }  // namespace rotlie::app

@@ -162,27 +162,44 @@ HWY_INLINE void product_pair(V a, V b, V c, V dd, V e, V& hi, V& lo) {
   lo = hn::Add(hn::MulSub(h, dh, hi), hn::Add(hn::Mul(h, dl), hn::Mul(l, dh)));
 }
 
+// The descent both transformations share, lane by lane while x > limit (at most 6 levels): with
+// k' = √x', r = x/(1 + k')², it takes u ← u/(1 + r), x ← r², x' ← 4k'/(1 + k')², and keeps r, the new x'
+// and the lanes that moved for the way back. Gauss: (x, x') = (m, m_c); Landen: (m_c, m).
+struct landen_descent {
+  static constexpr int max_levels = 6;
+  V root_mu[max_levels], other[max_levels];
+  M active[max_levels];
+  int levels = 0;
+
+  HWY_INLINE void run(V& u, V& x, V& x_other, V limit) {
+    const D d;
+    const V one = hn::Set(d, 1.0), four = hn::Set(d, 4.0);
+    for (; levels < max_levels; ++levels) {
+      const M a = hn::Gt(x, limit);
+      if (hn::AllFalse(d, a)) break;
+      const V k = hn::Sqrt(x_other), k1 = hn::Add(one, k), k1_2 = hn::Mul(k1, k1);
+      const V r = hn::Div(x, k1_2);
+      root_mu[levels] = r;
+      other[levels] = hn::Div(hn::Mul(four, k), k1_2);
+      active[levels] = a;
+      u = hn::IfThenElse(a, hn::Div(u, hn::Add(one, r)), u);
+      x = hn::IfThenElse(a, hn::Mul(r, r), x);
+      x_other = hn::IfThenElse(a, other[levels], x_other);
+    }
+  }
+};
+
 // sn cn dn of (u | m) by the descending Gauss transformation, u ≥ 0 (jacobi_functions_gauss): each
 // lane descends while its parameter is above √ε/8, then the first order in μ, then the ascent.
 HWY_INLINE jacobi gauss_functions(V u, V m, V mc, M& ok) {
   const D d;
-  const V one = hn::Set(d, 1.0), four = hn::Set(d, 4.0), threshold = hn::Set(d, std::sqrt(std::numeric_limits<double>::epsilon()) / 8);
-  constexpr int max_levels = 6;
-  V root_mu[max_levels];
-  M active[max_levels];
-  int levels = 0;
-  for (; levels < max_levels; ++levels) {
-    const M a = hn::Gt(m, threshold);
-    if (hn::AllFalse(d, a)) break;
-    const V kc = hn::Sqrt(mc), kc1 = hn::Add(one, kc), kc1_2 = hn::Mul(kc1, kc1);
-    const V r = hn::Div(m, kc1_2);
-    root_mu[levels] = r;
-    active[levels] = a;
-    u = hn::IfThenElse(a, hn::Div(u, hn::Add(one, r)), u);
-    m = hn::IfThenElse(a, hn::Mul(r, r), m);
-    mc = hn::IfThenElse(a, hn::Div(hn::Mul(four, kc), kc1_2), mc);
-  }
+  const V one = hn::Set(d, 1.0), threshold = hn::Set(d, std::sqrt(std::numeric_limits<double>::epsilon()) / 8);
+  landen_descent down;
+  down.run(u, m, mc, threshold);
   ok = hn::AndNot(hn::Gt(m, threshold), ok);  // deeper than max_levels: one by one
+  const int levels = down.levels;
+  const V* root_mu = down.root_mu;
+  const M* active = down.active;
   const V s = hn::Sin(d, u), c = hn::Cos(d, u);
   const V q = hn::Mul(hn::Mul(m, hn::Set(d, 0.25)), hn::Sub(u, hn::Mul(s, c)));
   jacobi j{hn::Sub(s, hn::Mul(q, c)), hn::Add(c, hn::Mul(q, s)), hn::Sub(one, hn::Mul(hn::Mul(hn::Mul(m, hn::Set(d, 0.5)), s), s))};
@@ -199,24 +216,14 @@ HWY_INLINE jacobi gauss_functions(V u, V m, V mc, M& ok) {
 // each lane ascends while m_c > ε, then the first order about m = 1 (tanh, sech), then back.
 HWY_INLINE jacobi landen_functions(V u, V m, V mc, M& ok) {
   const D d;
-  const V one = hn::Set(d, 1.0), four = hn::Set(d, 4.0), eps = hn::Set(d, std::numeric_limits<double>::epsilon());
-  constexpr int max_levels = 6;
-  V root_mu[max_levels], mu[max_levels];
-  M active[max_levels];
-  int levels = 0;
-  for (; levels < max_levels; ++levels) {
-    const M a = hn::Gt(mc, eps);
-    if (hn::AllFalse(d, a)) break;
-    const V k = hn::Sqrt(m), k1 = hn::Add(one, k), k1_2 = hn::Mul(k1, k1);
-    const V r = hn::Div(mc, k1_2);
-    root_mu[levels] = r;
-    mu[levels] = hn::Div(hn::Mul(four, k), k1_2);
-    active[levels] = a;
-    u = hn::IfThenElse(a, hn::Div(u, hn::Add(one, r)), u);
-    m = hn::IfThenElse(a, mu[levels], m);
-    mc = hn::IfThenElse(a, hn::Mul(r, r), mc);
-  }
+  const V one = hn::Set(d, 1.0), eps = hn::Set(d, std::numeric_limits<double>::epsilon());
+  landen_descent down;
+  down.run(u, mc, m, eps);  // the same transformation with the parameter's roles exchanged
   ok = hn::AndNot(hn::Gt(mc, eps), ok);  // deeper than max_levels: one by one
+  const int levels = down.levels;
+  const V* root_mu = down.root_mu;
+  const V* mu = down.other;
+  const M* active = down.active;
   const V e = hn::Exp(d, u);
   const V th = hn::Tanh(d, u), sech = hn::Div(hn::Set(d, 2.0), hn::Add(e, hn::Div(one, e))), sh = hn::Div(th, sech);
   const V q = hn::Mul(mc, hn::Set(d, 0.25));

@@ -1,6 +1,6 @@
 #pragma once
 // What the typed calls (spin.cpp, binary.cpp) share: numbers and every=K as the command line reads
-// them, TypeErrors as Python raises them, and the results' arrays.
+// them, TypeErrors as Python raises them, the results' arrays and common properties.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -52,6 +52,22 @@ inline py::array_t<double> matrix(const std::array<double, 9>& Q) {
   py::array_t<double> a({3, 3});
   std::copy(Q.begin(), Q.end(), a.mutable_data());
   return a;
+}
+
+// The properties every scene result shares (spin, binary: an object with `result` and its JSON text
+// `json`): the stepping fields, cpu_s, the stability flags and to_dict(); `h_doc` gives the step's unit.
+template <class Object, class Class>
+void def_run_properties(Class& c, const char* h_doc, const char* command) {
+  c.def_property_readonly("integrator", [](const Object& o) { return o.result.setup.method.name; })
+      .def_property_readonly("h", [](const Object& o) { return o.result.setup.h; }, h_doc)
+      .def_property_readonly("T", [](const Object& o) { return o.result.setup.T; })
+      .def_property_readonly("steps", [](const Object& o) { return o.result.setup.steps; })
+      .def_property_readonly("evaluations", [](const Object& o) { return o.result.evaluations; })
+      .def_property_readonly("cpu_s", [](const Object& o) { return o.result.cpu_s; })
+      .def_property_readonly("unstable", [](const Object& o) { return o.result.check.unstable; })
+      .def_property_readonly("round_off_floor", [](const Object& o) { return o.result.check.round_off_floor; })
+      .def("to_dict", [](const Object& o) { return py::module_::import("json").attr("loads")(o.json); },
+           (std::string("the object `rotlie ") + command + " --json` prints").c_str());
 }
 
 }  // namespace rotlie::python

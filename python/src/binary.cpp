@@ -99,15 +99,11 @@ void bind_binary(py::module_& m) {
       .def_property_readonly("omega1", [](const binary_trajectory& s) { return rows_array(s.omega1, {3}); }, "rad/s, body frame, shape (N, 3)")
       .def_property_readonly("omega2", [](const binary_trajectory& s) { return rows_array(s.omega2, {3}); }, "rad/s, body frame, shape (N, 3)")
       .def_property_readonly("energy", [](const binary_trajectory& s) { return vector_array(s.energy); }, "kg km2 s-2, shape (N,)");
-  py::class_<binary_object>(m, "BinaryResult", "The result of rotlie.binary: the fields of `rotlie binary --json` as attributes")
-      .def_property_readonly("system", [](const binary_object& b) { return field(b, "system"); })
-      .def_property_readonly("integrator", [](const binary_object& b) { return b.result.setup.method.name; })
+  py::class_<binary_object> result(m, "BinaryResult", "The result of rotlie.binary: the fields of `rotlie binary --json` as attributes");
+  def_run_properties<binary_object>(result, "the step taken, s", "binary");
+  result.def_property_readonly("system", [](const binary_object& b) { return field(b, "system"); })
       .def_property_readonly("order", [](const binary_object& b) { return b.result.setup.order; })
       .def_property_readonly("G", [](const binary_object& b) { return b.result.setup.G; })
-      .def_property_readonly("h", [](const binary_object& b) { return b.result.setup.h; }, "the step taken, s")
-      .def_property_readonly("T", [](const binary_object& b) { return b.result.setup.T; })
-      .def_property_readonly("steps", [](const binary_object& b) { return b.result.setup.steps; })
-      .def_property_readonly("evaluations", [](const binary_object& b) { return b.result.evaluations; })
       .def_property_readonly("masses", [](const binary_object& b) { return py::array(field(b, "masses")).attr("astype")("float64"); }, "kg, shape (2,)")
       .def_property_readonly("moments", [](const binary_object& b) { return py::array(field(b, "moments")).attr("astype")("float64"); },
                              "principal moments, kg km2, shape (2, 3)")
@@ -123,15 +119,11 @@ void bind_binary(py::module_& m) {
       .def_property_readonly("angular_momentum", [](const binary_object& b) { return array3(b.result.angular_momentum); })
       .def_property_readonly("max_rel_energy_error", [](const binary_object& b) { return b.result.check.max_rel_energy_error; })
       .def_property_readonly("max_rel_angular_momentum_error", [](const binary_object& b) { return b.result.check.max_rel_angular_momentum_error; })
-      .def_property_readonly("cpu_s", [](const binary_object& b) { return b.result.cpu_s; })
       .def_property_readonly("mutual", [](const binary_object& b) { return field(b, "mutual"); }, "{U, F, M1, M2} at the final state")
-      .def_property_readonly("unstable", [](const binary_object& b) { return b.result.check.unstable; })
-      .def_property_readonly("round_off_floor", [](const binary_object& b) { return b.result.check.round_off_floor; })
       .def_property_readonly("trajectory", [](const binary_object& b) -> py::object {
         if (b.trajectory.every <= 0) return py::none();
         return py::cast(b.trajectory);
       }, "the samples every K steps (every=K), or None")
-      .def("to_dict", [](const binary_object& b) { return py::module_::import("json").attr("loads")(b.json); }, "the object `rotlie binary --json` prints")
       .def("__repr__", [](const binary_object& b) {
         return "<BinaryResult " + b.result.setup.method.name + ", order " + std::to_string(b.result.setup.order) + ", " +
                std::to_string(b.result.setup.steps) + " steps" + (b.result.check.unstable ? ", unstable>" : ">");

@@ -64,15 +64,11 @@ void bind_spin(py::module_& m) {
       .def_property_readonly("omega_body", [](const trajectory_object& s) { return rows_array(s.samples.omega_body, {3}); },
                              "angular velocities in the body frame (units of n), shape (N, 3)")
       .def_property_readonly("energy", [](const trajectory_object& s) { return vector_array(s.samples.energy); }, "T + V(t), shape (N,)");
-  py::class_<spin_object>(m, "SpinResult", "The result of rotlie.spin: the fields of `rotlie spin --json` as attributes")
-      .def_property_readonly("body", [](const spin_object& s) { return s.result.setup.body.name; })
-      .def_property_readonly("integrator", [](const spin_object& s) { return s.result.setup.method.name; })
+  py::class_<spin_object> result(m, "SpinResult", "The result of rotlie.spin: the fields of `rotlie spin --json` as attributes");
+  def_run_properties<spin_object>(result, "the step taken, in orbits", "spin");
+  result.def_property_readonly("body", [](const spin_object& s) { return s.result.setup.body.name; })
       .def_property_readonly("scalar", [](const spin_object& s) { return s.result.setup.scalar; })
       .def_property_readonly("e", [](const spin_object& s) { return s.result.setup.e; })
-      .def_property_readonly("h", [](const spin_object& s) { return s.result.setup.h; }, "the step taken, in orbits")
-      .def_property_readonly("T", [](const spin_object& s) { return s.result.setup.T; })
-      .def_property_readonly("steps", [](const spin_object& s) { return s.result.setup.steps; })
-      .def_property_readonly("evaluations", [](const spin_object& s) { return s.result.evaluations; })
       .def_property_readonly("Q", [](const spin_object& s) { return matrix(s.result.Q.a); }, "final attitude, columns the body axes")
       .def_property_readonly("omega_body", [](const spin_object& s) {
         return py::array_t<double>(3, s.result.omega_body.data());
@@ -80,9 +76,6 @@ void bind_spin(py::module_& m) {
       .def_property_readonly("theta", [](const spin_object& s) { return s.result.theta; })
       .def_property_readonly("energy_start", [](const spin_object& s) { return s.result.energy_start; })
       .def_property_readonly("energy_end", [](const spin_object& s) { return s.result.energy_end; })
-      .def_property_readonly("cpu_s", [](const spin_object& s) { return s.result.cpu_s; })
-      .def_property_readonly("unstable", [](const spin_object& s) { return s.result.check.unstable; })
-      .def_property_readonly("round_off_floor", [](const spin_object& s) { return s.result.check.round_off_floor; })
       .def_property_readonly("conserved", [](const spin_object& s) -> py::object {
         // an owning object: an item accessor would refer to the parsed dictionary after it is freed
         const py::dict all = py::module_::import("json").attr("loads")(s.json);
@@ -92,8 +85,6 @@ void bind_spin(py::module_& m) {
         if (s.result.setup.every <= 0) return py::none();
         return py::cast(trajectory_object{s.result.trajectory, s.result.setup.every});
       }, "the samples every K steps (every=K), or None")
-      .def("to_dict", [](const spin_object& s) { return py::module_::import("json").attr("loads")(s.json); },
-           "the object `rotlie spin --json` prints")
       .def("__repr__", [](const spin_object& s) {
         return "<SpinResult " + s.result.setup.body.name + " " + s.result.setup.method.name + ", " + std::to_string(s.result.setup.steps) +
                " steps" + (s.result.check.unstable ? ", unstable>" : ">");

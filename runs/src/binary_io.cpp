@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "rotlie/runs/output_file.hpp"
+#include "stepping_fields.hpp"
 #include "rotlie/runs/text_file.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/schemes/message_number.hpp"
@@ -85,15 +86,11 @@ json binary_json(const binary_result& r) {
             {"secondary", s.secondary.spec},
             {"order", s.order},
             {"G", s.G},
-            {"integrator", s.method.name},
-            {"h", s.h},
-            {"T", s.T},
-            {"steps", s.steps},
-            {"evaluations", r.evaluations},
             {"masses", {sys.body(0).mass, sys.body(1).mass}},
             {"moments", {sys.moments(0), sys.moments(1)}},
             {"densities", {s.primary.density, s.secondary.density}},
             {"t", r.end.t}};
+  j.update(stepping_fields(s, r.evaluations));
   j.update(state_fields(r.end.x, sys));
   j["energy"] = r.end.energy;
   j["energy_start"] = sys.energy(s.start);

@@ -165,22 +165,13 @@ bool has_result(const nlohmann::json& j) {
 
 }  // namespace
 
-resumed_map resume_map_file(const std::filesystem::path& path, const std::string& family, int K, const std::string& method,
-                            const std::vector<solver::grid_body>& bodies) {
-  resumed_map out;
-  out.done.assign(bodies.size(), 0);
+map_file_text resumable_text(const std::filesystem::path& path, const std::string& line_kind) {
   map_file_text text;
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))  // as the writer says it when the map is not resumed: a failed run
-    throw std::runtime_error("cannot open " + printable_path(path) + ": " + std::strerror(EISDIR));
   try {
     text = read_map_file(path);
   } catch (const std::runtime_error& e) {
     throw bad_input(std::string("--resume: ") + e.what());
   }
-  out.whole_length = text.whole_length;
-  const std::string refusal = "--resume: " + printable_path(path) + " ";
-  bool claims_check = false;
   // A line is appended by one write of printable JSON: a kill can leave only a prefix of one. Other
   // bytes after the last whole line (binary data, another program's text) are not ours to drop.
   const auto& tail = text.torn_tail;
@@ -188,8 +179,22 @@ resumed_map resume_map_file(const std::filesystem::path& path, const std::string
                                              return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
                                            }));
   if (!a_cut_line)
-    throw bad_input(refusal + "ends with " + std::to_string(tail.size()) +
-                    " bytes that are not the start of a map line (not a write cut by a kill); it is left as it is");
+    throw bad_input("--resume: " + printable_path(path) + " ends with " + std::to_string(tail.size()) + " bytes that are not the start of a " +
+                    line_kind + " line (not a write cut by a kill); it is left as it is");
+  return text;
+}
+
+resumed_map resume_map_file(const std::filesystem::path& path, const std::string& family, int K, const std::string& method,
+                            const std::vector<solver::grid_body>& bodies) {
+  resumed_map out;
+  out.done.assign(bodies.size(), 0);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))  // as the writer says it when the map is not resumed: a failed run
+    throw std::runtime_error("cannot open " + printable_path(path) + ": " + std::strerror(EISDIR));
+  const map_file_text text = resumable_text(path, "map");
+  out.whole_length = text.whole_length;
+  const std::string refusal = "--resume: " + printable_path(path) + " ";
+  bool claims_check = false;
   std::map<long, std::size_t> index_of;
   for (std::size_t k = 0; k < bodies.size(); ++k) index_of[static_cast<long>(bodies[k].i) * (K + 1) + bodies[k].j] = k;
   for (std::size_t n = 0; n < text.lines.size(); ++n) {

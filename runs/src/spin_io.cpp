@@ -4,6 +4,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "stepping_fields.hpp"
+
 namespace rotlie::runs {
 namespace {
 
@@ -19,12 +21,7 @@ nlohmann::json spin_json(const runs::spin_result& r) {
   nlohmann::json j = {{"body", s.body.name},
           {"moments", {I[0], I[1], I[2]}},
           {"e", s.e},
-          {"integrator", s.method.name},
           {"scalar", s.scalar},
-          {"h", s.h},
-          {"T", s.T},
-          {"steps", s.steps},
-          {"evaluations", r.evaluations},
           {"Q", Q},
           {"omega_body", {r.omega_body[0], r.omega_body[1], r.omega_body[2]}},
           {"theta", r.theta},
@@ -39,6 +36,7 @@ nlohmann::json spin_json(const runs::spin_result& r) {
             {"change_percent", finite_or_null(r.check.change_percent)}}},
           {"unstable", r.check.unstable},
           {"round_off_floor", r.check.round_off_floor}};
+  j.update(stepping_fields(s, r.evaluations));
   if (s.every > 0) {
     const auto& tr = r.trajectory;
     nlohmann::json Qs = nlohmann::json::array(), ws = nlohmann::json::array();

@@ -96,20 +96,9 @@ std::string sweep_header(const sweep_plan& plan) {
 resumed_map resume_sweep_file(const std::filesystem::path& path, const sweep_plan& plan) {
   resumed_map out;
   out.done.assign(plan.inputs.size(), 0);
-  map_file_text text;
-  try {
-    text = read_map_file(path);
-  } catch (const std::runtime_error& e) {
-    throw bad_input(std::string("--resume: ") + e.what());
-  }
+  const map_file_text text = resumable_text(path, "result");
   out.whole_length = text.whole_length;
   const std::string refusal = "--resume: " + printable_path(path) + " ";
-  const auto& tail = text.torn_tail;
-  const bool a_cut_line = tail.empty() || (tail.front() == '{' && std::none_of(tail.begin(), tail.end(), [](char c) {
-                                             return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
-                                           }));
-  if (!a_cut_line)
-    throw bad_input(refusal + "ends with " + std::to_string(tail.size()) + " bytes that are not the start of a result line (not a write cut by a kill); it is left as it is");
   for (std::size_t n = 0; n < text.lines.size(); ++n) {
     const auto j = json::parse(text.lines[n], nullptr, false);
     if (n == 0) {

@@ -84,8 +84,8 @@ BOOST_AUTO_TEST_CASE(the_corner_tetrahedron_has_dirichlets_moments) {
     const ld f[8] = {1, 1, 2, 6, 24, 120, 720, 5040};
     return std::pow(ld(a), p + 1) * std::pow(ld(b), q + 1) * std::pow(ld(c), s + 1) * f[p] * f[q] * f[s] / f[p + q + s + 3];
   };
-  BOOST_TEST(std::abs(raw.volume - dirichlet(0, 0, 0)) <= 1e-18L);
-  BOOST_TEST(std::abs(raw.first[1] - dirichlet(0, 1, 0)) <= 1e-18L);
+  BOOST_TEST(std::abs(std::get<0>(raw)[0] - dirichlet(0, 0, 0)) <= 1e-18L);  // the degrees 0 … 4 at std::get<0 … 4>
+  BOOST_TEST(std::abs(std::get<1>(raw)[1] - dirichlet(0, 1, 0)) <= 1e-18L);
   const auto check = [&](const auto& tensor, int K) {
     for (std::size_t index = 0; index < tensor.size(); ++index) {
       int count[3] = {0, 0, 0};
@@ -94,7 +94,7 @@ BOOST_AUTO_TEST_CASE(the_corner_tetrahedron_has_dirichlets_moments) {
       BOOST_TEST(std::abs(tensor[index] - expected) <= 1e-17L * expected, "degree " << K << ", component " << index);
     }
   };
-  check(raw.second, 2), check(raw.third, 3), check(raw.fourth, 4);
+  check(std::get<2>(raw), 2), check(std::get<3>(raw), 3), check(std::get<4>(raw), 4);
 }
 
 // A box of half-sides a > b > c: J = M diag(a², b², c²)/3, ∫x⁴ dm = M a⁴/5, ∫x²y² dm = M a²b²/9, the odd

@@ -1,13 +1,8 @@
 #pragma once
 // Boost.Odeint's adaptive steppers as rotlie's scenes use them (the spin–orbit scene, the binary scene):
 // from checkpoint to checkpoint, the step size carried over, a step shortened only to land on the next
-// checkpoint. GCC 12 sees Odeint's coefficient arrays as (maybe) uninitialized when a stepper is copied
-// (they are set in its constructor): a false positive inside Boost, silenced here only.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#endif
+// checkpoint. GCC 12's false warnings inside Odeint: see odeint_warnings_off.hpp.
+#include "rotlie/models/odeint_warnings_off.hpp"
 #include <boost/numeric/odeint.hpp>
 
 #include <stdexcept>
@@ -39,8 +34,37 @@ void advance_to_checkpoint(Controlled& stepper, const Rhs& rhs, State& x, T& t, 
   }
 }
 
+/// The two adaptive methods on one State, each controlled with `tol` as both the absolute and the
+/// relative tolerance; advance() runs the chosen one to a checkpoint (advance_to_checkpoint).
+template <class State, class T>
+class odeint_steppers {
+  using dopri5 = boost::numeric::odeint::runge_kutta_dopri5<State, T>;
+  using rkf78 = boost::numeric::odeint::runge_kutta_fehlberg78<State, T>;
+  using controlled_dopri5 = typename boost::numeric::odeint::result_of::make_controlled<dopri5>::type;
+  using controlled_rkf78 = typename boost::numeric::odeint::result_of::make_controlled<rkf78>::type;
+
+ public:
+  odeint_steppers(odeint_method method, const T& tol)
+      : method_(method),
+        dopri5_(boost::numeric::odeint::make_controlled(tol, tol, dopri5())),
+        rkf78_(boost::numeric::odeint::make_controlled(tol, tol, rkf78())) {
+    if (!(tol > 0)) throw std::invalid_argument("the tolerance must be positive");
+  }
+
+  template <class Rhs, class BeforeTry>
+  void advance(const Rhs& rhs, State& x, T& t, const T& t_next, T& dt, BeforeTry&& before_try) {
+    if (method_ == odeint_method::dopri5)
+      advance_to_checkpoint(dopri5_, rhs, x, t, t_next, dt, before_try);
+    else
+      advance_to_checkpoint(rkf78_, rhs, x, t, t_next, dt, before_try);
+  }
+
+ private:
+  odeint_method method_;
+  controlled_dopri5 dopri5_;
+  controlled_rkf78 rkf78_;
+};
+
 }  // namespace rotlie::models
 
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
+#include "rotlie/models/odeint_warnings_restore.hpp"

@@ -25,6 +25,7 @@
 #include "rotlie/models/exact_free_rotation_batch.hpp"
 #include "rotlie/models/rigid_bodies.hpp"
 #include "rotlie/models/scene_contracts.hpp"
+#include "rotlie/models/tv_stages.hpp"
 #include "rotlie/models/unit_system.hpp"
 
 namespace rotlie::models {
@@ -39,15 +40,12 @@ struct body_type {
 
 template <class T, class Potential, class Rotor>
   requires torque_potential<Potential, T> && free_rotor<Rotor, T>
-class torqued_rigid_bodies {
+class torqued_rigid_bodies : public tv_stages<torqued_rigid_bodies<T, Potential, Rotor>, T> {
  public:
   using scalar = T;
   using state = rigid_bodies_state<T>;
   using type = body_type<T, Rotor>;
-  struct stage {
-    bool kick = false;  ///< V (true) or T
-    T c{};              ///< the stage's coefficient
-  };
+  using typename tv_stages<torqued_rigid_bodies<T, Potential, Rotor>, T>::stage;
 
   /// One body type in real units: mass m (g/mol) and principal moments I (g/mol·Å², the rotor's own).
   torqued_rigid_bodies(const T& mass, const vec3<T>& moments, Potential potential, Rotor rotor)
@@ -77,24 +75,6 @@ class torqued_rigid_bodies {
       throw std::invalid_argument("scheme table " + schemes::printable_text(table.name) +
                                   " is a free-rotation table: a body under torques needs a TV table (free flight T, kick V)");
   }
-
-  stage bind(const schemes::stage& s, const schemes::scheme_table&) const { return {s.part == 'V', parse_scalar<T>(s.value)}; }
-
-  void apply(const stage& st, const T& h, state& x) const {
-    const T t = st.c * h;
-    if (st.kick)
-      kick(t, x);
-    else
-      free_flight(t, x);
-  }
-
-  std::optional<stage> step_end(const schemes::scheme_table&) const { return std::nullopt; }
-
-  /// The clock's advance of a stage in units of h: a free flight's coefficient, 0 for a kick.
-  T time_coefficient(const stage& st) const { return st.kick ? T(0) : st.c; }
-
-  /// Force evaluations per step (first-same-as-last), the unit of h/f in vZS section V.
-  int cost(const schemes::scheme_table& table) const { return schemes::force_evaluations(table); }
 
   /// φ⁽⁰⁾ for time t: translation, each body type's free rotation and the clock; the forces become stale.
   void free_flight(const T& t, state& x) const {

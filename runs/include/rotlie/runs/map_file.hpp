@@ -48,6 +48,11 @@ struct map_file_text {
 /// Reads the file's whole lines. Throws std::runtime_error when it cannot be read.
 map_file_text read_map_file(const std::filesystem::path& path);
 
+/// The file a --resume continues (a map or a sweep): its whole lines. Throws bad_input (--resume: …),
+/// leaving the file as it is, when it cannot be read or when the bytes after its last whole line are
+/// not the start of a `line_kind` line that a kill cut (one write of printable JSON).
+map_file_text resumable_text(const std::filesystem::path& path, const std::string& line_kind);
+
 /// A map file's header and body lines parsed, for drawing and auditing: lines that do not parse,
 /// and bodies whose solve failed, are left out. nullopt when the file is absent or empty; throws
 /// std::runtime_error when its first line is not a map header.

@@ -14,55 +14,62 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "rotlie/models/scenes/binary_system.hpp"
 
 namespace rotlie::models {
 
+/// What both integrators hold: the system they step.
 template <class T>
-class binary_rk4 {
+class binary_system_stepper {
  public:
-  explicit binary_rk4(binary_system<T> system) : system_(std::move(system)) {}
+  explicit binary_system_stepper(binary_system<T> system) : system_(std::move(system)) {}
   const binary_system<T>& system() const { return system_; }
+
+ protected:
+  binary_system<T> system_;
+};
+
+template <class T>
+class binary_rk4 : public binary_system_stepper<T> {
+ public:
+  using binary_system_stepper<T>::binary_system_stepper;
   static constexpr int evaluations_per_step = 4;
 
   void step(binary_state<T>& x, const T& h) const {
-    const auto k1 = system_.derivative(x);
-    const auto k2 = system_.derivative(displaced(x, k1, h / 2));
-    const auto k3 = system_.derivative(displaced(x, k2, h / 2));
-    const auto k4 = system_.derivative(displaced(x, k3, h));
+    const auto k1 = this->system_.derivative(x);
+    const auto k2 = this->system_.derivative(displaced(x, k1, h / 2));
+    const auto k3 = this->system_.derivative(displaced(x, k2, h / 2));
+    const auto k4 = this->system_.derivative(displaced(x, k3, h));
     x = displaced(x, k1, h / 6);
     x = displaced(x, k2, h / 3);
     x = displaced(x, k3, h / 3);
     x = displaced(x, k4, h / 6);
   }
-
- private:
-  binary_system<T> system_;
 };
 
 template <class T>
-class binary_lgvi {
+class binary_lgvi : public binary_system_stepper<T> {
  public:
-  explicit binary_lgvi(binary_system<T> system) : system_(std::move(system)) {}
-  const binary_system<T>& system() const { return system_; }
+  using binary_system_stepper<T>::binary_system_stepper;
   static constexpr int evaluations_per_step = 1;
 
   /// One step; `gravity` holds the forces at x on entry (valid = true) and at the new x on return.
   void step(binary_state<T>& x, const T& h, mutual_gravity<T>& gravity, bool& valid) const {
-    if (!valid) gravity = system_.gravity(x), valid = true;
-    const T mu = system_.reduced_mass();
+    if (!valid) gravity = this->system_.gravity(x), valid = true;
+    const T mu = this->system_.reduced_mass();
     vec3<T> torque[2];
     mat3<T> turn[2];
     for (int i = 0; i < 2; ++i) {
       torque[i] = transpose(x.body[i].Q) * (i == 0 ? gravity.M1 : gravity.M2);
       vec3<T> b;
       for (std::size_t k = 0; k < 3; ++k) b[k] = h * x.body[i].G[k] + h * h / 2 * torque[i][k];
-      turn[i] = cayley(solve_turn(b, system_.moments(i)));
+      turn[i] = cayley(solve_turn(b, this->system_.moments(i)));
     }
     for (std::size_t k = 0; k < 3; ++k) x.r[k] += h * x.v[k] + h * h / (2 * mu) * gravity.F[k];
     for (int i = 0; i < 2; ++i) x.body[i].Q = x.body[i].Q * turn[i];
-    const auto next = system_.gravity(x);
+    const auto next = this->system_.gravity(x);
     for (std::size_t k = 0; k < 3; ++k) x.v[k] += h / (2 * mu) * (gravity.F[k] + next.F[k]);
     for (int i = 0; i < 2; ++i) {
       const vec3<T> torque_next = transpose(x.body[i].Q) * (i == 0 ? next.M1 : next.M2);
@@ -120,8 +127,6 @@ class binary_lgvi {
     for (std::size_t k = 0; k < 9; ++k) F.a[k] += c * (S.a[k] + S2.a[k]);
     return F;
   }
-
-  binary_system<T> system_;
 };
 
 }  // namespace rotlie::models

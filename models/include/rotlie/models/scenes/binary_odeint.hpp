@@ -3,12 +3,8 @@
 // then each body's Q row-major and G), integrated by an adaptive Runge–Kutta method of Boost.Odeint:
 // Runge–Kutta–Fehlberg 7(8) (GUBAS's adaptive method is a 7(8) pair) or Dormand–Prince 5(4), one
 // tolerance as both the absolute and the relative one, from checkpoint to checkpoint.
-// GCC 12's false -Wmaybe-uninitialized inside Odeint's steppers: see odeint_checkpoints.hpp.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#endif
+// GCC 12's false warnings inside Odeint: see odeint_warnings_off.hpp.
+#include "rotlie/models/odeint_warnings_off.hpp"
 #include <array>
 #include <limits>
 #include <stdexcept>
@@ -45,20 +41,9 @@ binary_state<T> unpacked(const binary_ode_state<T>& y) {
 
 template <class T>
 class binary_odeint {
-  using dopri5 = boost::numeric::odeint::runge_kutta_dopri5<binary_ode_state<T>, T>;
-  using rkf78 = boost::numeric::odeint::runge_kutta_fehlberg78<binary_ode_state<T>, T>;
-  using controlled_dopri5 = typename boost::numeric::odeint::result_of::make_controlled<dopri5>::type;
-  using controlled_rkf78 = typename boost::numeric::odeint::result_of::make_controlled<rkf78>::type;
-
  public:
   binary_odeint(binary_system<T> system, odeint_method method, const T& tol, const T& first_dt)
-      : system_(std::move(system)),
-        method_(method),
-        dt_(first_dt),
-        dopri5_(boost::numeric::odeint::make_controlled(tol, tol, dopri5())),
-        rkf78_(boost::numeric::odeint::make_controlled(tol, tol, rkf78())) {
-    if (!(tol > 0)) throw std::invalid_argument("the tolerance must be positive");
-  }
+      : system_(std::move(system)), steppers_(method, tol), dt_(first_dt) {}
 
   const binary_system<T>& system() const { return system_; }
   long evaluations() const { return evaluations_; }
@@ -67,33 +52,21 @@ class binary_odeint {
   /// Advances x from t to t_next (t is set to t_next).
   void advance(binary_state<T>& x, T& t, const T& t_next) {
     auto y = packed(x);
-    if (method_ == odeint_method::dopri5)
-      run(dopri5_, y, t, t_next);
-    else
-      run(rkf78_, y, t, t_next);
-    x = unpacked(y);
-  }
-
- private:
-  template <class Controlled>
-  void run(Controlled& stepper, binary_ode_state<T>& y, T& t, const T& t_next) {
     const auto rhs = [this](const binary_ode_state<T>& in, binary_ode_state<T>& out, const T&) {
       out = packed(system_.derivative(unpacked(in)));
       ++evaluations_;
     };
-    advance_to_checkpoint(stepper, rhs, y, t, t_next, dt_, [&] { ++tried_; });
+    steppers_.advance(rhs, y, t, t_next, dt_, [&] { ++tried_; });
+    x = unpacked(y);
   }
 
+ private:
   binary_system<T> system_;
-  odeint_method method_;
+  odeint_steppers<binary_ode_state<T>, T> steppers_;
   T dt_;
-  controlled_dopri5 dopri5_;
-  controlled_rkf78 rkf78_;
   long evaluations_ = 0, tried_ = 0;
 };
 
 }  // namespace rotlie::models
 
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
+#include "rotlie/models/odeint_warnings_restore.hpp"

@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "rotlie/models/composition.hpp"
+#include "rotlie/models/tv_stages.hpp"
 #include "rotlie/models/scenes/binary_system.hpp"
 #include "rotlie/models/scenes/kepler_drift.hpp"
 #include "rotlie/schemes/scheme_table.hpp"
@@ -37,14 +38,11 @@ struct binary_split_state {
 };
 
 template <class T, class Rotor>
-class binary_splitting {
+class binary_splitting : public tv_stages<binary_splitting<T, Rotor>, T> {
  public:
   using scalar = T;
   using state = binary_split_state<T>;
-  struct stage {
-    bool kick = false;
-    T c{};
-  };
+  using typename tv_stages<binary_splitting<T, Rotor>, T>::stage;
 
   binary_splitting(binary_system<T> system, Rotor primary, Rotor secondary, binary_drift drift)
       : system_(std::move(system)), rotors_{std::move(primary), std::move(secondary)}, drift_(drift) {}
@@ -56,18 +54,6 @@ class binary_splitting {
     if (table.splitting != schemes::split::tv)
       throw std::invalid_argument("scheme table " + schemes::printable_text(table.name) + " is not a TV table (free flight T, kick V)");
   }
-  stage bind(const schemes::stage& s, const schemes::scheme_table&) const { return {s.part == 'V', parse_scalar<T>(s.value)}; }
-  std::optional<stage> step_end(const schemes::scheme_table&) const { return std::nullopt; }
-  int cost(const schemes::scheme_table& table) const { return schemes::force_evaluations(table); }
-
-  void apply(const stage& st, const T& h, state& s) const {
-    const T t = st.c * h;
-    if (st.kick)
-      kick(t, s);
-    else
-      free_flight(t, s);
-  }
-
   void free_flight(const T& t, state& s) const {
     auto& x = s.x;
     if (drift_ == binary_drift::kepler)

@@ -14,6 +14,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -67,15 +68,10 @@ struct polyhedron_integrals {
 
 namespace polyhedron_detail {
 
-/// Σ over facets of the tetrahedra's ∫ ρ^⊗k dV for k = 0…4, the vertices shifted by −origin and turned by Rᵀ.
+/// Σ over facets of the tetrahedra's ∫ ρ^⊗k dV, degree k = 0…4 at std::get<k> (the volume, the first
+/// moments, the second, …), the vertices shifted by −origin and turned by Rᵀ.
 template <class T>
-struct raw_integrals {
-  T volume{};
-  vec3<T> first{};
-  tensor3<T, 2> second{};
-  tensor3<T, 3> third{};
-  tensor3<T, 4> fourth{};
-};
+using raw_integrals = std::tuple<tensor3<T, 0>, tensor3<T, 1>, tensor3<T, 2>, tensor3<T, 3>, tensor3<T, 4>>;
 
 template <class T, int K>
 void add_degree(tensor3<T, K>& sum, const vec3<T> (&v)[3], const T& weight) {
@@ -110,11 +106,10 @@ raw_integrals<T> integrate(const polyhedron& shape, const vec3<T>& origin, const
     }
     const T six_volume = v[0][0] * (v[1][1] * v[2][2] - v[1][2] * v[2][1]) - v[0][1] * (v[1][0] * v[2][2] - v[1][2] * v[2][0]) +
                          v[0][2] * (v[1][0] * v[2][1] - v[1][1] * v[2][0]);
-    out.volume += six_volume / 6;
-    for (std::size_t k = 0; k < 3; ++k) out.first[k] += six_volume / 24 * (v[0][k] + v[1][k] + v[2][k]);  // 6V/4!
-    add_degree<T, 2>(out.second, v, six_volume / 120);                                                     // 6V/5!
-    add_degree<T, 3>(out.third, v, six_volume / 720);                                                      // 6V/6!
-    add_degree<T, 4>(out.fourth, v, six_volume / 5040);                                                    // 6V/7!
+    const T weight[5] = {six_volume / 6, six_volume / 24, six_volume / 120, six_volume / 720, six_volume / 5040};  // 6V/(k + 3)!
+    [&]<std::size_t... K>(std::index_sequence<K...>) {
+      (add_degree<T, static_cast<int>(K)>(std::get<K>(out), v, weight[K]), ...);
+    }(std::make_index_sequence<5>{});
   }
   return out;
 }
@@ -156,14 +151,15 @@ polyhedron_integrals<T> polyhedron_body(const polyhedron& shape, const T& densit
   if (!(density > 0)) throw std::invalid_argument("polyhedron: the density must be positive");
   const auto identity = mat3<T>::identity();
   const auto about_origin = integrate<T>(shape, vec3<T>{}, identity);
-  if (!(about_origin.volume > 0))
+  const T volume = std::get<0>(about_origin)[0];
+  if (!(volume > 0))
     throw std::invalid_argument("polyhedron: the volume is not positive (the facets face inward, or the solid is flat)");
   polyhedron_integrals<T> out;
-  out.volume = about_origin.volume;
-  for (std::size_t k = 0; k < 3; ++k) out.centroid[k] = about_origin.first[k] / about_origin.volume;
+  out.volume = volume;
+  for (std::size_t k = 0; k < 3; ++k) out.centroid[k] = std::get<1>(about_origin)[k] / volume;
   const auto central = integrate<T>(shape, out.centroid, identity);
   mat3<T> J;
-  J.a = central.second;
+  J.a = std::get<2>(central);
   auto axes = symmetric_eigenvectors(J);
   // sort by the second moment along each axis, descending (the moments of inertia ascending)
   std::array<int, 3> order{0, 1, 2};
@@ -178,14 +174,14 @@ polyhedron_integrals<T> polyhedron_body(const polyhedron& shape, const T& densit
     for (int i = 0; i < 3; ++i) out.axes(i, 2) = -out.axes(i, 2);
   const auto principal = integrate<T>(shape, out.centroid, out.axes);
   auto& body = out.body;
-  body.mass = density * principal.volume;
+  body.mass = density * std::get<0>(principal)[0];
   mat3<T> second;
-  second.a = principal.second;
+  second.a = std::get<2>(principal);
   const T trace = second(0, 0) + second(1, 1) + second(2, 2);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) body.inertia(i, j) = density * ((i == j ? trace : T(0)) - second(i, j));
-  for (std::size_t i = 0; i < body.third.size(); ++i) body.third[i] = density * principal.third[i];
-  for (std::size_t i = 0; i < body.fourth.size(); ++i) body.fourth[i] = density * principal.fourth[i];
+  for (std::size_t i = 0; i < body.third.size(); ++i) body.third[i] = density * std::get<3>(principal)[i];
+  for (std::size_t i = 0; i < body.fourth.size(); ++i) body.fourth[i] = density * std::get<4>(principal)[i];
   body.degree = 4;
   return out;
 }

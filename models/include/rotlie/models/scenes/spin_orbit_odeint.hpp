@@ -5,13 +5,8 @@
 // (Dormand–Prince 5(4) or Runge–Kutta–Fehlberg 7(8)), error-controlled with one tolerance taken as
 // both the absolute and the relative one. Q drifts off the rotations at the size of the tolerance;
 // nothing projects it back (the user's plain solution).
-// GCC 12 sees Odeint's coefficient arrays as (maybe) uninitialized when a stepper is copied (they are set
-// in its constructor): a false positive inside Boost, silenced here only.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#endif
+// GCC 12's false warnings inside Odeint: see odeint_warnings_off.hpp.
+#include "rotlie/models/odeint_warnings_off.hpp"
 #include <array>
 #include <limits>
 #include <stdexcept>
@@ -47,20 +42,9 @@ struct spin_orbit_ode {
 /// last derivative), a step is only shortened to land on the next checkpoint.
 template <class T>
 class spin_odeint_stepper {
-  using dopri5 = boost::numeric::odeint::runge_kutta_dopri5<spin_ode_state<T>, T>;
-  using rkf78 = boost::numeric::odeint::runge_kutta_fehlberg78<spin_ode_state<T>, T>;
-  using controlled_dopri5 = typename boost::numeric::odeint::result_of::make_controlled<dopri5>::type;
-  using controlled_rkf78 = typename boost::numeric::odeint::result_of::make_controlled<rkf78>::type;
-
  public:
   spin_odeint_stepper(const spin_orbit_tide<T>& tide, odeint_method method, const T& tol, const T& first_dt)
-      : tide_(tide),
-        method_(method),
-        dt_(first_dt),
-        dopri5_(boost::numeric::odeint::make_controlled(tol, tol, dopri5())),
-        rkf78_(boost::numeric::odeint::make_controlled(tol, tol, rkf78())) {
-    if (!(tol > 0)) throw std::invalid_argument("the tolerance must be positive");
-  }
+      : tide_(tide), steppers_(method, tol), dt_(first_dt) {}
 
   long evaluations() const { return evaluations_; }
 
@@ -72,37 +56,25 @@ class spin_odeint_stepper {
     spin_ode_state<T> x{};
     for (std::size_t i = 0; i < 9; ++i) x[i] = s.Q.a[i];
     for (std::size_t i = 0; i < 3; ++i) x[9 + i] = s.G[i];
-    if (method_ == odeint_method::dopri5)
-      run(dopri5_, x, t, t_next);
-    else
-      run(rkf78_, x, t, t_next);
+    const spin_orbit_ode<T> rhs{&tide_, &evaluations_};
+    steppers_.advance(rhs, x, t, t_next, dt_, [&] {
+      if (++tried_ > budget_)
+        throw std::runtime_error("the adaptive run used its budget of " + schemes::message_number(budget_) + " steps by t = " +
+                                 schemes::message_number(static_cast<double>(t)) + ": the tolerance asks for more steps than the run can afford (raise it)");
+    });
     for (std::size_t i = 0; i < 9; ++i) s.Q.a[i] = x[i];
     for (std::size_t i = 0; i < 3; ++i) s.G[i] = x[9 + i];
   }
 
  private:
-  template <class Controlled>
-  void run(Controlled& stepper, spin_ode_state<T>& x, T& t, const T& t_next) {
-    const spin_orbit_ode<T> rhs{&tide_, &evaluations_};
-    advance_to_checkpoint(stepper, rhs, x, t, t_next, dt_, [&] {
-      if (++tried_ > budget_)
-        throw std::runtime_error("the adaptive run used its budget of " + schemes::message_number(budget_) + " steps by t = " +
-                                 schemes::message_number(static_cast<double>(t)) + ": the tolerance asks for more steps than the run can afford (raise it)");
-    });
-  }
-
   const spin_orbit_tide<T>& tide_;
+  odeint_steppers<spin_ode_state<T>, T> steppers_;
+  T dt_;
   double budget_ = std::numeric_limits<double>::infinity();
   double tried_ = 0;
-  odeint_method method_;
-  T dt_;
-  controlled_dopri5 dopri5_;
-  controlled_rkf78 rkf78_;
   long evaluations_ = 0;
 };
 
 }  // namespace rotlie::models
 
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
+#include "rotlie/models/odeint_warnings_restore.hpp"
