@@ -11,6 +11,8 @@
 #include <iostream>
 #include <vector>
 
+#include "rotlie/runs/output_file.hpp"
+
 namespace rotlie::app {
 
 namespace fs = std::filesystem;
@@ -28,6 +30,16 @@ std::string probe_writable(const fs::path& folder) {
 }
 
 }  // namespace
+
+void check_output_file(const std::string& path, std::string_view option) {
+  std::error_code ec;
+  if (!fs::is_symlink(path, ec)) return;
+  try {
+    runs::writable_target(path);
+  } catch (const std::runtime_error& e) {
+    throw usage_error(std::string(option) + ": " + e.what());
+  }
+}
 
 void check_output_folder(const std::string& folder, std::string_view option) {
   const std::string name(option);

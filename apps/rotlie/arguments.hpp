@@ -39,6 +39,12 @@ void print_answer(bool json, const Json& json_of, const Text& text_of) {
 /// folders made to test creation are removed again).
 void check_output_folder(const std::string& folder, std::string_view option);
 
+/// The one writer's rule for a results file appended during a run (a map, a sweep), before any work: a
+/// symbolic link at `path` must lead to a regular file (runs::writable_target), else it is refused as a
+/// usage_error naming `option` and left as it is (opening it to append would create a link's missing
+/// target). Anything else at `path` is the resume reader's and the writer's to refuse.
+void check_output_file(const std::string& path, std::string_view option);
+
 /// Sends std::cout through a buffer that remembers the first failed write, after putting a
 /// placeholder on any closed standard descriptor; call once, first.
 void route_standard_output();

@@ -63,6 +63,7 @@ prepared_map prepare(const map_options& o) {
   fs::create_directories(folder);
   p.lock = std::make_shared<runs::exclusive_use>(folder, "--out");  // a second map into the folder stops here
   p.path = runs::map_file_path(folder, p.family);
+  check_output_file(p.path.string(), "--out");
   const bool exists = fs::exists(p.path);
   if (exists && !o.resume)
     throw usage_error("--out: " + runs::printable_path(p.path) +

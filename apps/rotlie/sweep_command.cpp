@@ -37,12 +37,7 @@ prepared_sweep prepare(const sweep_options& o) {
   fs::create_directories(folder);
   p.lock = std::make_shared<runs::exclusive_use>(folder, "--out");  // a second sweep into the folder stops here
   p.existing.done.assign(p.plan.inputs.size(), 0);
-  // the one writer's rule: through a link to its regular target, never over a link to nothing, a FIFO or a device
-  try {
-    if (fs::is_symlink(p.path) || fs::exists(p.path)) runs::writable_target(p.path);
-  } catch (const std::runtime_error& e) {
-    throw usage_error(std::string("--out: ") + e.what());
-  }
+  check_output_file(p.path.string(), "--out");
   const bool exists = fs::exists(p.path);
   if (exists && !o.resume)
     throw usage_error("--out: " + runs::printable_path(p.path) + " exists: continue it with --resume, or choose another file; it is left as it is");

@@ -4,10 +4,10 @@
 #include <sstream>
 
 #include "rotlie/runs/output_file.hpp"
-#include "stepping_fields.hpp"
 #include "rotlie/runs/text_file.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/schemes/message_number.hpp"
+#include "stepping_fields.hpp"
 
 namespace rotlie::runs {
 

@@ -261,7 +261,9 @@ void write_all(int fd, const std::string& text, const std::filesystem::path& pat
 
 map_file_writer::map_file_writer(const std::filesystem::path& path, const resumed_map& existing, const std::string& header)
     : path_(path) {
-  // O_NONBLOCK: a FIFO under the map's name must be refused, not waited on (a link to a regular file is written through)
+  // O_NONBLOCK: a FIFO under the map's name must be refused, not waited on (a link to a regular file is written through;
+  // a link to nothing is refused, which O_CREAT would follow and create)
+  if (std::error_code ec; std::filesystem::is_symlink(path, ec)) writable_target(path);
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | O_NONBLOCK, 0644);
   if (fd_ < 0) throw std::runtime_error("cannot open " + printable_path(path) + ": " + std::strerror(errno));
   struct stat st {};

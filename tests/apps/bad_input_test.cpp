@@ -154,6 +154,9 @@ void make_files() {
   // a sweep's results file that is a link to nothing
   write(d / "runs.jsonl", R"({"system": "didymos", "integrator": "SIER2", "h": 10, "T": 100})" "\n");
   fs::create_symlink(d / "nowhere.jsonl", d / "dangling.jsonl");
+  // a map folder whose map file is a link to nothing
+  fs::create_directories(d / "dangling-maps");
+  fs::create_symlink(d / "nowhere-map.jsonl", d / "dangling-maps" / "map-N.jsonl");
 }
 
 // clang-format off
@@ -416,6 +419,7 @@ const std::vector<bad_input> cases = {
   {{"binary", "--system", "didymos", "--integrator", "SIER4/NOPE", "--h", "10", "--T", "100"}, usage, "--integrator SIER4/NOPE"},
 
   {{"sweep", "--in", "@DIR@/runs.jsonl", "--out", "@DIR@/dangling.jsonl"}, usage, "which does not exist"},
+  {{"map", "--family", "N", "--grid", "3", "--out", "@DIR@/dangling-maps"}, usage, "which does not exist"},
 
   // md
   {{"md", "--integrator", "SIER2", "--h", "1"}, usage, "--scene is required"},
