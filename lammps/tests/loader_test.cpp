@@ -7,6 +7,8 @@
 // load is named with the reason, and a handle that is not one (an integer) is refused.
 #include <boost/test/unit_test.hpp>
 
+#include "skip.hpp"
+
 #include "lmp_rotlie_runner.hpp"
 
 BOOST_AUTO_TEST_SUITE(loader_test)
@@ -29,7 +31,7 @@ std::string sier4_water_run(const scratch& d) {
 
 BOOST_AUTO_TEST_CASE(stock_lmp_with_the_python_loader_runs_the_styles) {
   if (std::system("command -v lmp > /dev/null 2>&1") != 0) {
-    BOOST_TEST_MESSAGE("skipped: no stock lmp");
+    rotlie::test::skip("no stock lmp");
     return;
   }
   scratch d("loader");
@@ -37,7 +39,10 @@ BOOST_AUTO_TEST_CASE(stock_lmp_with_the_python_loader_runs_the_styles) {
   const std::string load = std::string("python rotlie_load input 1 SELF format p file ") + ROTLIE_LAMMPS_LOADER + "\npython rotlie_load invoke\n";
   auto text = [&] { return file_text(d.dir / "final.dump"); };
   for (const int ranks : {1, 2}) {
-    if (ranks > 1 && !have_mpirun()) continue;
+    if (ranks > 1 && !have_mpirun()) {
+      rotlie::test::skip("2 ranks: no mpirun");
+      continue;
+    }
     BOOST_REQUIRE_MESSAGE(d.run("in.launcher", water_head + body, ranks) == 0, d.output);
     const std::string launcher = text();
     BOOST_REQUIRE_MESSAGE(d.run("in.stock", water_head + load + body, ranks, "", "lmp") == 0, d.output);
@@ -51,7 +56,7 @@ BOOST_AUTO_TEST_CASE(stock_lmp_with_the_python_loader_runs_the_styles) {
 BOOST_AUTO_TEST_CASE(the_lammps_python_module_with_the_loader_runs_the_styles) {
   const std::string python = ROTLIE_LAMMPS_PYTHON;
   if (std::system((python + " -c 'import lammps' > /dev/null 2>&1").c_str()) != 0) {
-    BOOST_TEST_MESSAGE("skipped: " << python << " has no lammps module (Debian: python3-lammps)");
+    rotlie::test::skip(python + " has no lammps module (Debian: python3-lammps)");
     return;
   }
   scratch d("python_module");
@@ -95,7 +100,7 @@ int lines_with_refused(const std::string& output) {
 BOOST_AUTO_TEST_CASE(a_module_that_fails_to_load_is_named_with_the_reason) {
   // lmp's python command says only "Python function evaluation failed": the loader says why first
   if (std::system("command -v lmp > /dev/null 2>&1") != 0) {
-    BOOST_TEST_MESSAGE("skipped: no stock lmp");
+    rotlie::test::skip("no stock lmp");
     return;
   }
   scratch d("loader_reason");

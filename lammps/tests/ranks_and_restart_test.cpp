@@ -8,6 +8,8 @@
 // start (reinit yes), so the comparison is with a second run, not with one run of 100 steps.
 #include <boost/test/unit_test.hpp>
 
+#include "skip.hpp"
+
 #include "lmp_rotlie_runner.hpp"
 
 BOOST_AUTO_TEST_SUITE(ranks_and_restart_test)
@@ -16,7 +18,7 @@ using namespace rotlie_lammps_test;
 
 BOOST_AUTO_TEST_CASE(one_two_and_four_ranks_agree) {
   if (!have_mpirun()) {
-    BOOST_TEST_MESSAGE("skipped: no mpirun");
+    rotlie::test::skip("no mpirun");
     return;
   }
   const auto start = liquid_start(216);
@@ -50,7 +52,7 @@ BOOST_AUTO_TEST_CASE(restart_continues_bit_identically) {
   const std::string neighbour = "neighbor 2.0 bin\nneigh_modify exclude molecule/intra all every 1 delay 0 check yes\n";
   for (const int ranks : {1, 2}) {
     if (ranks > 1 && !have_mpirun()) {
-      BOOST_TEST_MESSAGE("2 ranks skipped: no mpirun");
+      rotlie::test::skip("2 ranks: no mpirun");
       continue;
     }
     const std::string fix = "fix r all rigid/sier4/small molecule\n";

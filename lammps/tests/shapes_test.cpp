@@ -5,6 +5,8 @@
 // exact rotor with one note, under `rotor exact` and `rotor auto`.
 #include <boost/test/unit_test.hpp>
 
+#include "skip.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -86,7 +88,7 @@ BOOST_AUTO_TEST_CASE(lammps_clumps_example_runs_with_rotor_auto) {
   // LAMMPS's rigid example (9 clumps of 9 atoms, custom bodies), its fix swapped (package lammps-examples)
   const std::filesystem::path example = "/usr/share/lammps/examples/rigid";
   if (!std::filesystem::exists(example / "in.rigid.atomvar") || !std::filesystem::exists(example / "data.rigid")) {
-    BOOST_TEST_MESSAGE("skipped: no LAMMPS examples (Debian: lammps-examples)");
+    rotlie::test::skip("no LAMMPS examples (Debian: lammps-examples)");
     return;
   }
   scratch d("clumps");

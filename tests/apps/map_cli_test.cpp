@@ -4,6 +4,8 @@
 // ranks write the file of one process.
 #include <boost/test/unit_test.hpp>
 
+#include "skip.hpp"
+
 #include "cli_support.hpp"
 
 #include <signal.h>
@@ -201,7 +203,7 @@ bool mpi_available() {
 
 BOOST_AUTO_TEST_CASE(two_mpi_ranks_write_the_file_of_one_process) {
   if (!mpi_available()) {
-    BOOST_TEST_MESSAGE("SKIPPED: rotlie is built without MPI or mpirun is missing (install libopenmpi-dev openmpi-bin)");
+    rotlie::test::skip("rotlie is built without MPI or mpirun is missing (install libopenmpi-dev openmpi-bin)");
     return;
   }
   const fs::path dir = scratch() / "mpi";

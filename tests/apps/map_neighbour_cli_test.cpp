@@ -3,6 +3,8 @@
 // file as it was (the check rewrites it whole, atomically, only at its end).
 #include <boost/test/unit_test.hpp>
 
+#include "skip.hpp"
+
 #include "cli_support.hpp"
 
 #include <nlohmann/json.hpp>
@@ -38,7 +40,7 @@ std::size_t entries(const fs::path& dir) {
 BOOST_AUTO_TEST_CASE(a_checked_map_is_not_checked_again) {
   const auto file = shipped_map_in("checked");
   if (!file) {
-    BOOST_TEST_MESSAGE("no shipped P map: skipped");
+    rotlie::test::skip("no shipped P map (data/maps-K200)");
     return;
   }
   const auto before = slurp(*file);
@@ -52,7 +54,7 @@ BOOST_AUTO_TEST_CASE(a_checked_map_is_not_checked_again) {
 BOOST_AUTO_TEST_CASE(a_kill_during_the_check_leaves_the_map_as_it_was) {
   const auto file = shipped_map_in("unchecked");
   if (!file) {
-    BOOST_TEST_MESSAGE("no shipped P map: skipped");
+    rotlie::test::skip("no shipped P map (data/maps-K200)");
     return;
   }
   // The same map as an earlier rotlie wrote it: no "neighbour_check" in its header, so a resume checks it

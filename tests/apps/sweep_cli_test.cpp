@@ -4,6 +4,8 @@
 // refused on resume and left as it was.
 #include <boost/test/unit_test.hpp>
 
+#include "skip.hpp"
+
 #include "cli_support.hpp"
 
 #include <signal.h>
@@ -78,7 +80,7 @@ BOOST_AUTO_TEST_CASE(each_line_is_its_runs_binary_json_in_order) {
 
 BOOST_AUTO_TEST_CASE(two_mpi_ranks_write_the_lines_of_one_process) {
   if (!mpi_available()) {
-    BOOST_TEST_MESSAGE("SKIPPED: rotlie is built without MPI or mpirun is missing (install libopenmpi-dev openmpi-bin)");
+    rotlie::test::skip("rotlie is built without MPI or mpirun is missing (install libopenmpi-dev openmpi-bin)");
     return;
   }
   const auto d = sweep_dir("mpi");

@@ -5,6 +5,8 @@
 // in rotlie's increasing-moment axes; see the comment in the second test), and against
 // MRDL-reversed (ABCBA2:CBA), a different map.
 #include <boost/test/unit_test.hpp>
+
+#include "skip.hpp"
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -78,7 +80,7 @@ const std::string lammps_head = "units real\natom_style full\nboundary p p p\nre
 
 BOOST_AUTO_TEST_CASE(energy_and_site_forces_agree_with_lammps) {
   if (!have_lammps()) {
-    BOOST_TEST_MESSAGE("skipped: lmp (LAMMPS) is not installed");
+    rotlie::test::skip("lmp (LAMMPS) is not installed");
     return;
   }
   const long n = 512;
@@ -109,7 +111,7 @@ BOOST_AUTO_TEST_CASE(energy_and_site_forces_agree_with_lammps) {
 
 BOOST_AUTO_TEST_CASE(a_hundred_steps_of_no_squish_agree_with_fix_rigid_nve_small) {
   if (!have_lammps()) {
-    BOOST_TEST_MESSAGE("skipped: lmp (LAMMPS) is not installed");
+    rotlie::test::skip("lmp (LAMMPS) is not installed");
     return;
   }
   const long n = 512;

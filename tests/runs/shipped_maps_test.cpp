@@ -5,6 +5,8 @@
 // not (s = 121/200, t = 83/200) gets the exact best from the neighbour check.
 #include <boost/test/unit_test.hpp>
 
+#include "skip.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <map>
@@ -33,7 +35,7 @@ BOOST_AUTO_TEST_CASE(the_shipped_maps_are_whole_and_agree_with_the_exact_solver)
   for (const auto& [family, count] : checks) {
     const auto file = runs::shipped_map(family);
     if (!file) {
-      BOOST_TEST_MESSAGE("no shipped map of family " << family << " (data/maps-K200): skipped");
+      rotlie::test::skip("no shipped map of family " + family + " (data/maps-K200)");
       continue;
     }
     ++shipped;
@@ -59,7 +61,7 @@ BOOST_AUTO_TEST_CASE(the_shipped_maps_are_whole_and_agree_with_the_exact_solver)
 BOOST_AUTO_TEST_CASE(the_screened_p_map_at_s_121_t_83_gets_the_exact_best) {
   const auto shipped = runs::shipped_map("P");
   if (!shipped) {
-    BOOST_TEST_MESSAGE("no shipped P map (data/maps-K200): skipped");
+    rotlie::test::skip("no shipped P map (data/maps-K200)");
     return;
   }
   const auto m = runs::read_map_contents(*shipped);
