@@ -134,7 +134,7 @@ def md(scene: str, integrator: str, h: Number, T: Number | None = None, *, runs:
        scalar: Scalar | None = None, dipole: Number | None = None, field: Number | None = None, molecules: int | None = None,
        threads: int | None = None, state: str | PathLike[str] | None = None, body: str | BodyLike | None = None,
        e: Number | None = None, theta0: Number | None = None, omega0: Number | None = None, obliquity: Number | None = None,
-       every: int | None = None) -> MdResult: ...
+       every: int | None = None, equilibrate: Number | None = None) -> MdResult: ...
 
 class SpinTrajectory:
     every: int

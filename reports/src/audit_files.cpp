@@ -9,6 +9,8 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 
 #include "rotlie/runs/number_text.hpp"
@@ -47,6 +49,17 @@ std::optional<audit_map> read_map_file(const fs::path& file) {
     m.bodies.push_back(b);
   }
   return m;
+}
+
+// The shipped maps (data/maps-K200) do not change while rotlie runs: each is read and parsed once per
+// process (about a second for its 39,800 lines), however many audits read it.
+std::optional<audit_map> read_shipped_map_once(const fs::path& file) {
+  static std::mutex guard;
+  static std::map<fs::path, std::optional<audit_map>> read;
+  const std::lock_guard<std::mutex> lock(guard);
+  auto it = read.find(file);
+  if (it == read.end()) it = read.emplace(file, read_map_file(file)).first;
+  return it->second;
 }
 
 // "d.ddd…e-2" as an exact rational.
@@ -107,9 +120,8 @@ const audit_map* report_files::map(const std::string& family) {
     // one (data/maps-K200; drawing it removes an older computed map from the folder)
     const fs::path given = in_.maps_folder.empty() ? fs::path() : runs::map_file_path(in_.maps_folder, family);
     fs::path file = !given.empty() && fs::exists(given) ? given : runs::map_file_path(in_.folder, family);
-    if (!fs::exists(file))
-      if (const auto shipped = runs::shipped_map(family)) file = *shipped;
-    it = maps_.emplace(family, read_map_file(file)).first;
+    const auto shipped = fs::exists(file) ? std::nullopt : runs::shipped_map(family);
+    it = maps_.emplace(family, shipped ? read_shipped_map_once(*shipped) : read_map_file(file)).first;
   }
   return it->second ? &*it->second : nullptr;
 }

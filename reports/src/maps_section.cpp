@@ -11,6 +11,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "rotlie/reports/body_cells.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
 #include "sections.hpp"
@@ -117,34 +118,6 @@ family_map read_map(const std::filesystem::path& file, const std::string& family
 const std::array<const char*, 15> palette = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
                                               "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf",
                                               "#393b79", "#e7ba52", "#637939", "#ad494a", "#000000"};
-
-// Each body's cell: the quadrilateral between the midpoints to its grid neighbours, i.e. the grid
-// points (2i ± 1, 2j ± 1) of the grid 2K (clamped to it) placed in (I1, I2), so that the cells
-// tile the triangle and a map is drawn continuously, without gaps where the placement stretches.
-class body_cells {
- public:
-  explicit body_cells(int K) : K_(K) {}
-  /// Appends the five points (four corners, the first repeated) of the cell of body (i, j).
-  void add(int i, int j, std::vector<double>& x, std::vector<double>& y) {
-    const std::array<std::pair<int, int>, 5> corners = {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}}};
-    for (const auto& [di, dj] : corners) {
-      const auto p = corner(std::clamp(2 * i + di, 0, 2 * K_), std::clamp(2 * j + dj, 0, 2 * K_));
-      x.push_back(p.first);
-      y.push_back(p.second);
-    }
-  }
-
- private:
-  std::pair<double, double> corner(int a, int b) {
-    auto [it, fresh] = placed_.try_emplace({a, b});
-    if (fresh) {
-      it->second = runs::grid_moments(2 * K_, a, b);
-    }
-    return it->second;
-  }
-  int K_;
-  std::map<std::pair<int, int>, std::pair<double, double>> placed_;
-};
 
 std::string categories_chart(const report_options& options, const family_map& m, bool by_permutation,
                              const std::string& name, const std::string& caption, std::vector<std::filesystem::path>& files) {

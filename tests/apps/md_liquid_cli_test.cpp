@@ -2,7 +2,7 @@
 // the first run and reloaded by the next (which then gives the same numbers with another thread count),
 // a dedicated rotor solved for the TIP3P body run from the saved state (a table solved for another
 // body refused), and a state file of another system refused with one line, the file left as it was.
-// One equilibration of 365 molecules (about 30 s of CPU): labelled cli, not fast.
+// One equilibration of 365 molecules over 1 ps (--equilibrate; about 5 s of CPU): labelled cli, not fast.
 #include <boost/test/unit_test.hpp>
 
 #include "cli_support.hpp"
@@ -28,7 +28,7 @@ using namespace rotlie::test_cli;
 namespace {
 
 std::string liquid(const std::string& extra, const std::string& integrator = "MRDL") {
-  return "md --scene liquid-water --integrator " + integrator + " --h 2 --T 0.02 --runs 1 --molecules 365 --state " +
+  return "md --scene liquid-water --integrator " + integrator + " --h 2 --T 0.02 --runs 1 --molecules 365 --equilibrate 1 --state " +
          (scratch() / "w.state").string() + " " + extra;
 }
 

@@ -30,7 +30,7 @@ std::string line(const char* format, A... a) {
   return buf;
 }
 
-scene_result run(const scene_request& request) {
+scene_result liquid_water_scene_run(const scene_request& request) {
   models::liquid_water_run_options o;
   const auto method = md_method_named(request.integrator, numeric_body(models::tip3p_body_text()));  // a bad name costs nothing
   o.integrator = method.spec;
@@ -40,6 +40,7 @@ scene_result run(const scene_request& request) {
   o.molecules = integer_in_range(option(request, "--molecules"), "--molecules", 2, 10000000);
   o.threads = static_cast<int>(integer_in_range(option(request, "--threads"), "--threads", 1, 64));
   o.state_file = option(request, "--state");
+  o.equilibration_ps = positive_number(option(request, "--equilibrate"), "--equilibrate");
   if (o.T_ps * 1000 / o.h_fs < 10) throw bad_input("--T must span at least 10 steps of --h (the fluctuations are rms over a run)");
   if (o.T_ps * 1000 / o.h_fs * o.runs > 1e9) throw bad_input("--T / --h × --runs exceeds 10⁹ steps");
   o.every = trajectory_every(request, std::round(o.T_ps * 1000 / o.h_fs) * o.runs);
@@ -98,8 +99,9 @@ scene liquid_water_scene() {
            {"--molecules", "512", "Molecules in the box (at least 365)"},
            {"--threads", "2", "Threads of the force loop (results do not depend on it)"},
            {"--state", "", "A state file, read if it exists, else the equilibrated start is written there"},
+           {"--equilibrate", "10", "Equilibration of a new start in ps (Berendsen at 297 K; not run when --state is read)"},
            every_option()},
-          run};
+          liquid_water_scene_run};
 }
 
 }  // namespace rotlie::runs
