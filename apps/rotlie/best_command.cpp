@@ -13,12 +13,6 @@
 #include "rotlie/solver/scheme_table.hpp"
 
 namespace rotlie::app {
-namespace {
-
-// 3 digits after the point unless said (the tables' habit).
-std::string scientific(double x, int digits = 3) { return runs::scientific_text(x, digits); }
-
-}  // namespace
 
 int run_best(const best_options& options) {
   const auto body = runs::best_body(options.inertia);
@@ -52,16 +46,16 @@ int run_best(const best_options& options) {
       std::cout << "none (no real solution at this body)\n";
       continue;
     }
-    std::cout << solver::scheme_table_name(*p.best) << "  ||H_R5|| = " << scientific(p.best->analytic_remainder)
-              << "  gain " << scientific(*p.ratio, 3) << "\n";
+    std::cout << solver::scheme_table_name(*p.best) << "  ||H_R5|| = " << runs::scientific_text(p.best->analytic_remainder, 3)
+              << "  gain " << runs::scientific_text(*p.ratio, 3) << "\n";
   }
   std::cout << "  reference (cost " << solver::reference_cost(solver::map_reference_scheme) << "): " << reference
-            << "  ||H_R5|| = " << scientific(any.reference_remainder) << "\n\n"
+            << "  ||H_R5|| = " << runs::scientific_text(any.reference_remainder, 3) << "\n\n"
             << "Recommended: " << recommended << "   (rotlie integrate --scheme " << recommended << " --inertia "
             << options.inertia << " --h …)\n";
   if (!options.analytic_only) {
     std::cout << "\nMeasured (LV section 4.1 protocol in double, T = 1, at h/C = 1/1980; gain against " << rs4->name
-              << ", its best measured permutation, error " << scientific(rs4->error) << "):\n";
+              << ", its best measured permutation, error " << runs::scientific_text(rs4->error, 3) << "):\n";
     for (const auto& p : points) {
       const auto& m = measured[static_cast<std::size_t>(&p - points.data())];
       std::cout << "  best " << p.family << ": ";
@@ -69,15 +63,15 @@ int run_best(const best_options& options) {
         std::cout << "none\n";
         continue;
       }
-      std::cout << m.candidates.front().name << "  error " << scientific(m.candidates.front().error) << "  gain "
-                << scientific(rs4->error / m.candidates.front().error) << "   (analytic best " << solver::scheme_table_name(*p.best)
-                << ": measured gain " << scientific(rs4->error / m.analytic_best_error) << "; " << m.candidates.size()
+      std::cout << m.candidates.front().name << "  error " << runs::scientific_text(m.candidates.front().error, 3) << "  gain "
+                << runs::scientific_text(rs4->error / m.candidates.front().error, 3) << "   (analytic best " << solver::scheme_table_name(*p.best)
+                << ": measured gain " << runs::scientific_text(rs4->error / m.analytic_best_error, 3) << "; " << m.candidates.size()
                 << " solutions measured)\n";
     }
-    std::cout << "  best reference: " << best_reference->name << "  error " << scientific(best_reference->error) << "\n"
+    std::cout << "  best reference: " << best_reference->name << "  error " << runs::scientific_text(best_reference->error, 3) << "\n"
               << "Recommended by measurement: " << recommended_measured << "\n";
   }
-  std::cout << "(" << scientific(cpu_seconds, 2) << " s CPU)\n";
+  std::cout << "(" << runs::scientific_text(cpu_seconds, 2) << " s CPU)\n";
   return 0;
 }
 

@@ -16,9 +16,6 @@
 namespace rotlie::app {
 namespace {
 
-// 3 digits after the point unless said (the tables' habit).
-std::string scientific(double x, int digits = 3) { return runs::scientific_text(x, digits); }
-
 int list_references(bool json) {
   if (json) {
     std::cout << runs::sixth_references_json().dump(2) << "\n";
@@ -35,14 +32,14 @@ int list_references(bool json) {
 std::string table_line(const runs::sixth_order_table& t) {
   std::ostringstream s;
   if (!t.polished) {
-    s << "  " << t.word << ":" << t.permutation << "  ‖H_R7‖ = " << scientific(t.remainder7) << "  not polished: " << t.why
-      << "; Jacobian σmin/σmax = " << scientific(t.jacobian_ratio, 2)
-      << ", smallest |free coefficient| = " << scientific(t.smallest_free_coefficient, 2) << "\n";
+    s << "  " << t.word << ":" << t.permutation << "  ‖H_R7‖ = " << runs::scientific_text(t.remainder7, 3) << "  not polished: " << t.why
+      << "; Jacobian σmin/σmax = " << runs::scientific_text(t.jacobian_ratio, 2)
+      << ", smallest |free coefficient| = " << runs::scientific_text(t.smallest_free_coefficient, 2) << "\n";
     return s.str();
   }
-  s << "  " << t.name << "  ‖H_R7‖ = " << scientific(t.remainder7) << "  ‖H_R7‖·C^6 = " << scientific(t.remainder7_at_equal_cost)
-    << "  C = " << t.cost << "  max|c| = " << scientific(t.max_coefficient, 2) << "  hits " << t.hits << "  residual "
-    << scientific(t.residual, 2) << "  σmin/σmax " << scientific(t.jacobian_ratio, 2) << (t.file.empty() ? "" : "  " + t.file)
+  s << "  " << t.name << "  ‖H_R7‖ = " << runs::scientific_text(t.remainder7, 3) << "  ‖H_R7‖·C^6 = " << runs::scientific_text(t.remainder7_at_equal_cost, 3)
+    << "  C = " << t.cost << "  max|c| = " << runs::scientific_text(t.max_coefficient, 2) << "  hits " << t.hits << "  residual "
+    << runs::scientific_text(t.residual, 2) << "  σmin/σmax " << runs::scientific_text(t.jacobian_ratio, 2) << (t.file.empty() ? "" : "  " + t.file)
     << "\n";
   return s.str();
 }
@@ -77,11 +74,11 @@ int run_sixth(const sixth_options& o) {
   std::cout << "systems " << stats.systems << " (" << stats.with_roots << " with real roots), starts " << stats.starts
             << ", converged " << stats.converged << ", distinct roots " << stats.roots << "\n"
             << "hits: " << stats.hit_once << " roots once, " << stats.hit_twice << " twice, " << stats.hit_more
-            << " more; Good-Turing unseen mass f1/N = " << scientific(stats.unseen, 2)
-            << "; Chao1 estimate of the roots reachable = " << scientific(stats.chao1, 2) << "\n"
+            << " more; Good-Turing unseen mass f1/N = " << runs::scientific_text(stats.unseen, 2)
+            << "; Chao1 estimate of the roots reachable = " << runs::scientific_text(stats.chao1, 2) << "\n"
             << "best by ‖H_R7‖ (body scaled to I3 = 1):\n";
   for (const auto& t : r.best) std::cout << table_line(t);
-  std::cout << "CPU " << scientific(r.cpu_seconds, 3) << " s\n";
+  std::cout << "CPU " << runs::scientific_text(r.cpu_seconds, 3) << " s\n";
   return 0;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <map>
 #include <sstream>
 
@@ -16,14 +17,13 @@ namespace rotlie::runs {
 
 namespace {
 
+using models::norm;
 using models::vec3;
 
 constexpr std::size_t shape_file_limit = std::size_t(256) << 20;  // 256 MiB: millions of facets
 constexpr double m3_per_km3 = 1e9;  // a density in kg/m³ times this is kg/km³
-const double pi = std::acos(-1.0);
 
 vec3<double> minus(const vec3<double>& a, const vec3<double>& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double norm(const vec3<double>& a) { return std::sqrt(models::dot(a, a)); }
 
 // The unit sphere sampled by an octahedron subdivided four times (1,026 vertices).
 std::vector<vec3<double>> sphere_points() {
@@ -99,7 +99,7 @@ bool inside(const binary_body& b, const vec3<double>& p) {
     const double denominator = lx * ly * lz + models::dot(x, y) * lz + models::dot(x, z) * ly + models::dot(y, z) * lx;
     total += 2 * std::atan2(numerator, denominator);
   }
-  return total > 2 * pi;
+  return total > 2 * std::numbers::pi;
 }
 
 }  // namespace
@@ -198,7 +198,7 @@ binary_body binary_shape_named(const std::string& spec, const std::string& optio
       throw bad_input(option + ": the semi-axes must satisfy a >= b >= c (a along the body x), got '" + one_line(spec) + "'");
     b.kind = kind;
     b.semi_axes = {axes[0], axes[1], axes[2]};
-    b.volume = 4 * pi / 3 * axes[0] * axes[1] * axes[2];
+    b.volume = 4 * std::numbers::pi / 3 * axes[0] * axes[1] * axes[2];
     b.bounding_radius = axes[0];
     b.inner_radius = axes[2];
     for (const auto& u : sphere_points()) b.surface.push_back({axes[0] * u[0], axes[1] * u[1], axes[2] * u[2]});

@@ -27,6 +27,7 @@ namespace rotlie::runs {
 
 namespace {
 
+using models::norm;
 using models::vec3;
 using schemes::message_number;
 
@@ -93,7 +94,6 @@ binary_method method_named(const std::string& name, const vec3<double>& I1, cons
   return m;
 }
 
-double norm(const vec3<double>& v) { return std::sqrt(models::dot(v, v)); }
 
 // The circular start: r along x, the frames aligned (the secondary's long axis at the primary), the
 // orbit's rate balancing the mutual pull at that configuration, the secondary synchronous.
@@ -219,7 +219,7 @@ class conservation_watch {
     const double before = models::thread_cpu_seconds();
     const double U = sys_.gravity(x).U, E = sys_.kinetic_energy(x) + U;
     const auto L = sys_.angular_momentum(x);
-    const double dL = norm({L[0] - L0_[0], L[1] - L0_[1], L[2] - L0_[2]}) / norm(L0_);
+    const double dL = models::norm(vec3<double>{L[0] - L0_[0], L[1] - L0_[1], L[2] - L0_[2]}) / norm(L0_);
     max_dE_ = std::max(max_dE_, std::isfinite(E) ? std::abs(E - E0_) : std::numeric_limits<double>::infinity());
     max_dL_ = std::max(max_dL_, std::isfinite(dL) ? dL : std::numeric_limits<double>::infinity());
     U_low_ = std::min(U_low_, U), U_high_ = std::max(U_high_, U);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <limits>
 
 #include "rotlie/schemes/message_number.hpp"
@@ -10,10 +11,10 @@ namespace rotlie::runs {
 
 namespace {
 
-constexpr double pi = 3.141592653589793;
+using models::norm;
+
 constexpr double hour = 3600;
 
-double norm(const models::vec3<double>& v) { return std::sqrt(models::dot(v, v)); }
 
 // The angle of R = Aᵀ B: acos((tr R − 1)/2), by atan2 so that small angles keep their digits.
 double rotation_angle(const models::mat3<double>& A, const models::mat3<double>& B) {
@@ -36,7 +37,7 @@ binary_setup setup_named(const std::string& system, int order, const std::string
 }  // namespace
 
 double binary_state_error(const models::binary_state<double>& x, const models::binary_state<double>& ref) {
-  double e = norm({x.r[0] - ref.r[0], x.r[1] - ref.r[1], x.r[2] - ref.r[2]}) / norm(ref.r);
+  double e = models::norm(models::vec3<double>{x.r[0] - ref.r[0], x.r[1] - ref.r[1], x.r[2] - ref.r[2]}) / norm(ref.r);
   for (int b = 0; b < 2; ++b) e = std::max(e, rotation_angle(x.body[b].Q, ref.body[b].Q));
   return e;
 }
@@ -51,7 +52,7 @@ binary_observables observe_binary(binary_setup setup, long every) {
     const double angle = std::atan2(s.x.r[1], s.x.r[0]);
     if (!theta.empty()) {
       double d = angle - last;
-      d -= 2 * pi * std::round(d / (2 * pi));
+      d -= 2 * std::numbers::pi * std::round(d / (2 * std::numbers::pi));
       unwrapped += d;
     } else {
       unwrapped = angle;
@@ -60,7 +61,7 @@ binary_observables observe_binary(binary_setup setup, long every) {
     // the secondary's long axis (body x, inertial) against the line of centres, in the orbit's plane
     const auto& Q = s.x.body[1].Q;
     double lib = std::atan2(Q(1, 0), Q(0, 0)) - angle;
-    lib -= pi * std::round(lib / pi);  // the axis has no arrow
+    lib -= std::numbers::pi * std::round(lib / std::numbers::pi);  // the axis has no arrow
     t.push_back(s.t), theta.push_back(unwrapped), phi.push_back(lib);
     const double d = norm(s.x.r);
     o.separation_min_km = std::min(o.separation_min_km, d), o.separation_max_km = std::max(o.separation_max_km, d);
@@ -70,19 +71,19 @@ binary_observables observe_binary(binary_setup setup, long every) {
   double st = 0, sa = 0, stt = 0, sta = 0;
   for (std::size_t k = 0; k < t.size(); ++k) st += t[k], sa += theta[k], stt += t[k] * t[k], sta += t[k] * theta[k];
   const double slope = (n * sta - st * sa) / (n * stt - st * st);
-  o.orbit_period_h = 2 * pi / slope / hour;
+  o.orbit_period_h = 2 * std::numbers::pi / slope / hour;
   const auto [low, high] = std::minmax_element(phi.begin(), phi.end());
-  o.libration_amplitude_deg = (*high - *low) / 2 * 180 / pi;
+  o.libration_amplitude_deg = (*high - *low) / 2 * 180 / std::numbers::pi;
   double mean = 0;
   for (const double p : phi) mean += p;
   mean /= n;
-  o.libration_mean_deg = mean * 180 / pi;
+  o.libration_mean_deg = mean * 180 / std::numbers::pi;
   std::vector<double> ups;
   for (std::size_t k = 1; k < phi.size(); ++k)
     if (phi[k - 1] < mean && phi[k] >= mean) ups.push_back(t[k - 1] + (t[k] - t[k - 1]) * (mean - phi[k - 1]) / (phi[k] - phi[k - 1]));
   if (ups.size() >= 2) o.libration_period_h = (ups.back() - ups.front()) / static_cast<double>(ups.size() - 1) / hour;
   const auto w = models::angular_velocity(setup.system_model().moments(0), result.end.x.body[0].G);
-  o.primary_period_h = 2 * pi / norm(w) / hour;
+  o.primary_period_h = 2 * std::numbers::pi / norm(w) / hour;
   return o;
 }
 

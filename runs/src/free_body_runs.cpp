@@ -14,24 +14,19 @@
 #include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/runs/body_names.hpp"
 #include "rotlie/runs/user_input.hpp"
+#include "rotlie/runs/number_text.hpp"
 
 namespace rotlie::runs {
 namespace {
 
 constexpr long max_steps = 100'000'000;
 
-std::string number(double x) {
-  std::ostringstream out;
-  out << x;
-  return out.str();
-}
-
 // The exact flow's time limit is a property of the arguments: bad input, not a failure.
 template <class T>
 void check_time_limit(const models::exact_free_body<T>& exact, double total) {
   if (total > static_cast<double>(exact.max_time()))
-    throw bad_input("--T = " + number(total) + " is beyond the exact flow's limit of " +
-                    number(static_cast<double>(exact.max_time())) + " for this body and G0 (|ω| T ≤ 2^60 rad)");
+    throw bad_input("--T = " + significant_text(total) + " is beyond the exact flow's limit of " +
+                    significant_text(static_cast<double>(exact.max_time())) + " for this body and G0 (|ω| T ≤ 2^60 rad)");
 }
 
 template <class T>

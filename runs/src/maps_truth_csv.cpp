@@ -3,6 +3,7 @@
 #include <cln/real.h>
 
 #include <sstream>
+#include "rotlie/runs/number_text.hpp"
 
 namespace rotlie::runs {
 namespace {
@@ -14,12 +15,6 @@ std::string decimal(const cln::cl_RA& x) {
   return s.str();
 }
 
-std::string number(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
 
 }  // namespace
 
@@ -33,9 +28,9 @@ std::string truth_csv_rows(const body_truth& b) {
   for (const auto& f : b.families) {
     if (!f.best) continue;  // no solution: nothing measured
     out += decimal(b.body.I[0]) + "," + decimal(b.body.I[1]) + "," + decimal(b.body.I[2]) + "," + f.family + "," +
-           *f.best + "," + number(f.analytic_ratio) + "," + number(f.measured_ratio_h) + "," +
-           number(f.measured_ratio_cpu) + "," + number(f.predicted_ratio) + "," + number(f.gradient_ratio) + "," +
-           number(f.slope) + "," + number(f.predicted_constant) + "," + number(f.measured_constant) + "," +
+           *f.best + "," + significant_text(f.analytic_ratio) + "," + significant_text(f.measured_ratio_h) + "," +
+           significant_text(f.measured_ratio_cpu) + "," + significant_text(f.predicted_ratio) + "," + significant_text(f.gradient_ratio) + "," +
+           significant_text(f.slope) + "," + significant_text(f.predicted_constant) + "," + significant_text(f.measured_constant) + "," +
            b.reference + "\n";
   }
   return out;

@@ -30,13 +30,6 @@ std::array<cln::cl_RA, 3> scaled_inverse_moments(const lie::moments_of_inertia& 
   return {body.I[2] / body.I[0], body.I[2] / body.I[1], cln::cl_RA(1)};
 }
 
-std::string monomial_text(const lie::monomial& m) {
-  std::string s;
-  for (int i = 0; i < 3; ++i)
-    if (m[i] > 0) s += "G" + std::to_string(i + 1) + "^" + std::to_string(m[i]);
-  return s;
-}
-
 // F (values), Σ|terms| (sizes) and the Jacobian J (row-major) of a square system at x, in T.
 template <class T>
 void evaluate(const std::vector<compiled_polynomial>& f, const std::vector<T>& x, std::vector<T>& value,
@@ -98,7 +91,7 @@ sixth_order_system sixth_order_conditions(const bch::scheme_layout& layout, cons
     for (std::size_t i = 0; i < monomials.size(); ++i) {
       const poly c = k.remainder[static_cast<std::size_t>(order)].coefficient(monomials[i]);
       s.all_conditions.push_back(c);
-      s.condition_names.push_back("H_R" + std::to_string(order) + " " + monomial_text(monomials[i]));
+      s.condition_names.push_back("H_R" + std::to_string(order) + " " + lie::compact_text(monomials[i]));
       if (i + 1 < monomials.size()) s.conditions.emplace_back(c, n);  // Theorem 2 fixes the last one
     }
   }

@@ -32,13 +32,6 @@ std::pair<cln::cl_RA, cln::cl_RA> value_and_size(const lie::coefficient_polynomi
   return {value, size};
 }
 
-std::string monomial_text(const lie::monomial& m) {
-  std::string s;
-  for (int i = 0; i < 3; ++i)
-    if (m[i] > 0) s += "G" + std::to_string(i + 1) + "^" + std::to_string(m[i]);
-  return s;
-}
-
 // One condition checked: keeps the largest relative residual, and the first failure per order.
 struct tally {
   explicit tally(const cln::cl_RA& t) : tolerance(t) {}
@@ -89,7 +82,7 @@ order_certificate certify_order_four(const bch::scheme_layout& layout, const lie
   for (int order = 2; order <= top; ++order)
     for (const auto& [m, c] : k.remainder[static_cast<std::size_t>(order)].terms()) {
       const auto [value, size] = value_and_size(c, x);
-      t.check(order, relative(value, size), "the coefficient of " + monomial_text(m) + " in H_R" + std::to_string(order));
+      t.check(order, relative(value, size), "the coefficient of " + lie::compact_text(m) + " in H_R" + std::to_string(order));
     }
   order_certificate out;
   out.residual = t.worst;

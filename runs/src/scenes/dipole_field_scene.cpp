@@ -30,7 +30,7 @@ scene_result run_in(const dipole_run& e) {
   return {dipole_field_json(e.header(), result, std::stod(e.dipole), std::stod(e.field)), text.str(), verdict_of(result).warnings};
 }
 
-scene_result run(const scene_request& r) {
+scene_result dipole_field_scene_run(const scene_request& r) {
   dipole_run e;
   read_ensemble_run(r, models::water::body_text(), e);
   e.dipole = shortest(positive_number(option(r, "--dipole"), "--dipole"));
@@ -45,7 +45,7 @@ scene dipole_field_scene() {
   options.push_back({"--dipole", "1.84", "The dipole in debye"});
   options.push_back({"--field", "2.7", "The field along z in MV/m"});
   return {"dipole-field", "a water molecule's dipole in a constant field: Table I's dH/dV and dLz/<Lz> (vZS section V.B)",
-          std::move(options), run};
+          std::move(options), dipole_field_scene_run};
 }
 
 }  // namespace rotlie::runs

@@ -23,7 +23,7 @@ scene_result run_in(const ensemble_run& e) {
   return {free_water_json(e.header(), result), text.str(), verdict_of(result).warnings};
 }
 
-scene_result run(const scene_request& r) {
+scene_result free_water_scene_run(const scene_request& r) {
   ensemble_run e;
   read_ensemble_run(r, models::water::body_text(), e);
   return in_scalar(e, [&e](auto zero) { return run_in<decltype(zero)>(e); });
@@ -33,7 +33,7 @@ scene_result run(const scene_request& r) {
 
 scene free_water_scene() {
   return {"free-water", "one free water molecule: the orientation error time tau (vZS section V.A)",
-          ensemble_options(models::free_water_default_T_ps, models::free_water_default_runs), run};
+          ensemble_options(models::free_water_default_T_ps, models::free_water_default_runs), free_water_scene_run};
 }
 
 }  // namespace rotlie::runs

@@ -9,7 +9,7 @@ namespace {
 
 using namespace scene_support;
 
-scene_result run(const scene_request& r) {
+scene_result spin_orbit_scene_run(const scene_request& r) {
   for (const char* needed : {"--body", "--e", "--T"})
     if (option(r, needed).empty()) throw bad_input(std::string(needed) + " is required by the spin-orbit scene");
   const auto result = spin_run(spin_setup_of({option(r, "--body"), option(r, "--e"), r.integrator, r.h, option(r, "--T"),
@@ -33,7 +33,7 @@ scene spin_orbit_scene() {
            {"--obliquity", "0", "Initial tilt of the C axis about x, radians"},
            {"--scalar", "double", "double, long-double or float128"},
            every_option()},
-          run};
+          spin_orbit_scene_run};
 }
 
 }  // namespace rotlie::runs

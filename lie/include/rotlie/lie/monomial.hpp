@@ -30,4 +30,8 @@ struct monomial {
 /// "G1^2*G2*G3" style text (ASCII, parseable by humans and by GiNaC-free tools); "1" for the constant.
 std::string to_string(const monomial& m);
 
+/// "G1^2G2^4" (every exponent written, no separator, empty for the constant): how the solver names the
+/// conditions of a table, one per remainder coefficient.
+std::string compact_text(const monomial& m);
+
 }  // namespace rotlie::lie

@@ -48,6 +48,13 @@ T dot(const vec3<T>& x, const vec3<T>& y) {
   return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
 }
 
+/// Euclidean length of x.
+template <class T>
+T norm(const vec3<T>& x) {
+  using std::sqrt;
+  return sqrt(dot(x, x));
+}
+
 /// Frobenius norm of x − y: the paper's attitude error is this for the attitude matrices (R^9).
 template <class T>
 T distance(const mat3<T>& x, const mat3<T>& y) {

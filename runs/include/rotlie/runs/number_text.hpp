@@ -18,7 +18,7 @@ std::string scientific_or_dash(double x, int decimals);
 
 /// `digits` significant digits in the stream's general format (as %g: "0.00123", "1.2e+03",
 /// trailing zeros dropped). digits = 6 is what `std::cout << x` prints.
-std::string significant_text(double x, int digits);
+std::string significant_text(double x, int digits = 6);
 
 /// A duration for progress and summaries: "4.2 s", "12.5 min", "3.1 h" (2 significant digits below
 /// 10 s, else 3).
