@@ -28,12 +28,12 @@ struct library_results {
   }
 };
 
-using claim = audit_claim<library_results>;
+using library_claim = audit_claim<library_results>;
 
 // The measurements of runs::lv_audit_study, as the claims below compare them (each reads one field).
 
 // LV 4.1, 5.2, 5.3: the rotations per step behind (12/9)^4 and (12/11)^4.
-measurement costs(library_results& lib, const claim&) {
+measurement costs(library_results& lib, const library_claim&) {
   const auto& m = lib.measured;
   return measurement::of_names({std::to_string(m.cost_mclachlan), std::to_string(m.cost_n2), std::to_string(m.cost_p1),
                                 std::to_string(m.cost_r4)},
@@ -42,7 +42,7 @@ measurement costs(library_results& lib, const claim&) {
 }
 
 // LV 4.1's cost model: the largest CPU time per rotation over the smallest.
-measurement cost_spread(library_results& lib, const claim&) {
+measurement cost_spread(library_results& lib, const library_claim&) {
   double lo = std::numeric_limits<double>::infinity(), hi = 0;
   std::string v;
   for (const auto& [name, per_rotation] : lib.measured.seconds_per_rotation) {
@@ -53,20 +53,20 @@ measurement cost_spread(library_results& lib, const claim&) {
 }
 
 // LV 4.3: whether Fassò's and Hairer-Vilmart's (0.345, 0.653, 1) is refused as a body.
-measurement fasso_refused(library_results& lib, const claim&) {
+measurement fasso_refused(library_results& lib, const library_claim&) {
   const auto& why = lib.measured.fasso_rejection;
   return measurement::of_flag(!why.empty(), why.empty() ? "accepted as a body" : "rejected: " + why);
 }
 
 // LV 4.3: water's I1 and I2 rounded to 3 decimals.
-measurement water_moments(library_results& lib, const claim&) {
+measurement water_moments(library_results& lib, const library_claim&) {
   const double I1 = lib.measured.water_I1, I2 = lib.measured.water_I2;
   return measurement::of_names({runs::fixed_text(I1, 3), runs::fixed_text(I2, 3)},
                                "rotlie's \"water\": (" + runs::fixed_text(I1, 5) + ", " + runs::fixed_text(I2, 5) + ", 1)");
 }
 
 // LV 4.2: for the spherical top the R part vanishes for every permutation, the S part does not.
-measurement sphere_rs_trivial(library_results& lib, const claim&) {
+measurement sphere_rs_trivial(library_results& lib, const library_claim&) {
   const bool all_zero = lib.measured.sphere_r_zero, s_nonzero = lib.measured.sphere_s_nonzero;
   return measurement::of_flag(all_zero && s_nonzero, std::string("R part ") + (all_zero ? "= 0" : "≠ 0") + " for every permutation; S part " +
                                                          (s_nonzero ? "≠ 0" : "= 0"));
@@ -74,27 +74,27 @@ measurement sphere_rs_trivial(library_results& lib, const claim&) {
 
 // LV 4.1: the largest relative difference of the R^9 attitude error and √3 × the quadratic mean of
 // the angular errors of the three principal axes, for small angles.
-measurement small_angle_error(library_results& lib, const claim&) {
+measurement small_angle_error(library_results& lib, const library_claim&) {
   const double worst = lib.measured.small_angle_worst;
   return measurement::of(worst, "largest relative difference " + runs::significant_text(worst, 2));
 }
 
 // LV 4.1 (from 3.1.2): the permutations where RSRSRSR's remainder equals SRSRSRS's at every order.
-measurement sr_equal_at(library_results& lib, const claim&) {
+measurement sr_equal_at(library_results& lib, const library_claim&) {
   const auto& equal_at = lib.measured.sr_equal_at;
   return measurement::of_names({equal_at}, "equal at permutation(s): " + (equal_at.empty() ? std::string("none") : equal_at) +
                                                " (checked to order 5)");
 }
 
 // LV 5.1: the points of rotlie's --grid 200.
-measurement body_grid_size(library_results& lib, const claim&) {
+measurement body_grid_size(library_results& lib, const library_claim&) {
   const auto all = lib.measured.grid_points, asymmetric = lib.measured.grid_asymmetric;
   return measurement::of(static_cast<double>(all), std::to_string(all) + " points, " + std::to_string(asymmetric) +
                                                        " computed after skipping " + std::to_string(all - asymmetric) + " symmetric tops");
 }
 
 // LV 4.3, Fig. 5: the numerically best R for water, over all its solutions.
-measurement best_r(library_results& lib, const claim&) {
+measurement best_r(library_results& lib, const library_claim&) {
   const auto& ranked = lib.measured.r_measured;
   if (ranked.empty()) return measurement::absent("no R solution measured");
   const std::string second =
@@ -105,7 +105,7 @@ measurement best_r(library_results& lib, const claim&) {
 
 // LV 4.3, Fig. 5: the numerically best among the P with the smallest analytic remainders (ranked
 // from the dedicated section's solutions_water_P.json).
-measurement best_p(library_results& lib, const claim&) {
+measurement best_p(library_results& lib, const library_claim&) {
   if (!lib.measured.best_p) return measurement::absent(lib.measured.best_p_missing);
   const auto& b = *lib.measured.best_p;
   return measurement::of_names({b.measured[0].second}, "best: " + b.measured[0].second + "; P1 BAC (5) is #" + std::to_string(b.p1_rank) +
@@ -116,8 +116,8 @@ measurement best_p(library_results& lib, const claim&) {
 }
 
 // id, statement (LV), where, tolerance, sections read, the paper's value and comparison, measurement.
-const std::vector<claim>& computed_claims() {
-  static const std::vector<claim> claims = {
+const std::vector<library_claim>& computed_claims() {
+  static const std::vector<library_claim> claims = {
       {"small-angle-error",
        "For small angles the R^9 attitude error is √3 × the quadratic mean of the angular errors of the three principal axes", "4.1",
        "relative difference below 1e-4 for rotations of 1e-2 and 1e-3 rad about three axes", {}, below(1e-4), small_angle_error, {}},

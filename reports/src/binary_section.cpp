@@ -11,6 +11,7 @@
 
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/report.hpp"
+#include "rotlie/reports/section_writer.hpp"
 #include "rotlie/runs/binary_study.hpp"
 #include "rotlie/runs/number_text.hpp"
 #include "rotlie/schemes/message_number.hpp"
@@ -28,12 +29,6 @@ constexpr double observed_change_min = -33.0;     // ± 1.0 min (Thomas et al. 2
 constexpr double observed_primary_h = 2.2600;     // Didymos's rotation (Pravec et al. 2006)
 // DART's momentum transfer (Cheng et al. 2023, Nature 616, 457): mass and speed at impact, and β
 constexpr double dart_mass_kg = 579.4, dart_speed_km_s = 6.1449, dart_beta = 3.61;
-
-void add_chart(report_section& s, std::ostringstream& md, const report_options& o, const std::string& name, const chart& c, const std::string& caption) {
-  const auto f = write_chart(o.out_dir, name, c);
-  s.files.insert(s.files.end(), f.written.begin(), f.written.end());
-  md << chart_markdown(f, name, caption);
-}
 
 runs::binary_setup didymos(int order, const std::string& integrator, double h, double T, bool gubas_start) {
   runs::binary_request r;

@@ -10,6 +10,7 @@
 #include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
+#include "rotlie/reports/report_csv_reader.hpp"
 #include "sections.hpp"
 #include "rotlie/reports/triangle_contour.hpp"
 #include "rotlie/runs/maps_truth.hpp"
@@ -27,9 +28,9 @@ using runs::truth_min_level;
 
 namespace {
 
-constexpr int default_grid = 5;  // 20 asymmetric grid bodies and water: about 2 CPU minutes
-constexpr int full_grid = 11;    // 110 and water: about 12 CPU minutes
-constexpr int quick_grid = 2;    // --quick: a look at the method, not a verdict
+constexpr int truth_default_grid = 5;  // 20 asymmetric grid bodies and water: about 2 CPU minutes
+constexpr int truth_full_grid = 11;    // 110 and water: about 12 CPU minutes
+constexpr int truth_quick_grid = 2;    // --quick: a look at the method, not a verdict
 
 struct truth_row {
   double I1 = 0, I2 = 0;
@@ -211,14 +212,12 @@ std::string flips_table(const std::vector<truth_row>& rows) {
 
 }  // namespace
 
-constexpr std::size_t largest_csv_bytes = std::size_t(1) << 28;  // the full study's CSV is a few MB
-
 report_section maps_truth_section(const report_options& options) {
   report_section sec;
   sec.title = "Do the maps tell the truth?";
   const std::filesystem::path given = options.maps_dir.empty() ? std::filesystem::path()
                                                                 : options.maps_dir / "measured-ratios.csv";
-  const int K = options.full ? full_grid : options.quick ? quick_grid : default_grid;
+  const int K = options.full ? truth_full_grid : options.quick ? truth_quick_grid : truth_default_grid;
   std::string csv;
   double cpu_seconds = 0;
   std::string provenance;
@@ -242,7 +241,7 @@ report_section maps_truth_section(const report_options& options) {
   sec.files.push_back(dir / "measured-ratios.csv");
   // the grid of the rows (for the contour): the K whose grid holds most of them
   int grid_K = K;
-  for (const int k : {full_grid, default_grid, quick_grid}) {
+  for (const int k : {truth_full_grid, truth_default_grid, truth_quick_grid}) {
     int on = 0, i = 0, j = 0;
     for (const auto& r : rows) on += grid_indices(r, k, i, j);
     if (on > static_cast<int>(rows.size()) / 2) {

@@ -51,8 +51,6 @@ std::optional<std::size_t> csv_table::column(const std::string& name) const {
   return std::nullopt;
 }
 
-constexpr std::size_t largest_csv_bytes = std::size_t(1) << 28;  // a report's CSVs are at most a few MB
-
 std::optional<csv_table> read_csv(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) return std::nullopt;

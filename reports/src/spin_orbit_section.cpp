@@ -14,6 +14,7 @@
 #include "rotlie/runs/number_text.hpp"
 #include "rotlie/reports/output_file.hpp"
 #include "rotlie/reports/report.hpp"
+#include "rotlie/reports/section_writer.hpp"
 #include "sections.hpp"
 #include "rotlie/runs/spin_orbit_cost.hpp"
 #include "rotlie/runs/spin_orbit_drift.hpp"
@@ -39,13 +40,6 @@ budget budget_of(const report_options& o) {
   if (o.full) return {0.05, 1000, 200, 1000};
   if (o.quick) return {0.2, 100, 100, 40};
   return {0.1, 200, 100, 200};
-}
-
-void add_chart(report_section& s, std::ostringstream& md, const report_options& o, const std::string& name, const chart& c,
-               const std::string& caption) {
-  const auto f = write_chart(o.out_dir, name, c);
-  s.files.insert(s.files.end(), f.written.begin(), f.written.end());
-  md << chart_markdown(f, name, caption);
 }
 
 // The log-slope of the obliquity between 1e-5 and 1e-2 rad (its e-folding rate per orbit), or NaN.

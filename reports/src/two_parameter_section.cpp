@@ -19,7 +19,7 @@ namespace rotlie::reports {
 
 namespace {
 
-constexpr int digits = runs::two_parameter_study_digits;
+constexpr int study_digits = runs::two_parameter_study_digits;
 
 int cost_of(const solver::two_parameter_entry& e) { return runs::two_parameter_cost(e); }
 
@@ -41,7 +41,7 @@ std::string coefficients_block(const solver::two_parameter_entry& e) {
   std::ostringstream o;
   const auto listing = runs::two_parameter_coefficients(e);
   o << "```\n" << runs::two_parameter_name(e) << "   word " << listing.permuted_word << "   ‖H_R5‖ = " << runs::significant_text(e.best.remainder, 10) << "\n";
-  for (const auto& c : listing.coefficients) o << c.letter << " " << c.name << " = " << runs::decimal_text(c.value, digits) << "\n";
+  for (const auto& c : listing.coefficients) o << c.letter << " " << c.name << " = " << runs::decimal_text(c.value, study_digits) << "\n";
   o << "```\n";
   return o.str();
 }
@@ -87,7 +87,7 @@ report_section two_parameter_section(const report_options& options) {
         "(reduced Newton steps in its tangent plane, shifted where the reduced Hessian is indefinite, each step "
         "restored onto the surface and kept only if ‖H_R5‖ decreases). The best local minimum of each system is "
         "polished as a root of the Lagrange system ∇f = λ1∇P1 + λ2∇P2, P1 = P2 = 0 (f = ‖H_R5‖²) by Newton in "
-        "CLN long floats and written with " << digits << " digits. **Certified** at the written decimals, exactly: "
+        "CLN long floats and written with " << study_digits << " study_digits. **Certified** at the written decimals, exactly: "
         "order 4 (every condition of H_R2, H_R3 and the first-order conditions relative to its terms, as for the "
         "paper's tables) and a vanishing projected gradient (the exact least-squares multipliers at the point, "
         "relative to the terms of ∇f); the reduced Hessian is positive (a local minimum). **Not certified**: that the "
@@ -110,7 +110,7 @@ report_section two_parameter_section(const report_options& options) {
     section.markdown = md.str();
     return section;
   }
-  md << "The best of each family, every free and eliminated coefficient (" << digits << " digits):\n\n"
+  md << "The best of each family, every free and eliminated coefficient (" << study_digits << " study_digits):\n\n"
      << coefficients_block(*best_q) << "\n" << coefficients_block(*best_rs) << "\n";
 
   // The comparison at equal cost: predicted by ‖H_R5‖ (error ∝ ‖H_R5‖ (h/C)^4 C^4) and measured.

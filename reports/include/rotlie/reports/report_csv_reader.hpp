@@ -1,6 +1,7 @@
 #pragma once
 // Reading back what earlier sections of the same report run wrote: CSV tables (RFC 4180, a
 // header line) and the chart CSVs (series,x,y[,z]) that write_chart puts beside every PNG.
+#include <cstddef>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -19,6 +20,9 @@ struct csv_table {
 
 /// nullopt when the file does not exist or cannot be read; throws std::runtime_error on a
 /// malformed line (an unclosed quote, a row with another number of fields than the header).
+/// The largest CSV file the report reads back (its CSVs, the maps-truth study's, are at most a few MB).
+inline constexpr std::size_t largest_csv_bytes = std::size_t(1) << 28;
+
 std::optional<csv_table> read_csv(const std::filesystem::path& file);
 
 /// One curve of a chart CSV: its points in file order.
