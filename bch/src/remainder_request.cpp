@@ -21,22 +21,22 @@ std::string joined(const std::vector<std::string>& v) {
 
 remainder_result compute_remainder(const remainder_request& request) {
   remainder_result result;
-  std::string word = request.scheme;
+  std::string stages = request.scheme;
   splitting split = request.split.value_or(splitting::abc);
   if (const auto named = find_named_scheme(request.scheme)) {
     result.name = request.scheme;
-    word = std::string(named->word);
+    stages = std::string(named->word);
     if (request.split && *request.split != named->split)
       throw std::invalid_argument(request.scheme + " is an " + (named->split == splitting::abc ? "ABC" : "RS") +
                                   " scheme; it does not exist in the other splitting");
     split = named->split;
-  } else if (!request.split && !word.empty() && word.find_first_not_of("RS") == std::string::npos) {
+  } else if (!request.split && !stages.empty() && stages.find_first_not_of("RS") == std::string::npos) {
     split = splitting::rs;
   }
   if (request.order < 1 || request.order > max_remainder_order)
     throw std::invalid_argument("--order must be between 1 and " + std::to_string(max_remainder_order) + ", got " +
                                 std::to_string(request.order));
-  result.layout = layout_scheme(word, split, request.permutation);
+  result.layout = layout_scheme(stages, split, request.permutation);
   if (const auto most = max_remainder_stages(request.order, result.layout.symmetric); result.layout.stages.size() > most)
     throw std::invalid_argument("a " + std::string(result.layout.symmetric ? "palindromic" : "non-palindromic") + " word of " +
                                 std::to_string(result.layout.stages.size()) + " stages is too long for order " +
@@ -51,7 +51,7 @@ remainder_result compute_remainder(const remainder_request& request) {
       if (std::find(fixed.begin(), fixed.end(), name) != fixed.end())
         throw std::invalid_argument("coefficient '" + name + "' is fixed by the first-order conditions (free: " +
                                     joined(free) + ")");
-      throw std::invalid_argument("'" + name + "' is not a coefficient of " + word + " (free: " + joined(free) + ")");
+      throw std::invalid_argument("'" + name + "' is not a coefficient of " + stages + " (free: " + joined(free) + ")");
     }
     values.append(coefficients.free.at(name) == GiNaC::numeric(cln::cl_N(value)));
   }

@@ -35,28 +35,28 @@ bool is_permutation_name(std::string_view p) {
   return std::find(n.begin(), n.end(), p) != n.end();
 }
 
-scheme_layout layout_scheme(std::string_view word, splitting split, std::string_view permutation) {
-  if (word.empty()) throw std::invalid_argument("the scheme word is empty");
-  if (word.size() > max_word_length)
-    throw std::invalid_argument("the scheme word has " + std::to_string(word.size()) + " stages; at most " +
+scheme_layout layout_scheme(std::string_view stages, splitting split, std::string_view permutation) {
+  if (stages.empty()) throw std::invalid_argument("the scheme word is empty");
+  if (stages.size() > max_word_length)
+    throw std::invalid_argument("the scheme word has " + std::to_string(stages.size()) + " stages; at most " +
                                 std::to_string(max_word_length) + " are supported");
   const std::string allowed = split == splitting::abc ? "ABC" : "RS";
   const std::string split_name = split == splitting::abc ? "ABC" : "RS";
-  for (const char c : word)
+  for (const char c : stages)
     if (allowed.find(c) == std::string::npos)
       throw std::invalid_argument("letter '" + lie::printable_text(std::string_view(&c, 1)) + "' is not a part of the " + split_name +
                                   " splitting (allowed: " + allowed + ")");
   // H is the sum of every part: a part that never acts leaves it out of the flow (H_R1 ≠ H).
   for (const char c : allowed)
-    if (word.find(c) == std::string_view::npos)
-      throw std::invalid_argument("part " + std::string(1, c) + " never acts in " + lie::printable_text(word) + ": every part of the " +
+    if (stages.find(c) == std::string_view::npos)
+      throw std::invalid_argument("part " + std::string(1, c) + " never acts in " + lie::printable_text(stages) + ": every part of the " +
                                   split_name + " splitting must appear");
   if (!is_permutation_name(permutation))
     throw std::invalid_argument("unknown permutation '" + lie::printable_text(permutation) +
                                 "' (expected ABC, BCA, CAB, ACB, CBA or BAC)");
 
   scheme_layout layout;
-  layout.word = std::string(word);
+  layout.word = std::string(stages);
   layout.split = split;
   layout.permutation = std::string(permutation);
   layout.permuted = layout.word;
@@ -64,16 +64,16 @@ scheme_layout layout_scheme(std::string_view word, splitting split, std::string_
     for (char& c : layout.permuted) c = permutation[static_cast<std::size_t>(c - 'A')];
 
   std::map<char, char> name_of;  // word letter → a, b, c in order of first appearance
-  for (const char c : word)
+  for (const char c : stages)
     if (!name_of.count(c)) name_of.emplace(c, static_cast<char>('a' + name_of.size()));
 
-  const std::size_t n = word.size();
-  layout.symmetric = std::equal(word.begin(), word.begin() + static_cast<long>(n / 2), word.rbegin());
+  const std::size_t n = stages.size();
+  layout.symmetric = std::equal(stages.begin(), stages.begin() + static_cast<long>(n / 2), stages.rbegin());
   std::map<char, int> next_index;
   layout.stages.resize(n);
   const std::size_t named = layout.symmetric ? (n + 1) / 2 : n;
   for (std::size_t i = 0; i < named; ++i) {
-    const char name = name_of[word[i]];
+    const char name = name_of[stages[i]];
     layout.stages[i] = {layout.permuted[i], std::string(1, name) + std::to_string(++next_index[name])};
   }
   for (std::size_t i = named; i < n; ++i) layout.stages[i] = {layout.permuted[i], layout.stages[n - 1 - i].coefficient};
