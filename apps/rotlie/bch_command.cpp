@@ -1,6 +1,8 @@
 // `rotlie bch`: a BCH-type series in the free Lie algebra, every Lyndon basis element with its exact
 // coefficient, as text or JSON.
-#include <functional>
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <iostream>
 #include <string>
 #include <thread>
@@ -13,17 +15,85 @@
 namespace rotlie::app {
 namespace {
 
-// "[A,[A,B]]" from the standard factorisations stored in the basis.
-void append_bracket(const bch::lyndon_basis& basis, std::size_t i, std::string& out) {
-  if (basis.length(i) == 1) {
-    out.push_back(static_cast<char>('A' + basis.letter(i, 0)));
-    return;
+// "[A,[A,B]]" from the standard factorisations stored in the basis. The texts of the first few
+// thousand words (the short ones, every factor of a long word ends in them) are kept, so a long
+// word's text is a few copies.
+class bracket_texts {
+ public:
+  explicit bracket_texts(const bch::lyndon_basis& basis) : basis_(basis) {
+    for (int d = 1; d <= basis.max_degree() && basis.end(d) <= 4096; ++d) kept_ = basis.end(d);
+    offset_.push_back(0);
+    for (std::size_t i = 0; i < kept_; ++i) {
+      char text[4 * 32];
+      text_.append(text, build(i, text));
+      offset_.push_back(text_.size());
+    }
   }
-  out.push_back('[');
-  append_bracket(basis, basis.left(i), out);
-  out.push_back(',');
-  append_bracket(basis, basis.right(i), out);
-  out.push_back(']');
+  /// Writes word i's text at out; returns the end. At most 4 · length − 3 characters.
+  char* write(std::size_t i, char* out) const {
+    if (i < kept_) {
+      const std::size_t n = offset_[i + 1] - offset_[i];
+      std::memcpy(out, text_.data() + offset_[i], n);
+      return out + n;
+    }
+    return build(i, out);
+  }
+
+ private:
+  char* build(std::size_t i, char* out) const {
+    if (basis_.length(i) == 1) {
+      *out++ = static_cast<char>('A' + basis_.letter(i, 0));
+      return out;
+    }
+    *out++ = '[';
+    out = write(basis_.left(i), out);
+    *out++ = ',';
+    out = write(basis_.right(i), out);
+    *out++ = ']';
+    return out;
+  }
+
+  const bch::lyndon_basis& basis_;
+  std::size_t kept_ = 0;
+  std::string text_;
+  std::vector<std::size_t> offset_;
+};
+
+// One term's line (text) or object (JSON, after its separator) at out; returns the end.
+char* write_term(const bch::exact_lie_series& s, const bracket_texts& brackets, bool json, std::size_t i, char* out) {
+  const auto& basis = *s.basis;
+  const auto put = [&out](const char* text) {
+    const std::size_t n = std::strlen(text);
+    std::memcpy(out, text, n);
+    out += n;
+  };
+  const int n = basis.length(i);
+  std::uint8_t foliage[64];
+  basis.copy_letters(i, foliage);
+  if (json) put(i ? ",\n{\"word\":\"" : "\n{\"word\":\"");
+  for (int k = 0; k < n; ++k) *out++ = static_cast<char>('A' + foliage[k]);
+  if (json) {
+    put("\",\"coefficient\":\"");
+  } else {
+    *out++ = '\t';
+    out = brackets.write(i, out);
+    *out++ = '\t';
+  }
+  out = bch::write_fraction(out, s.numerator[i], s.denominator[static_cast<std::size_t>(n)]);
+  if (json)
+    put("\"}");
+  else
+    *out++ = '\n';
+  return out;
+}
+
+constexpr std::size_t longest_term = 512;  // 29 letters, their bracketing, two 40-character numbers, the JSON keys
+
+// Terms [begin, end) appended to text.
+void format_terms(const bch::exact_lie_series& s, const bracket_texts& brackets, bool json, std::size_t begin,
+                  std::size_t end, std::string& text) {
+  char line[longest_term];
+  for (std::size_t i = begin; i < end; ++i) text.append(line, write_term(s, brackets, json, i, line));
 }
 
 }  // namespace
@@ -35,39 +105,31 @@ int run_bch(const bch_options& options) {
   const int degree = static_cast<int>(parse_integer_in_range(options.degree, "--degree", 1, bch::max_series_degree(*series)));
   const int threads = static_cast<int>(parse_integer_in_range(options.threads, "--threads", 1, 64));
   const auto s = bch::compute_free_series(*series, degree, {threads, false});
-  const auto& basis = *s.basis;
-  // Each term's line (the gcd of its fraction and the bracket) is formatted independently, so the
-  // terms are shared among the threads in contiguous ranges and written in order.
-  auto format_range = [&](std::size_t begin, std::size_t end, std::string& text) {
-    for (std::size_t i = begin; i < end; ++i) {
-      if (options.json) {
-        text += i ? ",\n" : "\n";
-        text += "{\"word\":\"" + basis.foliage(i) + "\",\"coefficient\":\"" + s.coefficient_text(i) + "\"}";
-      } else {
-        text += basis.foliage(i) + "\t";
-        append_bracket(basis, i, text);
-        text += "\t" + s.coefficient_text(i) + "\n";
-      }
-    }
-  };
-  std::vector<std::string> parts(static_cast<std::size_t>(threads));
-  {
-    std::vector<std::thread> workers;
-    const std::size_t n = s.size(), k = parts.size();
-    for (std::size_t t = 1; t < k; ++t)
-      workers.emplace_back(format_range, n * t / k, n * (t + 1) / k, std::ref(parts[t]));
-    format_range(0, n / k, parts[0]);
-    for (auto& w : workers) w.join();
-  }
-  std::string out;
+  const bracket_texts brackets(*s.basis);
   if (options.json)
-    out += "{\"series\":\"" + std::string(bch::series_name(*series)) + "\",\"degree\":" + std::to_string(degree) + ",\"terms\":[";
+    std::cout << "{\"series\":\"" << bch::series_name(*series) << "\",\"degree\":" << degree << ",\"terms\":[";
   else
-    out += "# " + std::string(bch::series_name(*series)) + " to degree " + std::to_string(degree) +
-           ": Lyndon word, basis element (standard bracketing), coefficient\n";
-  for (const auto& part : parts) out += part;
-  if (options.json) out += "\n]}\n";
-  std::cout << out;
+    std::cout << "# " << bch::series_name(*series) << " to degree " << degree
+              << ": Lyndon word, basis element (standard bracketing), coefficient\n";
+  // The terms go out in rounds: each thread formats one contiguous range (its own buffer), then the
+  // buffers are written in order, so the memory stays that of one round whatever the series' size.
+  constexpr std::size_t range = 1024;
+  std::vector<std::string> parts(static_cast<std::size_t>(threads));
+  const std::size_t n = s.size();
+  for (std::size_t first = 0; first < n && std::cout; first += range * parts.size()) {
+    auto format = [&](std::size_t t) {
+      const std::size_t begin = std::min(n, first + t * range), end = std::min(n, begin + range);
+      parts[t].clear();
+      format_terms(s, brackets, options.json, begin, end, parts[t]);
+    };
+    std::vector<std::thread> workers;
+    for (std::size_t t = 1; t < parts.size() && first + t * range < n; ++t) workers.emplace_back(format, t);
+    format(0);
+    for (auto& w : workers) w.join();
+    for (std::size_t t = 0; t < parts.size() && first + t * range < n; ++t)
+      std::cout.write(parts[t].data(), static_cast<std::streamsize>(parts[t].size()));
+  }
+  if (options.json) std::cout << "\n]}\n";
   return 0;
 }
 

@@ -3,6 +3,7 @@
 #include <cln/integer.h>
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 #include <thread>
 
@@ -37,18 +38,25 @@ exact_lie_series project(free_series name, const std::vector<std::uint8_t>& fact
   s.series = name;
   s.max_degree = max_degree;
   s.basis = std::make_shared<const lyndon_basis>(letters, max_degree);
-  s.numerator.assign(s.basis->size(), 0);
+  // Room for every degree, but each one's pages are touched only when it is reached: the top
+  // degree, half of the basis, is not written at all when only the odd ones are solved.
+  s.numerator.reserve(s.basis->size());
   s.denominator.assign(static_cast<std::size_t>(max_degree) + 1, 1);
   const auto& basis = *s.basis;
   for (int d = 1; d <= max_degree; ++d) {
     if (odd_only && d % 2 == 0) continue;
     lie::stop_point();
     check_word_coefficient_bound(d, factors.size());
+    s.numerator.resize(basis.end(d), 0);
     s.denominator[static_cast<std::size_t>(d)] = word_denominator(d);
     const std::size_t first = basis.begin(d), count = basis.end(d) - first;
     auto fill = [&](std::size_t from, std::size_t to) {
       word_coefficients z(factors);
-      for (std::size_t i = from; i < to; ++i) s.numerator[i] = z(basis.letters_of(i), d);
+      std::array<std::uint8_t, 64> w{};
+      for (std::size_t i = from; i < to; ++i) {
+        basis.copy_letters(i, w.data());
+        s.numerator[i] = z(w.data(), d);
+      }
     };
     const int t = std::max(1, std::min<int>(threads, static_cast<int>(count / 512) + 1));
     std::vector<std::thread> pool;
@@ -61,6 +69,7 @@ exact_lie_series project(free_series name, const std::vector<std::uint8_t>& fact
     solve_lyndon_coordinates(basis, d, s.numerator, threads);
     reduce(s, d);
   }
+  s.numerator.resize(basis.size(), 0);
   return s;
 }
 
@@ -78,35 +87,52 @@ exact_lie_series sym_from_xyx(exact_lie_series s) {
   return s;
 }
 
+// Indices of words of one degree asked for in increasing order: a cursor that only moves forward.
+class ascending_finder {
+ public:
+  ascending_finder(const lyndon_basis& basis, int d) : basis_(basis), at_(basis.begin(d)), end_(basis.end(d)) {}
+  std::size_t find(std::uint64_t code) {
+    while (at_ < end_ && basis_.code(at_) < code) ++at_;
+    return at_ < end_ && basis_.code(at_) == code ? at_ : basis_.size();
+  }
+
+ private:
+  const lyndon_basis& basis_;
+  std::size_t at_, end_;
+};
+
 // XY = Σ_k ad_A^k SYM / (2^k k!): the coefficient of P_w, w = A^k l (l Lyndon, l ≠ A), collects
-// SYM's coefficient of P_l over every such split.
-exact_lie_series xy_from_sym(const exact_lie_series& sym) {
-  exact_lie_series s;
+// SYM's coefficient of P_l over every such split. In place, from the top degree down: degree d
+// reads SYM at degree d (its own word) and below, which are still SYM's.
+exact_lie_series xy_from_sym(exact_lie_series s) {
   s.series = free_series::xy;
-  s.max_degree = sym.max_degree;
-  s.basis = sym.basis;
-  s.numerator.assign(sym.numerator.size(), 0);
-  s.denominator.assign(sym.denominator.size(), 1);
+  const std::vector<int128> sym_denominator = s.denominator;
   const auto& basis = *s.basis;
-  for (int d = 1; d <= s.max_degree; ++d) {
-    // scale[k] = 2^k k! · SYM's denominator at degree d − k
-    std::vector<int128> scale(static_cast<std::size_t>(d), 0);
+  const int bits = basis.bits_per_letter();
+  for (int d = s.max_degree; d >= 1; --d) {
+    // factor[k] = common / (2^k k! · SYM's denominator at degree d − k)
+    std::vector<int128> factor(static_cast<std::size_t>(d), 0);
     int128 common = 1, factorial = 1;
     for (int k = 0; k < d; ++k) {
       if (k > 0) factorial *= k;
-      scale[static_cast<std::size_t>(k)] =
-          checked_mul(checked_mul(factorial, int128(1) << k), sym.denominator[static_cast<std::size_t>(d - k)]);
-      common = lcm(common, scale[static_cast<std::size_t>(k)]);
+      factor[static_cast<std::size_t>(k)] =
+          checked_mul(checked_mul(factorial, int128(1) << k), sym_denominator[static_cast<std::size_t>(d - k)]);
+      common = lcm(common, factor[static_cast<std::size_t>(k)]);
     }
+    for (auto& f : factor) f = common / f;
     s.denominator[static_cast<std::size_t>(d)] = common;
+    // For a fixed k, the words A^k… come first in the degree and their suffixes l increase.
+    std::vector<ascending_finder> suffixes;
+    for (int k = 1; k < d; ++k) suffixes.emplace_back(basis, d - k);
     for (std::size_t i = basis.begin(d); i < basis.end(d); ++i) {
-      const std::uint8_t* w = basis.letters_of(i);
-      int128 sum = 0;
-      for (int k = 0; k < d && (k == 0 || w[k - 1] == 0); ++k) {
-        if (k > 0 && d - k == 1 && w[k] == 0) break;  // ad_A A = 0
-        const std::size_t l = basis.index_of(w + k, d - k);
-        if (l == basis.size() || sym.numerator[l] == 0) continue;
-        sum = checked_add(sum, checked_mul(sym.numerator[l], common / scale[static_cast<std::size_t>(k)]));
+      const std::uint64_t w = basis.code(i);
+      int128 sum = s.numerator[i] == 0 ? 0 : checked_mul(s.numerator[i], factor[0]);
+      for (int k = 1; k < d && ((w >> (bits * (d - k))) & ((1u << bits) - 1)) == 0; ++k) {
+        const std::uint64_t l = basis.suffix_code(w, d - k);
+        if (d - k == 1 && l == basis.code(0)) break;  // ad_A A = 0
+        const std::size_t j = suffixes[static_cast<std::size_t>(k - 1)].find(l);
+        if (j == basis.size() || s.numerator[j] == 0) continue;
+        sum = checked_add(sum, checked_mul(s.numerator[j], factor[static_cast<std::size_t>(k)]));
       }
       s.numerator[i] = sum;
     }

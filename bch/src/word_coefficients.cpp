@@ -27,23 +27,21 @@ const std::array<std::array<std::int64_t, max_n + 1>, max_n + 1>& binomials() {
 
 std::int64_t binomial(int n, int k) { return binomials()[static_cast<std::size_t>(n)][static_cast<std::size_t>(k)]; }
 
-// len! · <e^{X_g1} … e^{X_gm}, x> for a factor x of a word: the number of ways to cut x into
-// m consecutive (possibly empty) blocks, block j a power of letter g_j, weighted by the
-// multinomial len! / Π e_j!.
-std::int64_t factor_value(const std::uint8_t* x, int len, const std::vector<std::uint8_t>& g) {
-  std::array<std::int64_t, max_n + 1> f{}, next{};
-  f[0] = 1;  // f[p]: p! · (value of the first p letters over the factors used so far)
-  for (const auto letter : g) {
-    next = f;  // empty block
-    for (int p = 1; p <= len; ++p) {
-      std::int64_t s = next[static_cast<std::size_t>(p)];
-      for (int e = 1; e <= p && x[p - e] == letter; ++e)
-        s += f[static_cast<std::size_t>(p - e)] * binomial(p, e);
-      next[static_cast<std::size_t>(p)] = s;
+// u[q] = (p − q)! · <e^{X_g1} … e^{X_gm}, w[q : p]> for every q in [first, p) at once, from the
+// last exponential back: with u_j(q) for the factors j … m, u_j(q) = Σ_e C(p − q, e) u_{j+1}(q + e)
+// over the powers w[q : q+e] = g_j^e (e = 0 included), u_m(q) = [q = p].
+void factor_values(const std::uint8_t* w, int first, int p, const std::vector<std::uint8_t>& g,
+                   std::array<std::int64_t, max_n + 1>& u) {
+  for (int q = first; q <= p; ++q) u[static_cast<std::size_t>(q)] = q == p;
+  for (auto j = g.size(); j-- > 0;) {
+    const std::uint8_t letter = g[j];
+    for (int q = first; q < p; ++q) {  // ascending: u[q + e], e ≥ 1, still u_{j+1}
+      if (w[q] != letter) continue;
+      std::int64_t s = u[static_cast<std::size_t>(q)];
+      for (int e = 1; q + e <= p && w[q + e - 1] == letter; ++e) s += binomial(p - q, e) * u[static_cast<std::size_t>(q + e)];
+      u[static_cast<std::size_t>(q)] = s;
     }
-    f = next;
   }
-  return f[static_cast<std::size_t>(len)];
 }
 
 }  // namespace
@@ -80,8 +78,10 @@ int128 word_coefficients::operator()(const std::uint8_t* w, int n) {
   if (n == previous_n_)
     while (common < n && previous_[static_cast<std::size_t>(common)] == w[common]) ++common;
   std::copy(w, w + n, previous_.begin());
+  if (n != previous_n_) set_log_weights(n);
   previous_n_ = n;
   const int m = static_cast<int>(factors_.size());
+  std::array<std::int64_t, max_n + 1> value;
   for (int p = common + 1; p <= n; ++p) {
     const auto up = static_cast<std::size_t>(p);
     // run_start_[p]: where the run containing w[p−1] begins.
@@ -89,26 +89,29 @@ int128 word_coefficients::operator()(const std::uint8_t* w, int n) {
     // e_[p][k] = p! · Σ over cuts of w[0:p] into k non-empty factors of the product of their values;
     // a factor spanning more runs than there are exponentials vanishes.
     auto& row = e_[up];
-    row.fill(0);
+    std::fill(row.begin(), row.begin() + p + 1, 0);
     int earliest = p;
     for (int r = 0; r < m && earliest > 0; ++r) earliest = run_start_[static_cast<std::size_t>(earliest)];
+    factor_values(w, earliest, p, factors_, value);
     for (int q = earliest; q < p; ++q) {
-      const std::int64_t v = factor_value(w + q, p - q, factors_);
+      const std::int64_t v = value[static_cast<std::size_t>(q)];
       if (v == 0) continue;
       const int128 weight = static_cast<int128>(binomial(p, q)) * v;
       const auto& before = e_[static_cast<std::size_t>(q)];
       for (int k = 1; k <= q + 1; ++k) row[static_cast<std::size_t>(k)] += before[static_cast<std::size_t>(k - 1)] * weight;
     }
   }
-  // log(1 + Y) = Σ_k (−1)^{k+1} Y^k / k, with D_n = n! · lcm: the k-th term carries lcm / k.
+  // log(1 + Y) = Σ_k (−1)^{k+1} Y^k / k
+  int128 z = 0;
+  for (int k = 1; k <= n; ++k) z += e_[static_cast<std::size_t>(n)][static_cast<std::size_t>(k)] * log_weight_[static_cast<std::size_t>(k)];
+  return z;
+}
+
+void word_coefficients::set_log_weights(int n) {
+  // with D_n = n! · lcm(1 … n), the k-th term carries (−1)^{k+1} lcm / k
   int128 l = 1;
   for (int k = 1; k <= n; ++k) l = l / gcd(l, k) * k;
-  int128 z = 0;
-  for (int k = 1; k <= n; ++k) {
-    const int128 term = e_[static_cast<std::size_t>(n)][static_cast<std::size_t>(k)] * (l / k);
-    z = k % 2 ? z + term : z - term;
-  }
-  return z;
+  for (int k = 1; k <= n; ++k) log_weight_[static_cast<std::size_t>(k)] = k % 2 ? l / k : -(l / k);
 }
 
 }  // namespace rotlie::bch

@@ -30,6 +30,8 @@ class word_coefficients {
   int previous_n_ = -1;
   std::array<int, max_n + 1> run_start_{};
   std::array<std::array<int128, max_n + 1>, max_n + 1> e_{};  // e_[p][k]
+  std::array<int128, max_n + 1> log_weight_{};                // of e_[n][k] in z_w · D_n
+  void set_log_weights(int n);
 };
 
 /// Throws std::overflow_error when the bound above exceeds 2^126 for this degree and product.
