@@ -432,6 +432,8 @@ const std::vector<bad_input> cases = {
   {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--T", "-1"}, usage, "--T must be positive"},
   {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--equilibrate", "0"}, usage, "--equilibrate must be positive"},
   {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--equilibrate", "inf"}, usage, "--equilibrate 'inf' is not a finite number"},
+  {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--equilibrate", "1e9"}, usage, "--equilibrate must span 1 to 10⁹ steps of 1 fs, from 0.001 to 1e+06 ps"},
+  {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--equilibrate", "1e-6"}, usage, "--equilibrate must span 1 to 10⁹ steps"},
   {{"md", "--scene", "free-water", "--integrator", "SIER2", "--h", "1", "--equilibrate", "1"}, usage, "--equilibrate applies to the liquid-water scene only"},
   {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--seed", "3"}, usage, "--seed does not apply to the liquid-water scene"},
   {{"md", "--scene", "liquid-water", "--integrator", "VERLET", "--h", "1"}, usage, "unknown integrator 'VERLET'"},

@@ -12,6 +12,7 @@
 #include "rotlie/models/scenes/water_model.hpp"
 #include "rotlie/runs/exclusive_use.hpp"
 #include "rotlie/runs/md_json.hpp"
+#include "rotlie/runs/number_text.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
 #include "rotlie/runs/output_file.hpp"
 #include "../liquid_water_run.hpp"
@@ -41,6 +42,10 @@ scene_result liquid_water_scene_run(const scene_request& request) {
   o.threads = static_cast<int>(integer_in_range(option(request, "--threads"), "--threads", 1, 64));
   o.state_file = option(request, "--state");
   o.equilibration_ps = positive_number(option(request, "--equilibrate"), "--equilibrate");
+  // whole steps of the equilibration's own step, as --T is bounded: never none, never a run without end
+  if (const double steps = o.equilibration_ps * 1000 / o.equilibration_h_fs; !(steps >= 1 && steps <= 1e9))
+    throw bad_input("--equilibrate must span 1 to 10⁹ steps of " + significant_text(o.equilibration_h_fs) + " fs, from " +
+                    significant_text(o.equilibration_h_fs / 1000) + " to " + significant_text(o.equilibration_h_fs * 1e6) + " ps");
   if (o.T_ps * 1000 / o.h_fs < 10) throw bad_input("--T must span at least 10 steps of --h (the fluctuations are rms over a run)");
   if (o.T_ps * 1000 / o.h_fs * o.runs > 1e9) throw bad_input("--T / --h × --runs exceeds 10⁹ steps");
   o.every = trajectory_every(request, std::round(o.T_ps * 1000 / o.h_fs) * o.runs);
