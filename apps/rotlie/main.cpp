@@ -16,6 +16,7 @@
 
 #include "arguments.hpp"
 #include "commands.hpp"
+#include "rotlie/runs/binary_terms.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
 #include "rotlie/runs/scenes.hpp"
 
@@ -323,6 +324,8 @@ subcommand add_binary(CLI::App& app, binary_options& b) {
   cmd->add_option("--h", b.h, "The step in seconds (an adaptive method's first trial step and the spacing of its checks)");
   cmd->add_option("--T", b.T, "Length of the run in seconds, a whole number of steps --h; 0 gives the start's values")->required();
   cmd->add_option("--every", b.every, "The trajectory every K steps from the start, one JSON line each (t, r, v, Q1, Q2, omega1, omega2, energy)");
+  for (const auto& term : rotlie::runs::binary_terms())
+    cmd->add_option("--" + term.name, b.terms[term.name], term.summary + " (" + rotlie::runs::term_syntax(term) + ")");
   cmd->add_flag("--json", b.json, "Machine-readable output on stdout (one line after --every's lines)");
   return {cmd, [&b] { return run_binary(b); }};
 }

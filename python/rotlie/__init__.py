@@ -29,6 +29,7 @@ from ._rotlie import Scheme
 __all__ = [
     "Body", "Scheme", "scheme", "load_table", "solve", "exact_flow", "integrate", "order",
     "remainder", "Remainder", "best", "map_line", "bch", "md", "spin", "SpinResult", "SpinTrajectory", "binary", "BinaryResult", "BinaryTrajectory",
+    "binary_simulation", "BinarySimulation",
     "Result", "MdResult", "MdTrajectory", "OrderResult", "BestResult", "MapLine",
 ]
 __version__ = "0.1.0"
@@ -166,3 +167,4 @@ from ._remainder import Remainder, remainder  # noqa: E402
 from ._commands import best, map_line, bch, md  # noqa: E402
 from ._rotlie import spin, SpinResult, SpinTrajectory  # noqa: E402  (typed in C++: python/src/spin.cpp)
 from ._rotlie import binary, BinaryResult, BinaryTrajectory  # noqa: E402  (typed in C++: python/src/binary.cpp)
+from ._rotlie import binary_simulation, BinarySimulation  # noqa: E402  (python/src/binary_simulation.cpp)

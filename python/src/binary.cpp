@@ -8,6 +8,7 @@
 #include <string>
 
 #include "arguments.hpp"
+#include "binary_keywords.hpp"
 #include "bindings.hpp"
 #include "interruption.hpp"
 #include "rotlie/runs/binary_io.hpp"
@@ -29,42 +30,16 @@ struct binary_object {
   std::string json;  ///< `rotlie binary --json`'s text
 };
 
-// One value or a pair, as the command line's "A" or "A,B".
-std::string pair_argument(const py::handle& value, const char* what) {
-  if (value.is_none()) return "";
-  if (py::isinstance<py::tuple>(value) || py::isinstance<py::list>(value)) {
-    std::string text;
-    for (const auto& x : value) text += (text.empty() ? "" : ",") + number_argument(x, what);
-    return text;
-  }
-  return number_argument(value, what);
-}
-
-std::string optional_number(const py::handle& value, const char* what) { return value.is_none() ? "" : number_argument(value, what); }
-
-std::string optional_text(const py::handle& value, const char* what) {
-  if (value.is_none()) return "";
-  if (!py::isinstance<py::str>(value)) type_error(std::string(what) + " must be text or None");
-  return py::str(value);
-}
-
 std::array<double, 3> vec(const models::vec3<double>& x) { return {x[0], x[1], x[2]}; }
 
 py::array_t<double> array3(const models::vec3<double>& x) { return py::array_t<double>(3, x.data()); }
 
 binary_object binary(const py::object& system, const py::object& primary, const py::object& secondary, const py::object& density,
                      const py::object& mass, int order, const py::object& G, const py::object& separation, const py::object& primary_period,
-                     const py::object& state, const std::string& integrator, const py::object& h, const py::object& T, const py::object& every) {
-  runs::binary_request q;
-  q.system = optional_text(system, "system"), q.primary = optional_text(primary, "primary"), q.secondary = optional_text(secondary, "secondary");
-  q.density = pair_argument(density, "density"), q.mass = pair_argument(mass, "mass"), q.order = std::to_string(order);
-  q.G = number_argument(G, "G"), q.separation = optional_number(separation, "separation");
-  q.primary_period = optional_number(primary_period, "primary_period");
-  if (py::isinstance<py::dict>(state))
-    q.state_text = py::str(py::module_::import("json").attr("dumps")(state));
-  else
-    q.state_file = optional_text(state, "state (a file's path or a dict)");
-  q.integrator = integrator, q.h = optional_number(h, "h"), q.T = number_argument(T, "T"), q.every = every_argument(every);
+                     const py::object& state, const std::string& integrator, const py::object& h, const py::object& T, const py::object& every,
+                     const py::kwargs& terms) {
+  auto q = binary_keywords(system, primary, secondary, density, mass, order, G, separation, primary_period, state, integrator, h, terms, "binary");
+  q.T = number_argument(T, "T"), q.every = every_argument(every);
   auto out = std::make_shared<binary_object>();
   run_symbolic([q, out] {  // a rotor SCHEME:PERM:LABEL is solved symbolically
     const auto setup = runs::binary_setup_of(q);
@@ -120,6 +95,11 @@ void bind_binary(py::module_& m) {
       .def_property_readonly("max_rel_energy_error", [](const binary_object& b) { return b.result.check.max_rel_energy_error; })
       .def_property_readonly("max_rel_angular_momentum_error", [](const binary_object& b) { return b.result.check.max_rel_angular_momentum_error; })
       .def_property_readonly("mutual", [](const binary_object& b) { return field(b, "mutual"); }, "{U, F, M1, M2} at the final state")
+      .def_property_readonly("terms", [](const binary_object& b) {
+        py::dict out;
+        for (const auto& term : b.result.setup.terms) out[py::str(term.first)] = field(b, term.first.c_str());
+        return out;
+      }, "each added force term's values at the final state, by name (as the JSON's fields)")
       .def_property_readonly("trajectory", [](const binary_object& b) -> py::object {
         if (b.trajectory.every <= 0) return py::none();
         return py::cast(b.trajectory);
@@ -132,7 +112,7 @@ void bind_binary(py::module_& m) {
         py::arg("density") = py::none(), py::arg("mass") = py::none(), py::arg("order") = 2, py::arg("G") = "6.67430e-20",
         py::arg("separation") = py::none(), py::arg("primary_period") = py::none(), py::arg("state") = py::none(), py::arg("integrator") = "SIER4",
         py::arg("h") = py::none(), py::arg("T") = 0, py::arg("every") = py::none(),
-        R"(binary(*, system=None, primary=None, secondary=None, density=None, mass=None, order=2, G="6.67430e-20", separation=None,
+        (R"(binary(*, system=None, primary=None, secondary=None, density=None, mass=None, order=2, G="6.67430e-20", separation=None,
        primary_period=None, state=None, integrator="SIER4", h=None, T=0, every=None) -> BinaryResult
 
 Two rigid bodies in mutual gravity (the full two-body problem), as ``rotlie binary`` (docs/binary.md); units km, kg, s.
@@ -141,7 +121,8 @@ or a pair; mass: (M1, M2) in kg; order: 0, 2 or 4; separation (km) with primary_
 state: a dict with r, v, Q1, Q2, omega1, omega2 or a JSON file's path; integrator: SIER2, SIER4, SIER2/X, SIER4/X,
 KEPLER2, KEPLER4, KEPLER2/X, KEPLER4/X, RK4, LGVI, odeint-rkf78[:TOL], odeint-dopri5[:TOL]; h, T: seconds (T a whole
 number of steps; T=0 the start's values); every: a trajectory sample every K steps (BinaryResult.trajectory).
-An untrusted run (BinaryResult.unstable) also raises a UserWarning; bodies that touch raise RuntimeError.)");
+An untrusted run (BinaryResult.unstable) also raises a UserWarning; bodies that touch raise RuntimeError.
+Added force terms, each a keyword (BinaryResult.terms holds their values at the end):)" + term_keywords_doc()).c_str());
 }
 
 }  // namespace rotlie::python

@@ -99,6 +99,7 @@ json binary_json(const binary_result& r) {
   j["max_rel_angular_momentum_error"] = r.check.max_rel_angular_momentum_error;
   j["cpu_s"] = r.cpu_s;
   j["mutual"] = {{"U", r.mutual.U}, {"F", r.mutual.F}, {"M1", r.mutual.M1}, {"M2", r.mutual.M2}};
+  for (const auto& [name, term] : s.terms) j[name] = term->values(r.end.x, r.end.t);
   j["unstable"] = r.check.unstable;
   j["round_off_floor"] = r.check.round_off_floor;
   j["warnings"] = r.check.warnings;
@@ -125,6 +126,7 @@ std::string binary_text(const binary_result& r) {
       << "final separation " << message_number(d) << " km; relative errors: energy " << message_number(r.check.max_rel_energy_error)
       << ", angular momentum " << message_number(r.check.max_rel_angular_momentum_error) << (r.check.unstable ? ": UNSTABLE" : "") << "\n"
       << "CPU " << message_number(r.cpu_s) << " s\n";
+  for (const auto& [name, term] : s.terms) out << name << " at the end: " << term->values(r.end.x, r.end.t).dump() << "\n";
   return out.str();
 }
 

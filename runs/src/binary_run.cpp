@@ -7,14 +7,8 @@
 #include <limits>
 
 #include "rotlie/lie/exact_number.hpp"
-#include "rotlie/models/closed_form_rotors.hpp"
-#include "rotlie/models/composition.hpp"
-#include "rotlie/models/cpu_time.hpp"
 #include "rotlie/models/md_trajectory.hpp"
-#include "rotlie/models/scenes/binary_anchors.hpp"
-#include "rotlie/models/scenes/binary_odeint.hpp"
-#include "rotlie/models/scenes/binary_splitting.hpp"
-#include "rotlie/models/table_rotor.hpp"
+#include "rotlie/runs/binary_simulation.hpp"
 #include "rotlie/runs/binary_state_file.hpp"
 #include "rotlie/runs/body_names.hpp"
 #include "rotlie/runs/md_methods.hpp"
@@ -33,10 +27,6 @@ using schemes::message_number;
 
 constexpr double eps = std::numeric_limits<double>::epsilon();
 constexpr double tolerance_floor_eps = 5;     // an embedded pair cannot meet less (spin_orbit_run.cpp)
-constexpr double round_off_turn_eps = 1000;   // a step that moves the pair by less is lost in round-off
-constexpr double round_off_per_step = 10;     // what a step's roundings can add to a sum, in ε
-constexpr double max_checks = 1e4;            // the conserved quantities' samples per run
-constexpr double adaptive_steps_per_orbit = 1e6;  // an adaptive run's budget (tried steps per mutual orbit)
 constexpr const char* sixth_order_tv = "KahanLi6-TV";  // SIER6, KEPLER6
 
 std::string moments_text(const vec3<double>& I) {
@@ -116,7 +106,11 @@ binary_contact::binary_contact(double time, long at_step)
       t(time),
       step(at_step) {}
 
-models::binary_system<double> binary_setup::system_model() const { return {primary.body, secondary.body, G, order}; }
+models::binary_system<double> binary_setup::system_model() const {
+  models::binary_system<double> sys{primary.body, secondary.body, G, order};
+  for (const auto& term : terms) sys.add_term(term.second);
+  return sys;
+}
 
 binary_setup binary_setup_of(const binary_request& given) {
   binary_request r = given;
@@ -182,6 +176,11 @@ binary_setup binary_setup_of(const binary_request& given) {
       throw bad_input("the orbit's pericentre (" + message_number(pericentre) + " km, e = " + message_number(e) + ") lies within the bodies' inner radii (" +
                       message_number(s.primary.inner_radius + s.secondary.inner_radius) + " km): they collide");
   }
+  for (const auto& [name, text] : r.terms) {
+    const auto* term = binary_term_named(name);
+    if (!term) throw bad_input("'" + one_line(name) + "' is not a force term of binary");
+    s.terms.emplace_back(term->name, term->make(real_numbers(text, "--" + term->name), sys));
+  }
   if (r.integrator.empty()) throw bad_input("--integrator is required");
   s.method = method_named(r.integrator, sys.moments(0), sys.moments(1));
   if (r.T.empty()) throw bad_input("--T is required (seconds; 0 for the start's values)");
@@ -203,162 +202,15 @@ binary_setup binary_setup_of(const binary_request& given) {
   return s;
 }
 
-namespace {
-
-// The conserved quantities, sampled; CPU spent here is not the method's.
-class conservation_watch {
- public:
-  conservation_watch(const models::binary_system<double>& sys, const models::binary_state<double>& start) : sys_(sys) {
-    E0_ = sys.energy(start);
-    L0_ = sys.angular_momentum(start);
-    U_low_ = U_high_ = sys.gravity(start).U;
-    scale_ = std::abs(sys.kinetic_energy(start)) + std::abs(U_low_);
-  }
-
-  double sample(const models::binary_state<double>& x) {
-    const double before = models::thread_cpu_seconds();
-    const double U = sys_.gravity(x).U, E = sys_.kinetic_energy(x) + U;
-    const auto L = sys_.angular_momentum(x);
-    const double dL = models::norm(vec3<double>{L[0] - L0_[0], L[1] - L0_[1], L[2] - L0_[2]}) / norm(L0_);
-    max_dE_ = std::max(max_dE_, std::isfinite(E) ? std::abs(E - E0_) : std::numeric_limits<double>::infinity());
-    max_dL_ = std::max(max_dL_, std::isfinite(dL) ? dL : std::numeric_limits<double>::infinity());
-    U_low_ = std::min(U_low_, U), U_high_ = std::max(U_high_, U);
-    ++samples_;
-    spent_ += models::thread_cpu_seconds() - before;
-    return E;
-  }
-
-  double spent() const { return spent_; }
-
-  binary_check judged(const binary_setup& s) const {
-    binary_check c;
-    c.max_rel_energy_error = max_dE_ / std::abs(E0_);
-    c.max_rel_angular_momentum_error = max_dL_;
-    c.potential_fluctuation = U_high_ - U_low_;
-    const auto sys = s.system_model();
-    double fastest = norm(s.start.v) / norm(s.start.r);
-    for (int b = 0; b < 2; ++b) fastest = std::max(fastest, norm(models::angular_velocity(sys.moments(b), s.start.body[b].G)));
-    c.round_off_floor = s.steps > 0 && fastest * s.h < round_off_turn_eps * eps;
-    if (c.round_off_floor)
-      c.warnings.push_back("one step moves the pair by " + message_number(fastest * s.h / eps) + " ε only: the step's change is lost in round-off (take a larger step)");
-    const double reach = std::max(1000.0, round_off_per_step * static_cast<double>(s.steps)) * eps * scale_;
-    const bool finite = std::isfinite(max_dE_) && std::isfinite(max_dL_);
-    c.unstable = !finite || (!c.round_off_floor && max_dE_ > reach && max_dE_ >= c.potential_fluctuation && s.steps > 0);
-    if (c.unstable)
-      c.warnings.push_back(finite ? "the energy changed by " + message_number(max_dE_) + " J, as much as the mutual potential's own fluctuation (" +
-                                        message_number(c.potential_fluctuation) + " J): the step is beyond the integrator's stable or accurate range; the result cannot be trusted"
-                                  : std::string("the energy or the angular momentum is no longer finite: the run diverged; the result cannot be trusted"));
-    return c;
-  }
-
- private:
-  const models::binary_system<double>& sys_;
-  double E0_, U_low_, U_high_, scale_;
-  vec3<double> L0_;
-  double max_dE_ = 0, max_dL_ = 0, spent_ = 0;
-  long samples_ = 0;
-};
-
-// The stepping loop, whatever the method: contact after every step, the conserved quantities at most
-// max_checks times (and at the end), samples every K steps.
-template <class Step>
-binary_result run_loop(const binary_setup& s, Step&& step, const std::function<void(const binary_sample&)>& sample,
-                       const std::function<void(double)>& progress) {
-  const auto sys = s.system_model();
-  binary_result out;
-  out.setup = s;
-  conservation_watch watch(sys, s.start);
-  auto x = s.start;
-  if (sample && s.every > 0) sample({0.0, x, sys.energy(x)});
-  const long check_every = std::max(1L, static_cast<long>(std::ceil(static_cast<double>(s.steps) / max_checks)));
-  const long progress_every = std::max(1L, s.steps / 100);
-  double sampling = 0;
-  const double begin = models::thread_cpu_seconds();
-  for (long k = 1; k <= s.steps; ++k) {
-    step(x);
-    if (bodies_touch(s.primary, x.body[0].Q, s.secondary, x.body[1].Q, x.r)) throw binary_contact(static_cast<double>(k) * s.h, k);
-    if (k % check_every == 0 || k == s.steps) watch.sample(x);
-    if (progress && k % progress_every == 0) progress(static_cast<double>(k) / static_cast<double>(s.steps));
-    if (sample && s.every > 0 && k % s.every == 0) {
-      const double before = models::thread_cpu_seconds();
-      sample({static_cast<double>(k) * s.h, x, sys.energy(x)});
-      sampling += models::thread_cpu_seconds() - before;
-    }
-  }
-  out.cpu_s = std::max(0.0, models::thread_cpu_seconds() - begin - watch.spent() - sampling);
-  out.end = {s.T, x, sys.energy(x)};
-  out.angular_momentum = sys.angular_momentum(x);
-  out.mutual = sys.gravity(x);
-  out.check = watch.judged(s);
-  return out;
-}
-
-}  // namespace
-
 binary_result binary_run(const binary_setup& s, const std::function<void(const binary_sample&)>& sample, const std::function<void(double)>& progress) {
-  const auto sys = s.system_model();
-  const auto& m = s.method;
-  switch (m.family) {
-    case binary_method::kind::rk4: {
-      const models::binary_rk4<double> rk4(sys);
-      auto r = run_loop(s, [&](models::binary_state<double>& x) { rk4.step(x, s.h); }, sample, progress);
-      r.evaluations = 4 * s.steps;
-      return r;
-    }
-    case binary_method::kind::lgvi: {
-      const models::binary_lgvi<double> lgvi(sys);
-      models::mutual_gravity<double> g;
-      bool valid = false;
-      auto r = run_loop(s, [&](models::binary_state<double>& x) { lgvi.step(x, s.h, g, valid); }, sample, progress);
-      r.evaluations = s.steps + (s.steps > 0 ? 1 : 0);
-      return r;
-    }
-    case binary_method::kind::odeint: {
-      models::binary_odeint<double> ode(sys, m.ode, m.tolerance, s.h > 0 ? s.h : 1.0);
-      const double period = 2 * std::acos(-1.0) * norm(s.start.r) / std::max(norm(s.start.v), std::numeric_limits<double>::min());
-      const double budget = adaptive_steps_per_orbit * (s.T / period + 1);
-      double t = 0;
-      auto r = run_loop(
-          s,
-          [&](models::binary_state<double>& x) {
-            ode.advance(x, t, t + s.h);
-            if (static_cast<double>(ode.steps_tried()) > budget)
-              throw std::runtime_error("the adaptive run used its budget of " + message_number(budget) + " steps by t = " + message_number(t) +
-                                       " s: the tolerance asks for more steps than the run can afford (raise it)");
-          },
-          sample, progress);
-      r.evaluations = ode.evaluations();
-      return r;
-    }
-    case binary_method::kind::splitting:
-      break;
-  }
-  const auto tv = *schemes::reference_scheme(m.splitting.tv_table);
-  const auto drift = m.kepler ? models::binary_drift::kepler : models::binary_drift::straight;
-  const auto with_rotors = [&](auto rotor_of) {
-    using rotor = decltype(rotor_of(0));
-    const models::composition<models::binary_splitting<double, rotor>> method(tv, models::binary_splitting<double, rotor>(sys, rotor_of(0), rotor_of(1), drift));
-    models::binary_split_state<double> state{s.start};
-    auto r = run_loop(
-        s,
-        [&](models::binary_state<double>& x) {
-          state.x = x;
-          method.step(state, s.h);
-          x = state.x;
-        },
-        sample, progress);
-    r.evaluations = static_cast<long>(method.cost()) * s.steps + (s.steps > 0 ? 1 : 0);
-    return r;
-  };
-  if (!m.splitting.table_rotor())
-    return models::with_closed_form_rotor<double>(m.splitting.rotor, [&](auto type) {
-      using R = typename decltype(type)::type;
-      return with_rotors([&](int b) { return R(sys.moments(b)); });
-    });
-  return with_rotors([&](int b) {
-    if (!m.rotor[b]) throw std::logic_error("binary_run: the rotor table was not resolved");
-    return models::table_rotor<double>(*m.rotor[b], sys.moments(b));
-  });
+  binary_setup stepped = s;
+  if (!(stepped.h > 0)) stepped.h = 1;  // T = 0 without a step: nothing is stepped
+  binary_simulation simulation(stepped);
+  simulation.advance(s.steps, sample, progress);
+  auto r = simulation.result();
+  r.setup = s;
+  r.end.t = s.T;
+  return r;
 }
 
 }  // namespace rotlie::runs

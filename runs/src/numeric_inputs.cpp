@@ -41,6 +41,27 @@ std::vector<double> positive_numbers(const std::string& text, const std::string&
   }
 }
 
+double real_number(const std::string& text, const std::string& what) {
+  const auto x = lie::parse_exact_number(text);
+  if (!x) {
+    const auto why = why_not_a_number(text);
+    if (why == "is not a number") throw bad_input(what + " must be a number such as -0.5 or 1/64, got '" + one_line(text) + "'");
+    throw bad_input(what + " '" + one_line(text) + "' " + why);
+  }
+  if (!cln::zerop(*x) && !magnitude_in_range(*x)) throw bad_input(what + " '" + one_line(text) + "' is outside the range " + range_text() + " (or 0)");
+  return cln::double_approx(*x);
+}
+
+std::vector<double> real_numbers(const std::string& text, const std::string& what) {
+  std::vector<double> out;
+  for (std::size_t start = 0;;) {
+    const auto comma = text.find(',', start);
+    out.push_back(real_number(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start), what));
+    if (comma == std::string::npos) return out;
+    start = comma + 1;
+  }
+}
+
 models::vec3<double> initial_momentum(const std::string& text) {
   models::vec3<double> g{};
   std::size_t start = 0;

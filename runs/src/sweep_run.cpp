@@ -39,8 +39,20 @@ std::string fnv1a(const std::string& text) {
 // An option's value as the command line would have it: text as is, a number as JSON writes it.
 std::string option_text(const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
 
+bool known_option(const std::string& key) { return known_options.count(key) > 0 || binary_term_named(key) != nullptr; }
+
+// A term's values: text, a number, or an array of numbers (as the command line's "A,B,…").
+std::string term_text(const json& v) {
+  if (!v.is_array()) return option_text(v);
+  std::string text;
+  for (const auto& x : v) text += (text.empty() ? "" : ",") + option_text(x);
+  return text;
+}
+
 binary_request request_of(const json& j) {
   binary_request r;
+  for (const auto& term : binary_terms())
+    if (j.contains(term.name)) r.terms[term.name] = term_text(j[term.name]);
   const auto take = [&](const char* key, std::string& into) {
     if (j.contains(key)) into = option_text(j[key]);
   };
@@ -77,9 +89,10 @@ sweep_plan plan_sweep(const std::filesystem::path& input) {
     const std::string where = "--in " + printable_path(input) + ", line " + std::to_string(number);
     if (j.is_discarded() || !j.is_object()) throw bad_input(where + ": not a JSON object of binary's options");
     for (const auto& [key, value] : j.items()) {
-      if (!known_options.count(key)) throw bad_input(where + ": '" + one_line(key) + "' is not an option of binary (a sweep takes no --every or --json)");
-      if (!(value.is_string() || value.is_number() || (key == "state" && value.is_object())))
-        throw bad_input(where + ": '" + one_line(key) + "' must be text or a number");
+      if (!known_option(key)) throw bad_input(where + ": '" + one_line(key) + "' is not an option of binary (a sweep takes no --every or --json)");
+      const bool numbers = value.is_array() && binary_term_named(key) && std::all_of(value.begin(), value.end(), [](const json& x) { return x.is_number(); });
+      if (!(value.is_string() || value.is_number() || numbers || (key == "state" && value.is_object())))
+        throw bad_input(where + ": '" + one_line(key) + "' must be text or a number" + (binary_term_named(key) ? " (or an array of numbers)" : ""));
     }
     plan.inputs.push_back(j.dump());
   }

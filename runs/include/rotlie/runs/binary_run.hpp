@@ -12,14 +12,18 @@
 //   RK4, LGVI                                 GUBAS's fixed-step methods (binary_anchors.hpp)
 //   odeint-rkf78[:TOL], odeint-dopri5[:TOL]   Boost.Odeint's adaptive methods (default TOL 1e-12)
 #include <functional>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rotlie/models/md_integrators.hpp"
 #include "rotlie/models/scenes/binary_system.hpp"
 #include "rotlie/models/scenes/spin_orbit_odeint.hpp"
 #include "rotlie/runs/binary_bodies.hpp"
+#include "rotlie/runs/binary_terms.hpp"
 #include "rotlie/schemes/scheme_table.hpp"
 
 namespace rotlie::runs {
@@ -38,6 +42,7 @@ struct binary_request {
   std::string state_text;               ///< the same JSON as text (a sweep's inline start)
   std::string integrator, h, T;         ///< h and T in seconds (h not needed with T = 0)
   std::string every = "0";              ///< a trajectory sample every K steps (0: none)
+  std::map<std::string, std::string> terms;  ///< added force terms by name (binary_terms.hpp): their values as typed
 };
 
 struct binary_method {
@@ -62,7 +67,9 @@ struct binary_setup {
   double h = 0, T = 0;  ///< s (h = T/steps, the step used)
   long steps = 0;
   long every = 0;
+  std::vector<std::pair<std::string, std::shared_ptr<const registered_term>>> terms;  ///< added force terms, by name
 
+  /// The pair with its added terms.
   models::binary_system<double> system_model() const;
 };
 

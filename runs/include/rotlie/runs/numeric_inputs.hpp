@@ -15,6 +15,12 @@ double positive_number(const std::string& text, const std::string& what);
 /// A comma-separated list of such numbers ("2000" or "2000,2500"), each checked as positive_number.
 std::vector<double> positive_numbers(const std::string& text, const std::string& what);
 
+/// A finite number of either sign (zero too), its magnitude at most 1e150; `what` names it.
+double real_number(const std::string& text, const std::string& what);
+
+/// A comma-separated list of such numbers.
+std::vector<double> real_numbers(const std::string& text, const std::string& what);
+
 /// g1,g2,g3 (decimals or rationals), not all zero, |G0| within 1e-150 … 1e150. Throws bad_input.
 models::vec3<double> initial_momentum(const std::string& text);
 

@@ -37,11 +37,12 @@ class binary_rk4 : public binary_system_stepper<T> {
   using binary_system_stepper<T>::binary_system_stepper;
   static constexpr int evaluations_per_step = 4;
 
-  void step(binary_state<T>& x, const T& h) const {
-    const auto k1 = this->system_.derivative(x);
-    const auto k2 = this->system_.derivative(displaced(x, k1, h / 2));
-    const auto k3 = this->system_.derivative(displaced(x, k2, h / 2));
-    const auto k4 = this->system_.derivative(displaced(x, k3, h));
+  /// One step from time t.
+  void step(binary_state<T>& x, const T& h, const T& t = T(0)) const {
+    const auto k1 = this->system_.derivative(x, t);
+    const auto k2 = this->system_.derivative(displaced(x, k1, h / 2), t + h / 2);
+    const auto k3 = this->system_.derivative(displaced(x, k2, h / 2), t + h / 2);
+    const auto k4 = this->system_.derivative(displaced(x, k3, h), t + h);
     x = displaced(x, k1, h / 6);
     x = displaced(x, k2, h / 3);
     x = displaced(x, k3, h / 3);
@@ -55,9 +56,9 @@ class binary_lgvi : public binary_system_stepper<T> {
   using binary_system_stepper<T>::binary_system_stepper;
   static constexpr int evaluations_per_step = 1;
 
-  /// One step; `gravity` holds the forces at x on entry (valid = true) and at the new x on return.
-  void step(binary_state<T>& x, const T& h, mutual_gravity<T>& gravity, bool& valid) const {
-    if (!valid) gravity = this->system_.gravity(x), valid = true;
+  /// One step from time t; `gravity` holds the forces at x on entry (valid = true) and at the new x on return.
+  void step(binary_state<T>& x, const T& h, mutual_gravity<T>& gravity, bool& valid, const T& t = T(0)) const {
+    if (!valid) gravity = this->system_.forces(x, t), valid = true;
     const T mu = this->system_.reduced_mass();
     vec3<T> torque[2];
     mat3<T> turn[2];
@@ -69,7 +70,7 @@ class binary_lgvi : public binary_system_stepper<T> {
     }
     for (std::size_t k = 0; k < 3; ++k) x.r[k] += h * x.v[k] + h * h / (2 * mu) * gravity.F[k];
     for (int i = 0; i < 2; ++i) x.body[i].Q = x.body[i].Q * turn[i];
-    const auto next = this->system_.gravity(x);
+    const auto next = this->system_.forces(x, t + h);
     for (std::size_t k = 0; k < 3; ++k) x.v[k] += h / (2 * mu) * (gravity.F[k] + next.F[k]);
     for (int i = 0; i < 2; ++i) {
       const vec3<T> torque_next = transpose(x.body[i].Q) * (i == 0 ? next.M1 : next.M2);

@@ -52,8 +52,8 @@ class binary_odeint {
   /// Advances x from t to t_next (t is set to t_next).
   void advance(binary_state<T>& x, T& t, const T& t_next) {
     auto y = packed(x);
-    const auto rhs = [this](const binary_ode_state<T>& in, binary_ode_state<T>& out, const T&) {
-      out = packed(system_.derivative(unpacked(in)));
+    const auto rhs = [this](const binary_ode_state<T>& in, binary_ode_state<T>& out, const T& time) {
+      out = packed(system_.derivative(unpacked(in), time));
       ++evaluations_;
     };
     steppers_.advance(rhs, y, t, t_next, dt_, [&] { ++tried_; });

@@ -29,10 +29,12 @@ namespace rotlie::models {
 
 enum class binary_drift { straight, kepler };
 
-/// The state a splitting steps: the pair, and its forces kept for the next kick while valid.
+/// The state a splitting steps: the pair, its time (each free flight advances it; a time-dependent
+/// term kicks at the flight's end), and its forces kept for the next kick while valid.
 template <class T>
 struct binary_split_state {
   binary_state<T> x;
+  T t{};
   mutual_gravity<T> gravity{};
   bool forces_current = false;
 };
@@ -70,11 +72,12 @@ class binary_splitting : public tv_stages<binary_splitting<T, Rotor>, T> {
       Q = Q * half_gap;
       x.body[b].G = transpose(Q) * spin;
     }
+    s.t += t;
     s.forces_current = false;
   }
 
   void kick(const T& t, state& s) const {
-    if (!s.forces_current) s.gravity = system_.gravity(s.x, drift_ == binary_drift::straight), s.forces_current = true;
+    if (!s.forces_current) s.gravity = system_.forces(s.x, s.t, drift_ == binary_drift::straight), s.forces_current = true;
     auto& x = s.x;
     const T k = t / system_.reduced_mass();
     for (std::size_t i = 0; i < 3; ++i) x.v[i] += k * s.gravity.F[i];

@@ -3,12 +3,17 @@
 // velocity v, each body's attitude Q (body → inertial) and angular momentum G = Iω in its body frame
 // (principal axes). H = μv²/2 + Σ Gᵢ·ωᵢ/2 + U(r, Q₁, Q₂) with μ = M₁M₂/(M₁ + M₂), so μ r̈ = F,
 // Ġ = G × ω + Qᵀ M, Q̇ = Q ω̂ (mutual_gravity.hpp's F and M). The total angular momentum
-// r × μv + Q₁G₁ + Q₂G₂ is conserved (r × F + M₁ + M₂ = 0).
+// r × μv + Q₁G₁ + Q₂G₂ is conserved (r × F + M₁ + M₂ = 0). Further force terms (binary_term.hpp)
+// join U, F and M through forces(x, t); without them forces(x, t) is the mutual gravity, bit for bit.
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "rotlie/models/rigid_body.hpp"
+#include "rotlie/models/scenes/binary_term.hpp"
 #include "rotlie/models/scenes/mutual_gravity.hpp"
 #include "rotlie/models/small_matrix.hpp"
 
@@ -52,15 +57,32 @@ class binary_system {
   const T& reduced_mass() const { return mu_; }
   T total_mass() const { return bodies_[0].mass + bodies_[1].mass; }
 
+  /// The mutual gravity alone.
   mutual_gravity<T> gravity(const binary_state<T>& x, bool point_masses = true) const {
     return mutual_gravity_at(bodies_[0], x.body[0].Q, bodies_[1], x.body[1].Q, x.r, G_, order_, point_masses);
+  }
+
+  /// Adds a force term (shared: copies of the system step with the same terms).
+  void add_term(std::shared_ptr<const binary_term<T>> term) { terms_.push_back(std::move(term)); }
+  const std::vector<std::shared_ptr<const binary_term<T>>>& terms() const { return terms_; }
+  bool time_dependent() const {
+    for (const auto& term : terms_)
+      if (term->time_dependent()) return true;
+    return false;
+  }
+
+  /// The mutual gravity and every added term at time t (point_masses false: without −G M₁M₂/r's share).
+  mutual_gravity<T> forces(const binary_state<T>& x, const T& t, bool point_masses = true) const {
+    auto f = gravity(x, point_masses);
+    for (const auto& term : terms_) term->add(x, t, f);
+    return f;
   }
 
   T kinetic_energy(const binary_state<T>& x) const {
     return mu_ * dot(x.v, x.v) / 2 + models::kinetic_energy(moments_[0], x.body[0].G) + models::kinetic_energy(moments_[1], x.body[1].G);
   }
 
-  T energy(const binary_state<T>& x) const { return kinetic_energy(x) + gravity(x).U; }
+  T energy(const binary_state<T>& x, const T& t = T(0)) const { return kinetic_energy(x) + forces(x, t).U; }
 
   /// r × μv + Q₁G₁ + Q₂G₂
   vec3<T> angular_momentum(const binary_state<T>& x) const {
@@ -70,8 +92,8 @@ class binary_system {
   }
 
   /// The time derivative of the state (for the Runge–Kutta anchors): ṙ = v, v̇ = F/μ, Q̇ = Qω̂, Ġ = G × ω + QᵀM.
-  binary_state<T> derivative(const binary_state<T>& x) const {
-    const auto g = gravity(x);
+  binary_state<T> derivative(const binary_state<T>& x, const T& t = T(0)) const {
+    const auto g = forces(x, t);
     binary_state<T> d;
     d.r = x.v;
     for (std::size_t k = 0; k < 3; ++k) d.v[k] = g.F[k] / mu_;
@@ -89,6 +111,7 @@ class binary_system {
   T G_;
   int order_;
   T mu_;
+  std::vector<std::shared_ptr<const binary_term<T>>> terms_;
 };
 
 /// x + c·d, componentwise (the Runge–Kutta stages).

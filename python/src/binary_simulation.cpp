@@ -1,0 +1,91 @@
+// binary_simulation: the full two-body problem as a simulation the user holds (runs::binary_simulation),
+// REBOUND's shape: rotlie.binary_simulation(...) takes rotlie.binary's keywords but T and every, and
+// sim.integrate(t) continues to the absolute time t in whole steps. A Ctrl-C stops it at a step's end
+// (KeyboardInterrupt; the simulation keeps the state reached). copy.copy(sim) saves it whole.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "arguments.hpp"
+#include "binary_keywords.hpp"
+#include "bindings.hpp"
+#include "interruption.hpp"
+#include "rotlie/runs/binary_io.hpp"
+#include "rotlie/runs/binary_simulation.hpp"
+
+namespace rotlie::python {
+namespace {
+
+constexpr long steps_between_polls = 256;  // a Ctrl-C is seen within this many steps
+
+py::array_t<double> state_array(const models::vec3<double>& x) { return py::array_t<double>(3, x.data()); }
+
+std::shared_ptr<runs::binary_simulation> binary_simulation(const py::object& system, const py::object& primary, const py::object& secondary,
+                                                           const py::object& density, const py::object& mass, int order, const py::object& G,
+                                                           const py::object& separation, const py::object& primary_period, const py::object& state,
+                                                           const std::string& integrator, const py::object& h, const py::kwargs& terms) {
+  for (const char* run_only : {"T", "every"})
+    if (terms.contains(run_only))
+      type_error(std::string("binary_simulation() takes no '") + run_only + "': a simulation runs as far as integrate(t) asks");
+  auto q = binary_keywords(system, primary, secondary, density, mass, order, G, separation, primary_period, state, integrator, h, terms,
+                           "binary_simulation");
+  if (q.h.empty()) throw std::invalid_argument("binary_simulation: h (the step in seconds) is required");
+  q.T = "0";
+  std::shared_ptr<runs::binary_simulation> out;
+  run_symbolic([q, &out] { out = std::make_shared<runs::binary_simulation>(runs::binary_setup_of(q)); });  // a rotor may be solved symbolically
+  return out;
+}
+
+void integrate_to(runs::binary_simulation& sim, double t) {
+  if (!std::isfinite(t)) throw std::invalid_argument("integrate: t must be finite (seconds)");
+  if (t < sim.t()) throw std::invalid_argument("integrate: t = " + std::to_string(t) + " s lies before the simulation's time " + std::to_string(sim.t()) + " s");
+  run_cancellable([&](const cancellation& cancel) {
+    const long target = static_cast<long>(std::floor(t / sim.h() + 1e-9));
+    while (sim.steps() < target && !cancel.requested()) sim.advance(std::min(steps_between_polls, target - sim.steps()));
+  });
+}
+
+}  // namespace
+
+void bind_binary_simulation(py::module_& m) {
+  py::class_<runs::binary_simulation, std::shared_ptr<runs::binary_simulation>>(
+      m, "BinarySimulation", "The full two-body problem held by the user: integrate(t) continues to the absolute time t (s) in whole steps")
+      .def("integrate", &integrate_to, py::arg("t"), "Steps on to the absolute time t in seconds (the steps whose end is at or before t)")
+      .def("step", [](runs::binary_simulation& s) { s.step(); }, "One step")
+      .def_property_readonly("t", &runs::binary_simulation::t, "the time, s (steps × h)")
+      .def_property_readonly("h", &runs::binary_simulation::h, "the step, s")
+      .def_property_readonly("steps", &runs::binary_simulation::steps, "the steps taken")
+      .def_property_readonly("r", [](const runs::binary_simulation& s) { return state_array(s.state().r); }, "x2 - x1, km, inertial")
+      .def_property_readonly("v", [](const runs::binary_simulation& s) { return state_array(s.state().v); }, "km/s")
+      .def_property_readonly("Q1", [](const runs::binary_simulation& s) { return matrix(s.state().body[0].Q.a); }, "columns the primary's axes")
+      .def_property_readonly("Q2", [](const runs::binary_simulation& s) { return matrix(s.state().body[1].Q.a); }, "columns the secondary's axes")
+      .def_property_readonly("omega1", [](const runs::binary_simulation& s) { return state_array(models::angular_velocity(s.system().moments(0), s.state().body[0].G)); },
+                             "rad/s, body frame")
+      .def_property_readonly("omega2", [](const runs::binary_simulation& s) { return state_array(models::angular_velocity(s.system().moments(1), s.state().body[1].G)); },
+                             "rad/s, body frame")
+      .def_property_readonly("energy", &runs::binary_simulation::energy, "kg km2 s-2 (with the added terms' potentials at t)")
+      .def_property_readonly("angular_momentum", [](const runs::binary_simulation& s) { return state_array(s.system().angular_momentum(s.state())); },
+                             "r x mu v + Q1 G1 + Q2 G2, kg km2 s-1, inertial")
+      .def("to_dict", [](const runs::binary_simulation& s) { return py::module_::import("json").attr("loads")(runs::binary_json(s.result()).dump()); },
+           "The run so far as `rotlie binary --json` writes it (T the time reached)")
+      .def("__copy__", [](const runs::binary_simulation& s) { return std::make_shared<runs::binary_simulation>(s); })
+      .def("__deepcopy__", [](const runs::binary_simulation& s, const py::dict&) { return std::make_shared<runs::binary_simulation>(s); }, py::arg("memo"))
+      .def("__repr__", [](const runs::binary_simulation& s) {
+        return "<BinarySimulation " + s.setup().method.name + ", t = " + std::to_string(s.t()) + " s, " + std::to_string(s.steps()) + " steps>";
+      });
+  m.def("binary_simulation", &binary_simulation, py::kw_only(), py::arg("system") = py::none(), py::arg("primary") = py::none(),
+        py::arg("secondary") = py::none(), py::arg("density") = py::none(), py::arg("mass") = py::none(), py::arg("order") = 2,
+        py::arg("G") = "6.67430e-20", py::arg("separation") = py::none(), py::arg("primary_period") = py::none(), py::arg("state") = py::none(),
+        py::arg("integrator") = "SIER4", py::arg("h") = py::none(),
+        (R"(binary_simulation(*, system=None, primary=None, secondary=None, density=None, mass=None, order=2, G="6.67430e-20",
+                  separation=None, primary_period=None, state=None, integrator="SIER4", h=None, **terms) -> BinarySimulation
+
+The full two-body problem as a simulation you hold: rotlie.binary's keywords but T and every (h required). sim.integrate(t)
+steps on to the absolute time t; integrate(T/2) then integrate(T) equals one run to T bit for bit. copy.copy(sim) saves
+it whole. Added force terms, each a keyword:)" + term_keywords_doc()).c_str());
+}
+
+}  // namespace rotlie::python

@@ -1,0 +1,72 @@
+"""rotlie.binary_simulation: a simulation the user holds. integrate(T/2) then integrate(T) equals one
+run to T (rotlie.binary) bit for bit; a copy saves it; Ctrl-C stops it at a step's end; its keywords
+and refusals."""
+import copy
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import rotlie
+
+
+@pytest.mark.parametrize("integrator,order", [("SIER4", 2), ("KEPLER4", 4), ("RK4", 2), ("LGVI", 4), ("odeint-rkf78:1e-10", 2)])
+def test_two_calls_are_one_run_bit_for_bit(integrator, order):
+    whole = rotlie.binary(system="didymos", integrator=integrator, order=order, h=120, T=43200)
+    sim = rotlie.binary_simulation(system="didymos", integrator=integrator, order=order, h=120)
+    assert isinstance(sim, rotlie.BinarySimulation) and sim.t == 0 and sim.steps == 0
+    sim.integrate(21600)
+    assert sim.t == 21600 and sim.steps == 180
+    sim.integrate(43200)
+    assert sim.t == whole.t and sim.steps == whole.steps
+    for key in ("r", "v", "Q1", "Q2", "omega1", "omega2"):
+        assert np.array_equal(getattr(sim, key), getattr(whole, key)), key
+    assert sim.energy == whole.energy
+    assert np.array_equal(sim.angular_momentum, whole.angular_momentum)
+    # the errors are maxima over samples of the conserved quantities: the run samples every step of its
+    # 360, the open-ended simulation every 100 steps; every other field is the same
+    d, w = sim.to_dict(), whole.to_dict()
+    for key in ("cpu_s", "max_rel_energy_error", "max_rel_angular_momentum_error"):
+        d.pop(key), w.pop(key)
+    assert d == w
+
+
+def test_a_copy_saves_the_simulation():
+    sim = rotlie.binary_simulation(system="didymos", integrator="LGVI", order=4, h=120)
+    sim.integrate(3600)
+    saved = copy.copy(sim)
+    sim.integrate(7200)
+    end = sim.r.copy()
+    assert saved.t == 3600
+    saved.integrate(7200)
+    assert np.array_equal(saved.r, end)
+
+
+def test_times_and_refusals():
+    sim = rotlie.binary_simulation(system="didymos", h=120)
+    sim.integrate(1000)  # the steps that end at or before 1000 s
+    assert sim.steps == 8 and sim.t == 960
+    with pytest.raises(ValueError, match="before the simulation's time"):
+        sim.integrate(10)
+    with pytest.raises(TypeError, match="takes no 'T'"):
+        rotlie.binary_simulation(system="didymos", h=120, T=100)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'sunn'"):
+        rotlie.binary_simulation(system="didymos", h=120, sunn=1)
+    with pytest.raises(ValueError, match="h .* is required"):
+        rotlie.binary_simulation(system="didymos")
+
+
+def test_ctrl_c_stops_at_a_steps_end_and_keeps_the_state():
+    sim = rotlie.binary_simulation(system="didymos", integrator="SIER4", h=1)
+    timer = threading.Timer(0.5, lambda: signal.raise_signal(signal.SIGINT))
+    timer.start()
+    started = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        sim.integrate(3e7)
+    assert time.monotonic() - started < 5
+    reached = sim.steps
+    assert 0 < reached < 3e7 and sim.t == reached * 1.0
+    sim.integrate(sim.t + 10)  # it continues from there
+    assert sim.steps == reached + 10
