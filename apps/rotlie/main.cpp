@@ -327,6 +327,7 @@ subcommand add_binary(CLI::App& app, binary_options& b) {
   for (const auto& term : rotlie::runs::binary_terms())
     cmd->add_option("--" + term.name, b.terms[term.name], term.summary + " (" + rotlie::runs::term_syntax(term) + ")");
   cmd->add_flag("--json", b.json, "Machine-readable output on stdout (one line after --every's lines)");
+  cmd->add_flag("--force", b.force, "Run values that look like unit mistakes (G in SI, a density in g/cm3, sizes in metres, a period in seconds)");
   return {cmd, [&b] { return run_binary(b); }};
 }
 

@@ -26,11 +26,11 @@ py::array_t<double> state_array(const models::vec3<double>& x) { return py::arra
 std::shared_ptr<runs::binary_simulation> binary_simulation(const py::object& system, const py::object& primary, const py::object& secondary,
                                                            const py::object& density, const py::object& mass, int order, const py::object& G,
                                                            const py::object& separation, const py::object& primary_period, const py::object& state,
-                                                           const std::string& integrator, const py::object& h, const py::kwargs& terms) {
+                                                           const std::string& integrator, const py::object& h, bool force, const py::kwargs& terms) {
   for (const char* run_only : {"T", "every"})
     if (terms.contains(run_only))
       type_error(std::string("binary_simulation() takes no '") + run_only + "': a simulation runs as far as integrate(t) asks");
-  auto q = binary_keywords(system, primary, secondary, density, mass, order, G, separation, primary_period, state, integrator, h, terms,
+  auto q = binary_keywords(system, primary, secondary, density, mass, order, G, separation, primary_period, state, integrator, h, force, terms,
                            "binary_simulation");
   if (q.h.empty()) throw std::invalid_argument("binary_simulation: h (the step in seconds) is required");
   q.T = "0";
@@ -79,9 +79,9 @@ void bind_binary_simulation(py::module_& m) {
   m.def("binary_simulation", &binary_simulation, py::kw_only(), py::arg("system") = py::none(), py::arg("primary") = py::none(),
         py::arg("secondary") = py::none(), py::arg("density") = py::none(), py::arg("mass") = py::none(), py::arg("order") = 2,
         py::arg("G") = "6.67430e-20", py::arg("separation") = py::none(), py::arg("primary_period") = py::none(), py::arg("state") = py::none(),
-        py::arg("integrator") = "SIER4", py::arg("h") = py::none(),
+        py::arg("integrator") = "SIER4", py::arg("h") = py::none(), py::arg("force") = false,
         (R"(binary_simulation(*, system=None, primary=None, secondary=None, density=None, mass=None, order=2, G="6.67430e-20",
-                  separation=None, primary_period=None, state=None, integrator="SIER4", h=None, **terms) -> BinarySimulation
+                  separation=None, primary_period=None, state=None, integrator="SIER4", h=None, force=False, **terms) -> BinarySimulation
 
 The full two-body problem as a simulation you hold: rotlie.binary's keywords but T and every (h required). sim.integrate(t)
 steps on to the absolute time t; integrate(T/2) then integrate(T) equals one run to T bit for bit. copy.copy(sim) saves

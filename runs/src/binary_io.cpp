@@ -76,6 +76,22 @@ mat3<double> rotation_field(const json& j, const std::string& key, const std::st
   return Q;
 }
 
+// The start in the units a user checks by eye: km, m/s, hours, kg/m³.
+std::string start_text(const binary_setup& s, const models::binary_system<double>& sys) {
+  using schemes::message_number;
+  const double full_turn = 2 * std::acos(-1.0);
+  std::ostringstream out;
+  out << "start: |r| = " << message_number(std::sqrt(models::dot(s.start.r, s.start.r))) << " km, |v| = "
+      << message_number(1000 * std::sqrt(models::dot(s.start.v, s.start.v))) << " m/s, spin periods";
+  for (int b = 0; b < 2; ++b) {
+    const auto w = models::angular_velocity(sys.moments(b), s.start.body[b].G);
+    const double rate = std::sqrt(models::dot(w, w));
+    out << (b ? " and " : " ") << (rate > 0 ? message_number(full_turn / rate / 3600) + " h" : std::string("none"));
+  }
+  out << ", densities " << message_number(s.primary.density) << " and " << message_number(s.secondary.density) << " kg/m3\n";
+  return out.str();
+}
+
 }  // namespace
 
 json binary_json(const binary_result& r) {
@@ -121,7 +137,7 @@ std::string binary_text(const binary_result& r) {
   std::ostringstream out;
   out << "binary" << (s.system.empty() ? "" : " " + s.system) << ": " << s.primary.spec << " (" << message_number(sys.body(0).mass) << " kg) and "
       << s.secondary.spec << " (" << message_number(sys.body(1).mass) << " kg), order " << s.order << "\n"
-      << s.method.name << ", h = " << message_number(s.h) << " s, T = " << message_number(s.T) << " s (" << s.steps << " steps, " << r.evaluations
+      << start_text(s, sys) << s.method.name << ", h = " << message_number(s.h) << " s, T = " << message_number(s.T) << " s (" << s.steps << " steps, " << r.evaluations
       << " gravity evaluations)\n"
       << "final separation " << message_number(d) << " km; relative errors: energy " << message_number(r.check.max_rel_energy_error)
       << ", angular momentum " << message_number(r.check.max_rel_angular_momentum_error) << (r.check.unstable ? ": UNSTABLE" : "") << "\n"

@@ -10,6 +10,7 @@
 #include "rotlie/models/md_trajectory.hpp"
 #include "rotlie/runs/binary_simulation.hpp"
 #include "rotlie/runs/binary_state_file.hpp"
+#include "rotlie/runs/binary_units.hpp"
 #include "rotlie/runs/body_names.hpp"
 #include "rotlie/runs/md_methods.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
@@ -133,6 +134,8 @@ binary_setup binary_setup_of(const binary_request& given) {
   if (!r.density.empty()) {
     const auto rho = positive_numbers(r.density, "--density");
     if (rho.size() > 2) throw bad_input("--density takes one value (both bodies) or two, got '" + one_line(r.density) + "'");
+    if (!r.force)
+      for (const double x : rho) check_density_units(x, "--density");
     s.primary = with_density(s.primary, rho[0]);
     s.secondary = with_density(s.secondary, rho.back());
   } else {
@@ -144,6 +147,7 @@ binary_setup binary_setup_of(const binary_request& given) {
   s.order = static_cast<int>(integer_in_range(r.order, "--order", 0, 4));
   if (s.order % 2) throw bad_input("--order must be 0, 2 or 4, got '" + one_line(r.order) + "'");
   s.G = positive_number(r.G, "--G");
+  if (!r.force) check_G_units(s.G, r.G);
   const auto sys = s.system_model();
   if (!r.state_file.empty() && !r.state_text.empty()) throw bad_input("the state is given twice (a file and inline)");
   if ((!r.state_file.empty() || !r.state_text.empty()) && !r.separation.empty()) throw bad_input("--state and --separation exclude each other: give one");
@@ -153,7 +157,10 @@ binary_setup binary_setup_of(const binary_request& given) {
     s.start = read_binary_state(r.state_file, sys);
   } else if (!r.separation.empty()) {
     const double R = positive_number(r.separation, "--separation");
-    const double spin = r.primary_period.empty() ? 0 : 2 * std::acos(-1.0) / (3600 * positive_number(r.primary_period, "--primary-period"));
+    const double period = r.primary_period.empty() ? 0 : positive_number(r.primary_period, "--primary-period");
+    if (!r.force && period > 0) check_period_units(period, "--primary-period");
+    const double spin = period > 0 ? 2 * std::acos(-1.0) / (3600 * period) : 0;
+    if (!r.force) check_size_units(s.primary, s.secondary, R, "--separation " + one_line(r.separation) + " km");
     if (R <= s.primary.inner_radius + s.secondary.inner_radius || bodies_touch(s.primary, models::mat3<double>::identity(), s.secondary, models::mat3<double>::identity(), {R, 0, 0}))
       throw bad_input("--separation " + one_line(r.separation) + " km: the bodies overlap (their bounding radii are " + message_number(s.primary.bounding_radius) +
                       " and " + message_number(s.secondary.bounding_radius) + " km)");
@@ -162,6 +169,7 @@ binary_setup binary_setup_of(const binary_request& given) {
     throw bad_input("the start is required: --separation R (km) or --state FILE");
   }
   if (!r.primary_period.empty() && r.separation.empty()) throw bad_input("--primary-period goes with --separation (a --state file gives omega1)");
+  if (!r.force && r.separation.empty()) check_size_units(s.primary, s.secondary, norm(s.start.r), "--state (|r| = " + message_number(norm(s.start.r)) + " km)");
   // the start: apart, and on an orbit that does not surely collide
   if (bodies_touch(s.primary, s.start.body[0].Q, s.secondary, s.start.body[1].Q, s.start.r))
     throw bad_input("--state: the bodies overlap at the start (|r| = " + message_number(norm(s.start.r)) + " km)");

@@ -186,8 +186,8 @@ class binary_watch {
     const bool conserved = !sys.time_dependent();
     c.unstable = !finite || (conserved && !c.round_off_floor && max_dE_ > reach && max_dE_ >= c.potential_fluctuation && s.steps > 0);
     if (c.unstable)
-      c.warnings.push_back(finite ? "the energy changed by " + message_number(max_dE_) + " J, as much as the mutual potential's own fluctuation (" +
-                                        message_number(c.potential_fluctuation) + " J): the step is beyond the integrator's stable or accurate range; the result cannot be trusted"
+      c.warnings.push_back(finite ? "the energy changed by " + message_number(max_dE_) + " kg km2 s-2, as much as the mutual potential's own fluctuation (" +
+                                        message_number(c.potential_fluctuation) + " kg km2 s-2): the step is beyond the integrator's stable or accurate range; the result cannot be trusted"
                                   : std::string("the energy or the angular momentum is no longer finite: the run diverged; the result cannot be trusted"));
     return c;
   }

@@ -6,7 +6,9 @@
 
 #include "cli_support.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -119,6 +121,38 @@ BOOST_AUTO_TEST_CASE(bodies_that_touch_stop_the_run_and_say_when) {
   BOOST_TEST(r.status == 1, r.err);
   BOOST_TEST(r.err.find("the bodies touch at t = ") != std::string::npos, r.err);
   BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+}
+
+// Issue 43: values that look like unit mistakes are refused in one line naming the likely unit (exit 2),
+// and run as given with --force.
+BOOST_AUTO_TEST_CASE(unit_mistakes_are_refused_naming_the_likely_unit) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"--system didymos --G 6.674e-11", "SI's value in m3 kg-1 s-2"},
+      {"--system didymos --density 2.1", "a density in g/cm3?"},
+      {"--primary ellipsoid:400,390,350 --secondary ellipsoid:90,80,70 --density 2000 --separation 1.2", "sizes in metres?"},
+      {"--system didymos --primary-period 0.005", "periods are in hours"}};
+  for (const auto& [args, unit] : cases) {
+    const auto r = run("binary " + args + " --integrator SIER4 --h 60 --T 600");
+    BOOST_TEST(r.status == 2, args << ": " << r.err);
+    BOOST_TEST(r.err.find(unit) != std::string::npos, r.err);
+    BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, r.err);
+  }
+  const auto forced = binary_json("--system didymos --density 2.1 --force --integrator SIER4 --h 60 --T 600");
+  BOOST_TEST(forced["densities"][0].get<double>() == 2.1);
+}
+
+// The Sun (issue 43's contract): its values join the JSON; at M0 = 0 the barycentre is at perihelion,
+// so |S| = a (1 − e) AU.
+BOOST_AUTO_TEST_CASE(the_sun_joins_the_json) {
+  const auto j = binary_json(didymos + " --integrator KEPLER4 --h 600 --T 0 --sun 1.64,0.38,3.4,73.2,319.3,0");
+  BOOST_TEST_REQUIRE(j.contains("sun"));
+  double S = 0;
+  for (std::size_t k = 0; k < 3; ++k) S += std::pow(j["sun"]["position"][k].get<double>(), 2);
+  BOOST_TEST(std::abs(std::sqrt(S) / (1.64 * 0.62 * 149597870.7) - 1) < 1e-14);
+  for (const char* key : {"acceleration", "M1", "M2"}) BOOST_TEST(j["sun"][key].size() == 3u);
+  const auto r = run("binary " + didymos + " --integrator SIER4 --h 60 --T 600 --sun 1,1.5,0,0,0,0");
+  BOOST_TEST(r.status == 2, r.err);
+  BOOST_TEST(r.err.find("--sun: the eccentricity must be in [0, 1)") != std::string::npos, r.err);
 }
 
 BOOST_AUTO_TEST_SUITE_END()  // binary_cli_test

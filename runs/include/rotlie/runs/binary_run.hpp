@@ -43,6 +43,7 @@ struct binary_request {
   std::string integrator, h, T;         ///< h and T in seconds (h not needed with T = 0)
   std::string every = "0";              ///< a trajectory sample every K steps (0: none)
   std::map<std::string, std::string> terms;  ///< added force terms by name (binary_terms.hpp): their values as typed
+  bool force = false;                        ///< run values that look like unit mistakes (binary_units.hpp)
 };
 
 struct binary_method {
@@ -90,7 +91,7 @@ struct binary_sample {
 /// fluctuation along the run (as md's dH/dV ≥ 100 %) beyond round-off, or a value is not finite.
 struct binary_check {
   double max_rel_energy_error = 0, max_rel_angular_momentum_error = 0;
-  double potential_fluctuation = 0;  ///< max − min of U over the samples (J)
+  double potential_fluctuation = 0;  ///< max − min of U over the samples (kg km² s⁻²)
   bool unstable = false;
   bool round_off_floor = false;  ///< a step moves the pair by less than 1000 ε: lost in round-off
   std::vector<std::string> warnings;
