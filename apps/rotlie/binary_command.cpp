@@ -14,7 +14,7 @@ int run_binary(const binary_options& o) {
   request.system = o.system, request.primary = o.primary, request.secondary = o.secondary, request.density = o.density, request.mass = o.mass;
   request.order = o.order, request.G = o.G, request.separation = o.separation, request.primary_period = o.primary_period;
   request.state_file = o.state, request.integrator = o.integrator, request.h = o.h, request.T = o.T, request.every = o.every;
-  request.force = o.force;
+  request.force = o.force, request.impulse = o.impulse, request.observe = o.observe;
   for (const auto& [name, text] : o.terms)
     if (!text.empty()) request.terms[name] = text;
   const auto setup = runs::binary_setup_of(request);

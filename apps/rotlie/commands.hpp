@@ -135,7 +135,8 @@ struct binary_options {
   std::string system, primary, secondary, density, mass, order = "2", G = "6.67430e-20", separation, primary_period, state, integrator, h, T,
       every = "0";
   std::map<std::string, std::string> terms;  ///< --NAME of each registered force term (runs/binary_terms.hpp)
-  bool json = false, force = false;
+  std::string impulse;
+  bool json = false, force = false, observe = false;
 };
 int run_binary(const binary_options& options);
 

@@ -327,6 +327,10 @@ subcommand add_binary(CLI::App& app, binary_options& b) {
   for (const auto& term : rotlie::runs::binary_terms())
     cmd->add_option("--" + term.name, b.terms[term.name], term.summary + " (" + rotlie::runs::term_syntax(term) + ")");
   cmd->add_flag("--json", b.json, "Machine-readable output on stdout (one line after --every's lines)");
+  cmd->add_option("--impulse", b.impulse, "An impulse on one body at the start: BODY:dx,dy,dz (mm/s, inertial) or BODY:beta=B,m=KG,U=KM_S "
+                                          "(DART's form: beta m U / M against the body's orbital motion); BODY primary or secondary");
+  cmd->add_flag("--observe", b.observe, "Read off every step: the mean orbit period, the secondary's libration (amplitude, mean, period), both spin "
+                                        "periods and the osculating elements at the end (the JSON's observables)");
   cmd->add_flag("--force", b.force, "Run values that look like unit mistakes (G in SI, a density in g/cm3, sizes in metres, a period in seconds)");
   return {cmd, [&b] { return run_binary(b); }};
 }

@@ -37,8 +37,10 @@ py::array_t<double> array3(const models::vec3<double>& x) { return py::array_t<d
 binary_object binary(const py::object& system, const py::object& primary, const py::object& secondary, const py::object& density,
                      const py::object& mass, int order, const py::object& G, const py::object& separation, const py::object& primary_period,
                      const py::object& state, const std::string& integrator, const py::object& h, const py::object& T, const py::object& every,
-                     bool force, const py::kwargs& terms) {
-  auto q = binary_keywords(system, primary, secondary, density, mass, order, G, separation, primary_period, state, integrator, h, force, terms, "binary");
+                     const py::object& impulse, bool observe, bool force, const py::kwargs& terms) {
+  auto q = binary_keywords(system, primary, secondary, density, mass, order, G, separation, primary_period, state, integrator, h, impulse, force, terms,
+                           "binary");
+  q.observe = observe;
   q.T = number_argument(T, "T"), q.every = every_argument(every);
   auto out = std::make_shared<binary_object>();
   run_symbolic([q, out] {  // a rotor SCHEME:PERM:LABEL is solved symbolically
@@ -95,6 +97,10 @@ void bind_binary(py::module_& m) {
       .def_property_readonly("max_rel_energy_error", [](const binary_object& b) { return b.result.check.max_rel_energy_error; })
       .def_property_readonly("max_rel_angular_momentum_error", [](const binary_object& b) { return b.result.check.max_rel_angular_momentum_error; })
       .def_property_readonly("mutual", [](const binary_object& b) { return field(b, "mutual"); }, "{U, F, M1, M2} at the final state")
+      .def_property_readonly("observables", [](const binary_object& b) -> py::object {
+        if (!b.result.observables) return py::none();
+        return field(b, "observables");
+      }, "with observe=True: orbit_period_h, libration_amplitude_deg, libration_mean_deg, libration_period_h, spin_periods_h, separation_km, osculating")
       .def_property_readonly("terms", [](const binary_object& b) {
         py::dict out;
         for (const auto& term : b.result.setup.terms) out[py::str(term.first)] = field(b, term.first.c_str());
@@ -111,9 +117,10 @@ void bind_binary(py::module_& m) {
   m.def("binary", &binary, py::kw_only(), py::arg("system") = py::none(), py::arg("primary") = py::none(), py::arg("secondary") = py::none(),
         py::arg("density") = py::none(), py::arg("mass") = py::none(), py::arg("order") = 2, py::arg("G") = "6.67430e-20",
         py::arg("separation") = py::none(), py::arg("primary_period") = py::none(), py::arg("state") = py::none(), py::arg("integrator") = "SIER4",
-        py::arg("h") = py::none(), py::arg("T") = 0, py::arg("every") = py::none(), py::arg("force") = false,
+        py::arg("h") = py::none(), py::arg("T") = 0, py::arg("every") = py::none(), py::arg("impulse") = py::none(),
+        py::arg("observe") = false, py::arg("force") = false,
         (R"(binary(*, system=None, primary=None, secondary=None, density=None, mass=None, order=2, G="6.67430e-20", separation=None,
-       primary_period=None, state=None, integrator="SIER4", h=None, T=0, every=None, force=False, **terms) -> BinaryResult
+       primary_period=None, state=None, integrator="SIER4", h=None, T=0, every=None, impulse=None, observe=False, force=False, **terms) -> BinaryResult
 
 Two rigid bodies in mutual gravity (the full two-body problem), as ``rotlie binary`` (docs/binary.md); units km, kg, s.
 system: "didymos" or None; primary, secondary: "ellipsoid:a,b,c" (km) or "polyhedron:FILE"; density: kg/m3, one value
@@ -121,6 +128,8 @@ or a pair; mass: (M1, M2) in kg; order: 0, 2 or 4; separation (km) with primary_
 state: a dict with r, v, Q1, Q2, omega1, omega2 or a JSON file's path; integrator: SIER2, SIER4, SIER2/X, SIER4/X,
 KEPLER2, KEPLER4, KEPLER2/X, KEPLER4/X, RK4, LGVI, odeint-rkf78[:TOL], odeint-dopri5[:TOL]; h, T: seconds (T a whole
 number of steps; T=0 the start's values); every: a trajectory sample every K steps (BinaryResult.trajectory).
+impulse: "BODY:dx,dy,dz" (mm/s) or "BODY:beta=B,m=KG,U=KM_S" at the start; observe=True reads off every step the mean
+orbit period, the libration, the spin periods and the osculating elements (BinaryResult.observables).
 force=True runs values that look like unit mistakes (G in SI, a density in g/cm3, sizes in metres, a period in
 seconds), which are otherwise refused. An untrusted run (BinaryResult.unstable) also raises a UserWarning; bodies that touch raise RuntimeError.
 Added force terms, each a keyword (BinaryResult.terms holds their values at the end):)" + term_keywords_doc()).c_str());

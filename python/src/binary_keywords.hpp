@@ -35,7 +35,8 @@ inline std::string optional_text(const py::handle& value, const char* what) {
 inline runs::binary_request binary_keywords(const py::object& system, const py::object& primary, const py::object& secondary, const py::object& density,
                                             const py::object& mass, int order, const py::object& G, const py::object& separation,
                                             const py::object& primary_period, const py::object& state, const std::string& integrator,
-                                            const py::object& h, bool force, const py::dict& terms, const char* function) {
+                                            const py::object& h, const py::object& impulse, bool force, const py::dict& terms,
+                                            const char* function) {
   runs::binary_request q;
   q.system = optional_text(system, "system"), q.primary = optional_text(primary, "primary"), q.secondary = optional_text(secondary, "secondary");
   q.density = numbers_argument(density, "density"), q.mass = numbers_argument(mass, "mass"), q.order = std::to_string(order);
@@ -45,7 +46,7 @@ inline runs::binary_request binary_keywords(const py::object& system, const py::
     q.state_text = py::str(py::module_::import("json").attr("dumps")(state));
   else
     q.state_file = optional_text(state, "state (a file's path or a dict)");
-  q.integrator = integrator, q.h = optional_number(h, "h"), q.force = force;
+  q.integrator = integrator, q.h = optional_number(h, "h"), q.force = force, q.impulse = optional_text(impulse, "impulse");
   for (const auto& [key, value] : terms) {
     const std::string name = py::str(key);
     if (!runs::binary_term_named(name)) type_error(std::string(function) + "() got an unexpected keyword argument '" + name + "'");

@@ -26,11 +26,12 @@ py::array_t<double> state_array(const models::vec3<double>& x) { return py::arra
 std::shared_ptr<runs::binary_simulation> binary_simulation(const py::object& system, const py::object& primary, const py::object& secondary,
                                                            const py::object& density, const py::object& mass, int order, const py::object& G,
                                                            const py::object& separation, const py::object& primary_period, const py::object& state,
-                                                           const std::string& integrator, const py::object& h, bool force, const py::kwargs& terms) {
+                                                           const std::string& integrator, const py::object& h, const py::object& impulse, bool force,
+                                                           const py::kwargs& terms) {
   for (const char* run_only : {"T", "every"})
     if (terms.contains(run_only))
       type_error(std::string("binary_simulation() takes no '") + run_only + "': a simulation runs as far as integrate(t) asks");
-  auto q = binary_keywords(system, primary, secondary, density, mass, order, G, separation, primary_period, state, integrator, h, force, terms,
+  auto q = binary_keywords(system, primary, secondary, density, mass, order, G, separation, primary_period, state, integrator, h, impulse, force, terms,
                            "binary_simulation");
   if (q.h.empty()) throw std::invalid_argument("binary_simulation: h (the step in seconds) is required");
   q.T = "0";
@@ -67,6 +68,17 @@ void bind_binary_simulation(py::module_& m) {
       .def_property_readonly("omega2", [](const runs::binary_simulation& s) { return state_array(models::angular_velocity(s.system().moments(1), s.state().body[1].G)); },
                              "rad/s, body frame")
       .def_property_readonly("energy", &runs::binary_simulation::energy, "kg km2 s-2 (with the added terms' potentials at t)")
+      .def_property_readonly("osculating", [](const runs::binary_simulation& s) {
+        const auto o = runs::osculating_elements(s.state(), s.system().G() * s.system().total_mass());
+        py::dict d;
+        d["a_km"] = o.a_km, d["e"] = o.e, d["i_deg"] = o.i_deg, d["period_h"] = o.period_h;
+        return d;
+      }, "the mutual orbit's osculating elements now: a_km, e, i_deg, period_h")
+      .def_property_readonly("libration_angle", [](const runs::binary_simulation& s) { return runs::libration_angle(s.state()); },
+                             "the secondary's long axis against the line of centres now, rad")
+      .def_property_readonly("spin_periods_h", [](const runs::binary_simulation& s) {
+        return py::make_tuple(runs::spin_period_h(s.system(), s.state(), 0), runs::spin_period_h(s.system(), s.state(), 1));
+      }, "both bodies' spin periods now, hours")
       .def_property_readonly("angular_momentum", [](const runs::binary_simulation& s) { return state_array(s.system().angular_momentum(s.state())); },
                              "r x mu v + Q1 G1 + Q2 G2, kg km2 s-1, inertial")
       .def("to_dict", [](const runs::binary_simulation& s) { return py::module_::import("json").attr("loads")(runs::binary_json(s.result()).dump()); },
@@ -79,9 +91,9 @@ void bind_binary_simulation(py::module_& m) {
   m.def("binary_simulation", &binary_simulation, py::kw_only(), py::arg("system") = py::none(), py::arg("primary") = py::none(),
         py::arg("secondary") = py::none(), py::arg("density") = py::none(), py::arg("mass") = py::none(), py::arg("order") = 2,
         py::arg("G") = "6.67430e-20", py::arg("separation") = py::none(), py::arg("primary_period") = py::none(), py::arg("state") = py::none(),
-        py::arg("integrator") = "SIER4", py::arg("h") = py::none(), py::arg("force") = false,
+        py::arg("integrator") = "SIER4", py::arg("h") = py::none(), py::arg("impulse") = py::none(), py::arg("force") = false,
         (R"(binary_simulation(*, system=None, primary=None, secondary=None, density=None, mass=None, order=2, G="6.67430e-20",
-                  separation=None, primary_period=None, state=None, integrator="SIER4", h=None, force=False, **terms) -> BinarySimulation
+                  separation=None, primary_period=None, state=None, integrator="SIER4", h=None, impulse=None, force=False, **terms) -> BinarySimulation
 
 The full two-body problem as a simulation you hold: rotlie.binary's keywords but T and every (h required). sim.integrate(t)
 steps on to the absolute time t; integrate(T/2) then integrate(T) equals one run to T bit for bit. copy.copy(sim) saves

@@ -116,6 +116,17 @@ json binary_json(const binary_result& r) {
   j["cpu_s"] = r.cpu_s;
   j["mutual"] = {{"U", r.mutual.U}, {"F", r.mutual.F}, {"M1", r.mutual.M1}, {"M2", r.mutual.M2}};
   for (const auto& [name, term] : s.terms) j[name] = term->values(r.end.x, r.end.t);
+  if (s.impulse) j["impulse"] = {{"body", s.impulse->body == 0 ? "primary" : "secondary"}, {"dv", s.impulse->dv}};
+  if (r.observables) {
+    const auto& o = *r.observables;
+    j["observables"] = {{"orbit_period_h", o.orbit_period_h},
+                        {"libration_amplitude_deg", o.libration_amplitude_deg},
+                        {"libration_mean_deg", o.libration_mean_deg},
+                        {"libration_period_h", o.libration_period_h},
+                        {"spin_periods_h", {o.primary_period_h, o.secondary_period_h}},
+                        {"separation_km", {o.separation_min_km, o.separation_max_km}},
+                        {"osculating", {{"a_km", o.osculating.a_km}, {"e", o.osculating.e}, {"i_deg", o.osculating.i_deg}, {"period_h", o.osculating.period_h}}}};
+  }
   j["unstable"] = r.check.unstable;
   j["round_off_floor"] = r.check.round_off_floor;
   j["warnings"] = r.check.warnings;
@@ -142,6 +153,13 @@ std::string binary_text(const binary_result& r) {
       << "final separation " << message_number(d) << " km; relative errors: energy " << message_number(r.check.max_rel_energy_error)
       << ", angular momentum " << message_number(r.check.max_rel_angular_momentum_error) << (r.check.unstable ? ": UNSTABLE" : "") << "\n"
       << "CPU " << message_number(r.cpu_s) << " s\n";
+  if (r.observables) {
+    const auto& o = *r.observables;
+    out << "observed: mean orbit period " << message_number(o.orbit_period_h) << " h (osculating at the end " << message_number(o.osculating.period_h)
+        << " h, e = " << message_number(o.osculating.e) << "), libration " << message_number(o.libration_amplitude_deg) << " deg about "
+        << message_number(o.libration_mean_deg) << " deg, period " << message_number(o.libration_period_h) << " h; spin periods "
+        << message_number(o.primary_period_h) << " and " << message_number(o.secondary_period_h) << " h\n";
+  }
   for (const auto& [name, term] : s.terms) out << name << " at the end: " << term->values(r.end.x, r.end.t).dump() << "\n";
   return out.str();
 }

@@ -170,6 +170,11 @@ binary_setup binary_setup_of(const binary_request& given) {
   }
   if (!r.primary_period.empty() && r.separation.empty()) throw bad_input("--primary-period goes with --separation (a --state file gives omega1)");
   if (!r.force && r.separation.empty()) check_size_units(s.primary, s.secondary, norm(s.start.r), "--state (|r| = " + message_number(norm(s.start.r)) + " km)");
+  if (!r.impulse.empty()) {
+    s.impulse = impulse_named(r.impulse, sys, s.start);
+    s.start = with_impulse(s.start, *s.impulse);
+  }
+  s.observe = r.observe;
   // the start: apart, and on an orbit that does not surely collide
   if (bodies_touch(s.primary, s.start.body[0].Q, s.secondary, s.start.body[1].Q, s.start.r))
     throw bad_input("--state: the bodies overlap at the start (|r| = " + message_number(norm(s.start.r)) + " km)");
@@ -213,9 +218,19 @@ binary_setup binary_setup_of(const binary_request& given) {
 binary_result binary_run(const binary_setup& s, const std::function<void(const binary_sample&)>& sample, const std::function<void(double)>& progress) {
   binary_setup stepped = s;
   if (!(stepped.h > 0)) stepped.h = 1;  // T = 0 without a step: nothing is stepped
+  binary_observer observer;
+  if (s.observe) stepped.every = 1;  // the observer sees every step; the caller's samples stay every K
   binary_simulation simulation(stepped);
-  simulation.advance(s.steps, sample, progress);
+  const auto observed = [&](const binary_sample& x) {
+    observer.add(x.t, x.x);
+    if (sample && s.every > 0 && std::llround(x.t / stepped.h) % s.every == 0) sample(x);
+  };
+  if (s.observe)
+    simulation.advance(s.steps, observed, progress);
+  else
+    simulation.advance(s.steps, sample, progress);
   auto r = simulation.result();
+  if (s.observe) r.observables = observer.result(simulation.system(), r.end.x);
   r.setup = s;
   r.end.t = s.T;
   return r;

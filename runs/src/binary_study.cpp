@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <limits>
 
 #include "rotlie/schemes/message_number.hpp"
@@ -12,9 +11,6 @@ namespace rotlie::runs {
 namespace {
 
 using models::norm;
-
-constexpr double hour = 3600;
-
 
 // The angle of R = Aᵀ B: acos((tr R − 1)/2), by atan2 so that small angles keep their digits.
 double rotation_angle(const models::mat3<double>& A, const models::mat3<double>& B) {
@@ -44,47 +40,9 @@ double binary_state_error(const models::binary_state<double>& x, const models::b
 
 binary_observables observe_binary(binary_setup setup, long every) {
   setup.every = std::max(1L, every);
-  std::vector<double> t, theta, phi;
-  binary_observables o;
-  o.separation_min_km = std::numeric_limits<double>::infinity();
-  double unwrapped = 0, last = 0;
-  const auto result = binary_run(setup, [&](const binary_sample& s) {
-    const double angle = std::atan2(s.x.r[1], s.x.r[0]);
-    if (!theta.empty()) {
-      double d = angle - last;
-      d -= 2 * std::numbers::pi * std::round(d / (2 * std::numbers::pi));
-      unwrapped += d;
-    } else {
-      unwrapped = angle;
-    }
-    last = angle;
-    // the secondary's long axis (body x, inertial) against the line of centres, in the orbit's plane
-    const auto& Q = s.x.body[1].Q;
-    double lib = std::atan2(Q(1, 0), Q(0, 0)) - angle;
-    lib -= std::numbers::pi * std::round(lib / std::numbers::pi);  // the axis has no arrow
-    t.push_back(s.t), theta.push_back(unwrapped), phi.push_back(lib);
-    const double d = norm(s.x.r);
-    o.separation_min_km = std::min(o.separation_min_km, d), o.separation_max_km = std::max(o.separation_max_km, d);
-  });
-  // the orbital angle's least-squares slope
-  const double n = static_cast<double>(t.size());
-  double st = 0, sa = 0, stt = 0, sta = 0;
-  for (std::size_t k = 0; k < t.size(); ++k) st += t[k], sa += theta[k], stt += t[k] * t[k], sta += t[k] * theta[k];
-  const double slope = (n * sta - st * sa) / (n * stt - st * st);
-  o.orbit_period_h = 2 * std::numbers::pi / slope / hour;
-  const auto [low, high] = std::minmax_element(phi.begin(), phi.end());
-  o.libration_amplitude_deg = (*high - *low) / 2 * 180 / std::numbers::pi;
-  double mean = 0;
-  for (const double p : phi) mean += p;
-  mean /= n;
-  o.libration_mean_deg = mean * 180 / std::numbers::pi;
-  std::vector<double> ups;
-  for (std::size_t k = 1; k < phi.size(); ++k)
-    if (phi[k - 1] < mean && phi[k] >= mean) ups.push_back(t[k - 1] + (t[k] - t[k - 1]) * (mean - phi[k - 1]) / (phi[k] - phi[k - 1]));
-  if (ups.size() >= 2) o.libration_period_h = (ups.back() - ups.front()) / static_cast<double>(ups.size() - 1) / hour;
-  const auto w = models::angular_velocity(setup.system_model().moments(0), result.end.x.body[0].G);
-  o.primary_period_h = 2 * std::numbers::pi / norm(w) / hour;
-  return o;
+  binary_observer observer;
+  const auto result = binary_run(setup, [&](const binary_sample& s) { observer.add(s.t, s.x); });
+  return observer.result(setup.system_model(), result.end.x);
 }
 
 binary_setup with_impulse(binary_setup setup, double dv) {

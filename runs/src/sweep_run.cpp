@@ -26,7 +26,7 @@ using nlohmann::json;
 constexpr int sweep_format_version = 1;
 constexpr std::size_t input_limit = std::size_t(64) << 20;  // 64 MiB of runs
 const std::set<std::string> known_options = {"system", "primary", "secondary", "density", "mass", "order", "G", "separation",
-                                             "primary-period", "primary_period", "state", "integrator", "h", "T", "force"};
+                                             "primary-period", "primary_period", "state", "integrator", "h", "T", "force", "impulse", "observe"};
 
 std::string fnv1a(const std::string& text) {
   std::uint64_t h = 1469598103934665603ull;
@@ -52,6 +52,8 @@ std::string term_text(const json& v) {
 binary_request request_of(const json& j) {
   binary_request r;
   if (j.contains("force")) r.force = j["force"].get<bool>();
+  if (j.contains("observe")) r.observe = j["observe"].get<bool>();
+  if (j.contains("impulse")) r.impulse = option_text(j["impulse"]);
   for (const auto& term : binary_terms())
     if (j.contains(term.name)) r.terms[term.name] = term_text(j[term.name]);
   const auto take = [&](const char* key, std::string& into) {
@@ -92,8 +94,9 @@ sweep_plan plan_sweep(const std::filesystem::path& input) {
     for (const auto& [key, value] : j.items()) {
       if (!known_option(key)) throw bad_input(where + ": '" + one_line(key) + "' is not an option of binary (a sweep takes no --every or --json)");
       const bool numbers = value.is_array() && binary_term_named(key) && std::all_of(value.begin(), value.end(), [](const json& x) { return x.is_number(); });
-      if (key == "force" && !value.is_boolean()) throw bad_input(where + ": 'force' must be true or false");
-      if (!(value.is_string() || value.is_number() || numbers || (key == "state" && value.is_object()) || key == "force"))
+      const bool flag = key == "force" || key == "observe";
+      if (flag && !value.is_boolean()) throw bad_input(where + ": '" + key + "' must be true or false");
+      if (!(value.is_string() || value.is_number() || numbers || (key == "state" && value.is_object()) || flag))
         throw bad_input(where + ": '" + one_line(key) + "' must be text or a number" + (binary_term_named(key) ? " (or an array of numbers)" : ""));
     }
     plan.inputs.push_back(j.dump());

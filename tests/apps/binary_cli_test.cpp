@@ -155,4 +155,32 @@ BOOST_AUTO_TEST_CASE(the_sun_joins_the_json) {
   BOOST_TEST(r.err.find("--sun: the eccentricity must be in [0, 1)") != std::string::npos, r.err);
 }
 
+// --observe and --impulse (issue 43): at order 0 the mutual orbit is Kepler's circle, so the mean and
+// osculating periods are 2π √(R³/GM) and e = 0; a vector impulse on the secondary adds to v exactly,
+// on the primary subtracts; DART's form opposes the secondary's motion with β m U / M₂.
+BOOST_AUTO_TEST_CASE(observables_and_impulses) {
+  const auto j = binary_json("--primary ellipsoid:0.4,0.38,0.35 --secondary ellipsoid:0.1,0.08,0.06 --density 2000 --separation 1.2 --order 0 "
+                             "--integrator KEPLER4 --h 600 --T 172800 --observe");
+  const double GM = 6.67430e-20 * (j["masses"][0].get<double>() + j["masses"][1].get<double>());
+  const double kepler_h = 2 * std::acos(-1.0) * std::sqrt(1.2 * 1.2 * 1.2 / GM) / 3600;
+  const auto& o = j["observables"];
+  BOOST_TEST(std::abs(o["osculating"]["period_h"].get<double>() / kepler_h - 1) < 1e-12);
+  BOOST_TEST(std::abs(o["orbit_period_h"].get<double>() / kepler_h - 1) < 1e-9);
+  BOOST_TEST(o["osculating"]["e"].get<double>() < 1e-12);
+  BOOST_TEST(std::abs(o["spin_periods_h"][1].get<double>() / kepler_h - 1) < 1e-12);  // synchronous, and order 0 exerts no torque
+  const auto at_rest = binary_json(didymos + " --integrator SIER4 --T 0");
+  const auto pushed = binary_json(didymos + " --integrator SIER4 --T 0 --impulse secondary:1,-2.5,0.5");
+  const auto pulled = binary_json(didymos + " --integrator SIER4 --T 0 --impulse primary:1,-2.5,0.5");
+  const double dv[3] = {1e-6, -2.5e-6, 0.5e-6};
+  for (std::size_t k = 0; k < 3; ++k) {
+    BOOST_TEST(pushed["v"][k].get<double>() == at_rest["v"][k].get<double>() + dv[k]);
+    BOOST_TEST(pulled["v"][k].get<double>() == at_rest["v"][k].get<double>() - dv[k]);
+  }
+  const auto dart = binary_json(didymos + " --integrator SIER4 --T 0 --impulse secondary:beta=3.61,m=579.4,U=6.1448");
+  const double size = 3.61 * 579.4 * 6.1448 / at_rest["masses"][1].get<double>();
+  const double v0 = at_rest["v"][1].get<double>();  // the circular start moves along +y
+  BOOST_TEST(std::abs(dart["v"][1].get<double>() - (v0 - size)) < 1e-18);
+  BOOST_TEST(run("binary " + didymos + " --integrator SIER4 --T 0 --impulse moon:1,2,3").status == 2);
+}
+
 BOOST_AUTO_TEST_SUITE_END()  // binary_cli_test

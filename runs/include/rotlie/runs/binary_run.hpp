@@ -23,6 +23,7 @@
 #include "rotlie/models/scenes/binary_system.hpp"
 #include "rotlie/models/scenes/spin_orbit_odeint.hpp"
 #include "rotlie/runs/binary_bodies.hpp"
+#include "rotlie/runs/binary_observables.hpp"
 #include "rotlie/runs/binary_terms.hpp"
 #include "rotlie/schemes/scheme_table.hpp"
 
@@ -44,6 +45,8 @@ struct binary_request {
   std::string every = "0";              ///< a trajectory sample every K steps (0: none)
   std::map<std::string, std::string> terms;  ///< added force terms by name (binary_terms.hpp): their values as typed
   bool force = false;                        ///< run values that look like unit mistakes (binary_units.hpp)
+  std::string impulse;                       ///< an impulse on one body at the start (binary_observables.hpp), or empty
+  bool observe = false;                      ///< read the observables off every step (binary_observables.hpp)
 };
 
 struct binary_method {
@@ -69,6 +72,8 @@ struct binary_setup {
   long steps = 0;
   long every = 0;
   std::vector<std::pair<std::string, std::shared_ptr<const registered_term>>> terms;  ///< added force terms, by name
+  std::optional<binary_impulse> impulse;  ///< applied to the start given (start holds the pair after it)
+  bool observe = false;
 
   /// The pair with its added terms.
   models::binary_system<double> system_model() const;
@@ -105,6 +110,7 @@ struct binary_result {
   binary_check check;
   double cpu_s = 0;
   long evaluations = 0;  ///< mutual-gravity evaluations
+  std::optional<binary_observables> observables;  ///< with setup.observe
 };
 
 /// The bodies came into contact: the run stops (the CLI exits 1 saying when).

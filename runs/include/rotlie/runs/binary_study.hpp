@@ -6,19 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "rotlie/runs/binary_observables.hpp"
 #include "rotlie/runs/binary_run.hpp"
 
 namespace rotlie::runs {
-
-/// What the benchmark reads off a trajectory sampled every few steps.
-struct binary_observables {
-  double orbit_period_h = 0;       ///< the mean mutual orbit period (the orbital angle's slope), hours
-  double libration_amplitude_deg = 0;  ///< half the range of the secondary's long axis against the line to the primary
-  double libration_mean_deg = 0;
-  double libration_period_h = 0;   ///< the mean spacing of its upward crossings of the mean, hours (0: none seen)
-  double primary_period_h = 0;     ///< 2π / |ω₁|, hours, at the end
-  double separation_min_km = 0, separation_max_km = 0;
-};
 
 /// Runs `setup` (its every is set to `every`) and reads the observables.
 binary_observables observe_binary(binary_setup setup, long every);
