@@ -19,7 +19,7 @@ namespace rotlie::runs {
 
 namespace {
 
-struct sweep_plan {
+struct water_sweep_plan {
   std::string integrator;
   std::vector<double> h;
   const schemes::scheme_table* rotor = nullptr;  ///< a dedicated rotor's table, solved for TIP3P
@@ -64,7 +64,7 @@ liquid_water_study_result liquid_water_study(const liquid_water_budget& b, bool 
   o.equilibration_ps = b.equilibration_ps;
   say("equilibration");
   const auto start = models::liquid_water_start(o, say);
-  std::vector<sweep_plan> sweeps;
+  std::vector<water_sweep_plan> sweeps;
   sweeps.push_back({"SIER2", quick ? std::vector<double>{1, 2, 4, 7} : std::vector<double>{0.5, 1, 2, 4, 7, 10}});
   sweeps.push_back({"SIER4", quick ? std::vector<double>{4, 8, 16, 28} : std::vector<double>{1, 2, 4, 8, 16, 28, 40}});
   sweeps.push_back({"MRDL", quick ? std::vector<double>{2, 7} : std::vector<double>{1, 2, 4, 7, 10}});
