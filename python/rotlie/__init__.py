@@ -7,7 +7,9 @@ their measurements) and its numeric core, with NumPy arrays in and out:
   dedicated schemes of a family solved for a body (Laskar & Vaillant), ranked by ||H_R5||;
 - ``exact_flow``, ``integrate`` and ``order``: the free rigid body, vectorised over N states;
 - ``remainder``, ``best``, ``map_line``, ``bch``, ``md``, ``spin`` and ``binary``: the command line's runs with typed
-  results (fields as attributes, arrays as NumPy arrays, ``to_dict()`` the command's JSON).
+  results (fields as attributes, arrays as NumPy arrays, ``to_dict()`` the command's JSON);
+- ``md_simulation`` and ``spin_simulation``: those runs held, advanced by ``integrate(t)`` to an absolute time
+  and continued from where they stopped.
 
 Bad arguments raise ``ValueError`` and a failed run ``RuntimeError``, with the command line's
 one-line message; long calls release the GIL and Ctrl-C interrupts them; nothing is printed.
@@ -28,7 +30,8 @@ from ._rotlie import Scheme
 
 __all__ = [
     "Body", "Scheme", "scheme", "load_table", "solve", "exact_flow", "integrate", "order",
-    "remainder", "Remainder", "best", "map_line", "bch", "md", "spin", "SpinResult", "SpinTrajectory", "binary", "BinaryResult", "BinaryTrajectory",
+    "remainder", "Remainder", "best", "map_line", "bch", "md", "spin", "SpinResult", "SpinTrajectory",
+    "md_simulation", "MdSimulation", "spin_simulation", "SpinSimulation", "binary", "BinaryResult", "BinaryTrajectory",
     "binary_simulation", "BinarySimulation",
     "Result", "MdResult", "MdTrajectory", "OrderResult", "BestResult", "MapLine",
 ]
@@ -164,7 +167,8 @@ def order(scheme, body, G0=(1, 1, 1), T=1, min_level: int = 1, max_level: int = 
 
 
 from ._remainder import Remainder, remainder  # noqa: E402
-from ._commands import best, map_line, bch, md  # noqa: E402
+from ._commands import best, map_line, bch, md, md_simulation  # noqa: E402
 from ._rotlie import spin, SpinResult, SpinTrajectory  # noqa: E402  (typed in C++: python/src/spin.cpp)
+from ._rotlie import MdSimulation, SpinSimulation, spin_simulation  # noqa: E402  (python/src/*_simulation.cpp)
 from ._rotlie import binary, BinaryResult, BinaryTrajectory  # noqa: E402  (typed in C++: python/src/binary.cpp)
 from ._rotlie import binary_simulation, BinarySimulation  # noqa: E402  (python/src/binary_simulation.cpp)

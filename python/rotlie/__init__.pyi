@@ -175,6 +175,64 @@ class SpinResult:
 def spin(body: str | BodyLike, e: Number, integrator: str, h: Number, T: Number, theta0: Number = 0, omega0: Number = 1,
          obliquity: Number = 0, scalar: Scalar = "double", every: int | None = None) -> SpinResult: ...
 
+class SpinSimulation:
+    body: str
+    integrator: str
+    scalar: str
+    e: float
+    h: float
+    t: float
+    steps: int
+    theta: float
+    energy: float
+    evaluations: int
+    @property
+    def Q(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def G(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def omega_body(self) -> npt.NDArray[np.float64]: ...
+    def integrate(self, t: float) -> None: ...
+    def step(self) -> None: ...
+
+def spin_simulation(body: str | BodyLike, e: Number, integrator: str, h: Number, theta0: Number = 0, omega0: Number = 1,
+                    obliquity: Number = 0, scalar: Scalar = "double") -> SpinSimulation: ...
+
+class MdSimulation:
+    scene: str
+    integrator: str
+    scalar: str
+    runs: int
+    seed: int
+    h: float
+    t: float
+    steps: int
+    evaluations: int
+    @property
+    def q(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def p(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def Q(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def G(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def energy(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def potential(self) -> npt.NDArray[np.float64]: ...
+    def integrate(self, t: float) -> None: ...
+    def step(self) -> None: ...
+
+@overload
+def md_simulation(scene: Literal["spin-orbit"], integrator: str, h: Number, *, scalar: Scalar | None = None,
+                  body: str | BodyLike | None = None, e: Number | None = None, theta0: Number | None = None,
+                  omega0: Number | None = None, obliquity: Number | None = None) -> SpinSimulation: ...
+@overload
+def md_simulation(scene: str, integrator: str, h: Number, *, runs: int | None = None, seed: int | None = None,
+                  scalar: Scalar | None = None, dipole: Number | None = None, field: Number | None = None,
+                  molecules: int | None = None, threads: int | None = None, state: str | PathLike[str] | None = None,
+                  equilibrate: Number | None = None) -> MdSimulation: ...
+
 class BinaryTrajectory:
     every: int
     @property

@@ -67,6 +67,11 @@ def md(scene: str, integrator: str, h: Number, T: Number | None = None, *, runs:
     given = {"T": T, "runs": runs, "seed": seed, "scalar": scalar, "dipole": dipole, "field": field,
              "molecules": molecules, "threads": threads, "state": state, "body": body, "e": e, "theta0": theta0,
              "omega0": omega0, "obliquity": obliquity, "every": every, "equilibrate": equilibrate}
+    return MdResult(json.loads(_rotlie.md(str(scene), str(integrator), number_text(h, "--h"), _scene_options(given))))
+
+
+def _scene_options(given: dict) -> dict[str, str]:
+    """The keywords given (not None) as the command line's options ("--T" → "5")."""
     options = {}
     for key, value in given.items():
         if value is None:
@@ -81,7 +86,35 @@ def md(scene: str, integrator: str, h: Number, T: Number | None = None, *, runs:
             options["--body"] = value if isinstance(value, str) else body_text(value)
         else:
             options["--" + key] = number_text(value, "--" + key)
-    return MdResult(json.loads(_rotlie.md(str(scene), str(integrator), number_text(h, "--h"), options)))
+    return options
+
+
+def md_simulation(scene: str, integrator: str, h: Number, *, runs: int | None = None, seed: int | None = None,
+                  scalar: str | None = None, dipole: Number | None = None, field: Number | None = None,
+                  molecules: int | None = None, threads: int | None = None, state: str | os.PathLike | None = None,
+                  body: str | Body | None = None, e: Number | None = None, theta0: Number | None = None,
+                  omega0: Number | None = None, obliquity: Number | None = None, equilibrate: Number | None = None):
+    """The run of ``md`` held at t = 0 (its keywords but ``T`` and ``every``), checked as ``md`` checks them.
+
+    ``integrate(t)`` advances it to the absolute time ``t`` (ps) in whole steps ``h`` (fs) and continues
+    from there: ``integrate(T/2)`` then ``integrate(T)`` gives the bits of ``integrate(T)`` and of ``md``'s
+    run to T. free-water and dipole-field hold every run of the ensemble (``runs``, one molecule each):
+    ``q``, ``p``, ``G`` of shape (runs, 3), ``Q`` (runs, 3, 3), ``energy`` and ``potential`` (runs,).
+    The spin-orbit scene returns ``spin_simulation(body, e, integrator, h, ...)`` (t in orbits); the
+    liquid-water scene cannot be held yet (ValueError)."""
+    given = {"runs": runs, "seed": seed, "scalar": scalar, "dipole": dipole, "field": field, "molecules": molecules,
+             "threads": threads, "state": state, "body": body, "e": e, "theta0": theta0, "omega0": omega0,
+             "obliquity": obliquity, "equilibrate": equilibrate}
+    if scene == "spin-orbit":
+        takes = _rotlie.md_scenes()["spin-orbit"]
+        for key, value in given.items():
+            if value is not None and "--" + key not in takes:
+                raise ValueError(f"--{key} does not apply to the spin-orbit scene")
+        if body is None or e is None:
+            raise ValueError("--body and --e are required by the spin-orbit scene")
+        spin = {"theta0": theta0, "omega0": omega0, "obliquity": obliquity, "scalar": scalar}
+        return _rotlie.spin_simulation(body, e, str(integrator), h, **{k: v for k, v in spin.items() if v is not None})
+    return _rotlie.md_simulation(str(scene), str(integrator), number_text(h, "--h"), _scene_options(given))
 
 
 def md_keywords() -> set[str]:

@@ -37,6 +37,15 @@ inline std::string every_argument(const py::handle& every) {
   return py::str(every);
 }
 
+// A body as `rotlie spin --body` takes it: a name or "A,B,C" as text, a Body, or three moments.
+inline std::string spin_body_argument(const py::handle& body) {
+  if (py::isinstance<py::str>(body)) return py::str(body);
+  const py::object moments = py::hasattr(body, "moments") ? py::object(body.attr("moments")) : py::reinterpret_borrow<py::object>(body);
+  std::string text;
+  for (const auto& m : py::iter(moments)) text += (text.empty() ? "" : ",") + number_argument(m, "a moment of body");
+  return text;
+}
+
 inline py::array_t<double> vector_array(const std::vector<double>& v) { return py::array_t<double>(py::ssize_t(v.size()), v.data()); }
 
 // Rows of N fixed-size arrays as one array of shape (N, tail...).

@@ -19,7 +19,7 @@ struct scheme_object {
 
 // Every part of the module, in binding order: python/src/NAME.cpp defines bind_NAME (scheme_objects.cpp
 // binds `schemes`). A new Python call is its file and its name on this line.
-#define ROTLIE_PYTHON_PARTS(X) X(errors) X(bodies) X(schemes) X(flows) X(json_commands) X(md) X(remainder) X(spin) X(binary) X(binary_simulation)
+#define ROTLIE_PYTHON_PARTS(X) X(errors) X(bodies) X(schemes) X(flows) X(json_commands) X(md) X(md_simulation) X(remainder) X(spin) X(spin_simulation) X(binary) X(binary_simulation)
 
 #define ROTLIE_PYTHON_DECLARE_PART(name) void bind_##name(pybind11::module_& m);
 ROTLIE_PYTHON_PARTS(ROTLIE_PYTHON_DECLARE_PART)

@@ -24,15 +24,6 @@ struct spin_object {
   std::string json;  ///< `rotlie spin --json`'s text
 };
 
-// A body as `--body` takes it: a name or "A,B,C" as text, a Body, or three moments.
-std::string body_argument(const py::handle& body) {
-  if (py::isinstance<py::str>(body)) return py::str(body);
-  const py::object moments = py::hasattr(body, "moments") ? py::object(body.attr("moments")) : py::reinterpret_borrow<py::object>(body);
-  std::string text;
-  for (const auto& m : py::iter(moments)) text += (text.empty() ? "" : ",") + number_argument(m, "a moment of body");
-  return text;
-}
-
 struct trajectory_object {
   runs::spin_trajectory samples;
   long every = 0;
@@ -41,7 +32,7 @@ struct trajectory_object {
 spin_object spin(const py::object& body, const py::object& e, const std::string& integrator, const py::object& h, const py::object& T,
                  const py::object& theta0, const py::object& omega0, const py::object& obliquity, const std::string& scalar,
                  const py::object& every) {
-  runs::spin_request q{body_argument(body), number_argument(e, "e"), integrator, number_argument(h, "h"), number_argument(T, "T"),
+  runs::spin_request q{spin_body_argument(body), number_argument(e, "e"), integrator, number_argument(h, "h"), number_argument(T, "T"),
                        number_argument(theta0, "theta0"), number_argument(omega0, "omega0"), number_argument(obliquity, "obliquity"),
                        scalar, every_argument(every)};
   auto out = std::make_shared<spin_object>();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "rotlie/runs/md_simulation.hpp"
 #include "rotlie/runs/user_input.hpp"
 
 namespace rotlie::runs {
@@ -56,8 +57,10 @@ std::vector<scene_option> all_scene_options() {
   return all;
 }
 
-scene_result run_scene(const scene_request& request) {
-  const auto& s = scene_named(request.scene);
+namespace {
+
+// The request with every option of scene s (defaults filled), a foreign option refused.
+scene_request full_request(const scene& s, const scene_request& request) {
   scene_request full = request;
   for (const auto& [name, value] : request.options) {
     if (option_of(s, name)) continue;
@@ -67,7 +70,25 @@ scene_result run_scene(const scene_request& request) {
                                        : name + " does not apply to the " + s.name + " scene");
   }
   for (const auto& o : s.options) full.options.try_emplace(o.name, o.default_text);
-  return s.run(full);
+  return full;
+}
+
+}  // namespace
+
+scene_result run_scene(const scene_request& request) {
+  const auto& s = scene_named(request.scene);
+  return s.run(full_request(s, request));
+}
+
+std::unique_ptr<held_md_run> hold_scene(const scene_request& request) {
+  const auto& s = scene_named(request.scene);
+  if (!s.hold) {
+    std::string held;
+    for (const auto& other : scenes())
+      if (other.hold) held += (held.empty() ? "" : ", ") + other.name;
+    throw bad_input("--scene " + s.name + " cannot be held as a simulation (" + held + " can)");
+  }
+  return s.hold(full_request(s, request));
 }
 
 }  // namespace rotlie::runs

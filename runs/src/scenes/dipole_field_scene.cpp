@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "ensemble_run.hpp"
+#include "held_ensemble.hpp"
 #include "../md_experiments.hpp"
 
 namespace rotlie::runs {
@@ -30,12 +31,29 @@ scene_result run_in(const dipole_run& e) {
   return {dipole_field_json(e.header(), result, std::stod(e.dipole), std::stod(e.field)), text.str(), verdict_of(result).warnings};
 }
 
-scene_result dipole_field_scene_run(const scene_request& r) {
-  dipole_run e;
+void read_dipole_run(const scene_request& r, dipole_run& e) {
   read_ensemble_run(r, models::water::body_text(), e);
   e.dipole = shortest(positive_number(option(r, "--dipole"), "--dipole"));
   e.field = shortest(positive_number(option(r, "--field"), "--field"));
+}
+
+scene_result dipole_field_scene_run(const scene_request& r) {
+  dipole_run e;
+  read_dipole_run(r, e);
   return in_scalar(e, [&e](auto zero) { return run_in<decltype(zero)>(e); });
+}
+
+// The ensemble held (md_simulation), each start's V evaluated first as run_dipole_field does.
+std::unique_ptr<held_md_run> dipole_field_scene_hold(const scene_request& r) {
+  dipole_run e;
+  read_dipole_run(r, e);
+  return as_bad_input([&] {
+    auto held = in_held_scalar(e, [&e](auto zero) {
+      return held_ensemble(models::dipole_field<decltype(zero)>(e.dipole, e.field), e.run, true);
+    });
+    held->setup = held_setup_of(e);
+    return held;
+  });
 }
 
 }  // namespace
@@ -45,7 +63,7 @@ scene dipole_field_scene() {
   options.push_back({"--dipole", "1.84", "The dipole in debye"});
   options.push_back({"--field", "2.7", "The field along z in MV/m"});
   return {"dipole-field", "a water molecule's dipole in a constant field: Table I's dH/dV and dLz/<Lz> (vZS section V.B)",
-          std::move(options), dipole_field_scene_run};
+          std::move(options), dipole_field_scene_run, dipole_field_scene_hold};
 }
 
 }  // namespace rotlie::runs

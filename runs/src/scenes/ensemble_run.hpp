@@ -12,6 +12,7 @@
 
 #include "rotlie/models/experiments/md_experiment.hpp"
 #include "rotlie/runs/md_json.hpp"
+#include "rotlie/runs/md_simulation.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
 #include "scene_support.hpp"
 
@@ -73,6 +74,19 @@ scene_result in_scalar(const ensemble_run& e, F&& f) {
     if (e.scalar == "long-double") return f(static_cast<long double>(0));
     return f(boost::multiprecision::float128{});
   });
+}
+
+/// f(T{}) as in_scalar, for what returns a held run.
+template <class F>
+std::unique_ptr<held_md_run> in_held_scalar(const ensemble_run& e, F&& f) {
+  if (e.scalar == "double") return f(double{});
+  if (e.scalar == "long-double") return f(static_cast<long double>(0));
+  return f(boost::multiprecision::float128{});
+}
+
+/// What a held ensemble is of.
+inline md_held_setup held_setup_of(const ensemble_run& e) {
+  return {e.scene, e.run.integrator.name, e.scalar, e.run.h_fs, e.run.runs, static_cast<unsigned long>(e.run.seed)};
 }
 
 /// The options of an ensemble scene, with its defaults.

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "ensemble_run.hpp"
+#include "held_ensemble.hpp"
 #include "../md_experiments.hpp"
 
 namespace rotlie::runs {
@@ -29,11 +30,23 @@ scene_result free_water_scene_run(const scene_request& r) {
   return in_scalar(e, [&e](auto zero) { return run_in<decltype(zero)>(e); });
 }
 
+// The ensemble held (md_simulation): its runs' states from the same checked options.
+std::unique_ptr<held_md_run> free_water_scene_hold(const scene_request& r) {
+  ensemble_run e;
+  read_ensemble_run(r, models::water::body_text(), e);
+  return as_bad_input([&] {
+    auto held = in_held_scalar(e, [&e](auto zero) { return held_ensemble(models::free_water<decltype(zero)>{}, e.run, false); });
+    held->setup = held_setup_of(e);
+    return held;
+  });
+}
+
 }  // namespace
 
 scene free_water_scene() {
   return {"free-water", "one free water molecule: the orientation error time tau (vZS section V.A)",
-          ensemble_options(models::free_water_default_T_ps, models::free_water_default_runs), free_water_scene_run};
+          ensemble_options(models::free_water_default_T_ps, models::free_water_default_runs), free_water_scene_run,
+          free_water_scene_hold};
 }
 
 }  // namespace rotlie::runs

@@ -7,10 +7,13 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace rotlie::runs {
+
+class held_md_run;  // md_simulation.hpp
 
 /// An option of a scene as the user types it ("--T"), its default as text ("" for none) and its help.
 struct scene_option {
@@ -32,11 +35,13 @@ struct scene_result {
   std::vector<std::string> warnings;
 };
 
-/// One scene. `run` receives the request with every option of the scene present (defaults filled).
+/// One scene. `run` receives the request with every option of the scene present (defaults filled);
+/// `hold`, when the scene has one, builds from such a request the run md_simulation holds.
 struct scene {
   std::string name, summary;
   std::vector<scene_option> options;
   scene_result (*run)(const scene_request&) = nullptr;
+  std::unique_ptr<held_md_run> (*hold)(const scene_request&) = nullptr;
 };
 
 /// Every scene, in the order the help lists them.
@@ -52,5 +57,9 @@ std::vector<scene_option> all_scene_options();
 /// Runs the request: the scene named, options foreign to it refused (bad_input, nothing run),
 /// the defaults filled in. Bad values throw bad_input; a run that failed throws std::runtime_error.
 scene_result run_scene(const scene_request& request);
+
+/// The scene's run held at t = 0 (md_simulation), after run_scene's checks; bad_input for a scene
+/// without `hold`.
+std::unique_ptr<held_md_run> hold_scene(const scene_request& request);
 
 }  // namespace rotlie::runs
