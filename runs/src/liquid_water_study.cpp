@@ -27,7 +27,7 @@ struct step_sweep {
 
 // The dedicated free rotors for the TIP3P body (its exact moments text): the best-ranked N and P
 // solutions of the solver for this body, N2 BAC (2) and P1 BAC (5).
-std::map<std::string, schemes::scheme_table> dedicated_rotors() {
+std::map<std::string, schemes::scheme_table> water_dedicated_rotors() {
   const auto body = lie::parse_moments(models::tip3p_body_text());
   std::map<std::string, schemes::scheme_table> tables;
   for (const char* name : {"N2:BAC:2", "P1:BAC:5"}) tables.emplace(name, scheme_named(name, body));
@@ -71,7 +71,7 @@ liquid_water_study_result liquid_water_study(const liquid_water_budget& b, bool 
   sweeps.push_back({"SEJ4", quick ? std::vector<double>{2, 7} : std::vector<double>{1, 2, 4, 7}});
   if (!quick) sweeps.push_back({"SIER2/RS4-S5-McLachlan:CBA", {1, 2, 4, 7}});
   say("dedicated rotors for the TIP3P body");
-  const auto dedicated = dedicated_rotors();
+  const auto dedicated = water_dedicated_rotors();
   // full: the paper's statistics, the same steps as SIER2 and SIER4
   sweeps.push_back({"SIER2/N2:BAC:2", quick ? std::vector<double>{2, 7} : full ? sweeps[0].h : std::vector<double>{1, 2, 4, 7},
                     &dedicated.at("N2:BAC:2")});
