@@ -4,6 +4,7 @@
 
 #include "commands.hpp"
 #include "progress.hpp"
+#include "rotlie/runs/binary_fields.hpp"
 #include "rotlie/runs/binary_io.hpp"
 #include "rotlie/runs/binary_run.hpp"
 
@@ -11,10 +12,12 @@ namespace rotlie::app {
 
 int run_binary(const binary_options& o) {
   runs::binary_request request;
-  request.system = o.system, request.primary = o.primary, request.secondary = o.secondary, request.density = o.density, request.mass = o.mass;
-  request.order = o.order, request.G = o.G, request.separation = o.separation, request.primary_period = o.primary_period;
-  request.state_file = o.state, request.integrator = o.integrator, request.h = o.h, request.T = o.T, request.every = o.every;
-  request.force = o.force, request.impulse = o.impulse, request.observe = o.observe;
+  for (const auto& f : runs::binary_fields()) {
+    if (f.type == runs::binary_field::kind::flag)
+      request.*f.flag = o.flags.at(f.name);
+    else
+      request.*f.text = o.fields.at(f.name);
+  }
   for (const auto& [name, text] : o.terms)
     if (!text.empty()) request.terms[name] = text;
   const auto setup = runs::binary_setup_of(request);

@@ -130,13 +130,12 @@ struct spin_options {
 };
 int run_spin(const spin_options& options);
 
-/// The full two-body problem (binary asteroids): the strings as typed, checked by runs::binary_setup_of.
+/// The full two-body problem (binary asteroids): each field of runs/binary_fields.hpp as typed (flags as
+/// booleans), and each registered force term's values (runs/binary_terms.hpp), checked by runs::binary_setup_of.
 struct binary_options {
-  std::string system, primary, secondary, density, mass, order = "2", G = "6.67430e-20", separation, primary_period, state, integrator, h, T,
-      every = "0";
-  std::map<std::string, std::string> terms;  ///< --NAME of each registered force term (runs/binary_terms.hpp)
-  std::string impulse;
-  bool json = false, force = false, observe = false;
+  std::map<std::string, std::string> fields, terms;
+  std::map<std::string, bool> flags;
+  bool json = false;
 };
 int run_binary(const binary_options& options);
 

@@ -16,6 +16,7 @@
 
 #include "arguments.hpp"
 #include "commands.hpp"
+#include "rotlie/runs/binary_fields.hpp"
 #include "rotlie/runs/binary_terms.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
 #include "rotlie/runs/scenes.hpp"
@@ -304,34 +305,18 @@ subcommand add_spin(CLI::App& app, spin_options& spin) {
 subcommand add_binary(CLI::App& app, binary_options& b) {
   auto* cmd = app.add_subcommand("binary", "Two rigid bodies in mutual gravity, rotation and orbit coupled both ways (the full two-body problem of "
                                            "binary asteroids); units km, kg, s");
-  cmd->add_option("--system", b.system, "A named system (didymos): its bodies, densities and start; the options below override it");
-  cmd->add_option("--primary", b.primary, "ellipsoid:a,b,c (semi-axes in km, a >= b >= c along x, y, z) or polyhedron:FILE (a shape model in km: "
-                                          "Wavefront OBJ, or 'N_vertices N_facets' then vertices and 1-based facets)");
-  cmd->add_option("--secondary", b.secondary, "As --primary");
-  cmd->add_option("--density", b.density, "kg/m3: one value for both bodies, or RHO1,RHO2");
-  cmd->add_option("--mass", b.mass, "M1,M2 in kg (instead of --density)");
-  cmd->add_option("--order", b.order, "Truncation of the mutual potential in the inertia integrals: 0, 2 or 4 (default 2)");
-  cmd->add_option("--G", b.G, "Gravitational constant in km3 kg-1 s-2 (default 6.67430e-20)");
-  cmd->add_option("--separation", b.separation, "km: a circular mutual orbit in the primary's equatorial plane, frames aligned, the secondary "
-                                                "synchronous (its long axis at the primary), the rate balancing the mutual pull");
-  cmd->add_option("--primary-period", b.primary_period, "Hours: the primary's spin with --separation (default: synchronous)");
-  cmd->add_option("--state", b.state, "A start from a JSON file with r, v (km, km/s), Q1, Q2 (rows), omega1, omega2 (rad/s, body frames): "
-                                      "a run's --json output starts the next");
-  cmd->add_option("--integrator", b.integrator, "SIER2, SIER4, SIER6, SIER2/X, SIER4/X, SIER6/X (rotor X for both bodies: a listed rotor, a "
-                                                "reference scheme, SCHEME:PERM:LABEL solved for each body), KEPLER2, KEPLER4, KEPLER6, KEPLER…/X "
-                                                "(Kepler split), RK4, LGVI, odeint-rkf78[:TOL], odeint-dopri5[:TOL] (default TOL 1e-12)")
-      ->required();
-  cmd->add_option("--h", b.h, "The step in seconds (an adaptive method's first trial step and the spacing of its checks)");
-  cmd->add_option("--T", b.T, "Length of the run in seconds, a whole number of steps --h; 0 gives the start's values")->required();
-  cmd->add_option("--every", b.every, "The trajectory every K steps from the start, one JSON line each (t, r, v, Q1, Q2, omega1, omega2, energy)");
+  const rotlie::runs::binary_request defaults;
+  for (const auto& f : rotlie::runs::binary_fields()) {
+    if (f.type == rotlie::runs::binary_field::kind::flag) {
+      cmd->add_flag(f.option, b.flags[f.name] = defaults.*f.flag, f.help);
+      continue;
+    }
+    auto* option = cmd->add_option(f.option, b.fields[f.name] = defaults.*f.text, f.help);
+    if (f.cli_required) option->required();
+  }
   for (const auto& term : rotlie::runs::binary_terms())
     cmd->add_option("--" + term.name, b.terms[term.name], term.summary + " (" + rotlie::runs::term_syntax(term) + ")");
   cmd->add_flag("--json", b.json, "Machine-readable output on stdout (one line after --every's lines)");
-  cmd->add_option("--impulse", b.impulse, "An impulse on one body at the start: BODY:dx,dy,dz (mm/s, inertial) or BODY:beta=B,m=KG,U=KM_S "
-                                          "(DART's form: beta m U / M against the body's orbital motion); BODY primary or secondary");
-  cmd->add_flag("--observe", b.observe, "Read off every step: the mean orbit period, the secondary's libration (amplitude, mean, period), both spin "
-                                        "periods and the osculating elements at the end (the JSON's observables)");
-  cmd->add_flag("--force", b.force, "Run values that look like unit mistakes (G in SI, a density in g/cm3, sizes in metres, a period in seconds)");
   return {cmd, [&b] { return run_binary(b); }};
 }
 

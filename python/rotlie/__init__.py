@@ -170,5 +170,13 @@ from ._remainder import Remainder, remainder  # noqa: E402
 from ._commands import best, map_line, bch, md, md_simulation  # noqa: E402
 from ._rotlie import spin, SpinResult, SpinTrajectory  # noqa: E402  (typed in C++: python/src/spin.cpp)
 from ._rotlie import MdSimulation, SpinSimulation, spin_simulation  # noqa: E402  (python/src/*_simulation.cpp)
-from ._rotlie import binary, BinaryResult, BinaryTrajectory  # noqa: E402  (typed in C++: python/src/binary.cpp)
-from ._rotlie import binary_simulation, BinarySimulation  # noqa: E402  (python/src/binary_simulation.cpp)
+from ._rotlie import BinaryResult, BinaryTrajectory, BinarySimulation  # noqa: E402  (python/src/binary*.cpp)
+from ._typed import typed as _typed  # noqa: E402
+
+binary = _typed(_rotlie.binary, _rotlie._binary_keywords(), "BinaryResult")
+binary_simulation = _typed(_rotlie.binary_simulation, _rotlie._binary_simulation_keywords(), "BinarySimulation")
+
+
+def __dir__():
+    """dir(rotlie) lists the API only (the helpers it imports stay reachable but unlisted)."""
+    return sorted([*__all__, "SCALARS", "__version__"])

@@ -28,20 +28,15 @@ struct binary_object {
   runs::binary_result result;
   binary_trajectory trajectory;
   std::string json;  ///< `rotlie binary --json`'s text
+  py::object fields;  ///< the same, parsed once (read by the attributes)
 };
 
 std::array<double, 3> vec(const models::vec3<double>& x) { return {x[0], x[1], x[2]}; }
 
 py::array_t<double> array3(const models::vec3<double>& x) { return py::array_t<double>(3, x.data()); }
 
-binary_object binary(const py::object& system, const py::object& primary, const py::object& secondary, const py::object& density,
-                     const py::object& mass, int order, const py::object& G, const py::object& separation, const py::object& primary_period,
-                     const py::object& state, const std::string& integrator, const py::object& h, const py::object& T, const py::object& every,
-                     const py::object& impulse, bool observe, bool force, const py::kwargs& terms) {
-  auto q = binary_keywords(system, primary, secondary, density, mass, order, G, separation, primary_period, state, integrator, h, impulse, force, terms,
-                           "binary");
-  q.observe = observe;
-  q.T = number_argument(T, "T"), q.every = every_argument(every);
+binary_object binary(const py::kwargs& keywords) {
+  const auto q = binary_keywords(keywords, "binary", false);
   auto out = std::make_shared<binary_object>();
   run_symbolic([q, out] {  // a rotor SCHEME:PERM:LABEL is solved symbolically
     const auto setup = runs::binary_setup_of(q);
@@ -56,12 +51,13 @@ binary_object binary(const py::object& system, const py::object& primary, const 
     });
     out->json = runs::binary_json(out->result).dump();
   });
+  out->fields = py::module_::import("json").attr("loads")(out->json);
   for (const auto& w : out->result.check.warnings)
     if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 2) != 0) throw py::error_already_set();
   return std::move(*out);
 }
 
-py::object field(const binary_object& b, const char* key) { return py::module_::import("json").attr("loads")(b.json)[key]; }
+py::object field(const binary_object& b, const char* key) { return b.fields[key]; }
 
 }  // namespace
 
@@ -114,25 +110,16 @@ void bind_binary(py::module_& m) {
         return "<BinaryResult " + b.result.setup.method.name + ", order " + std::to_string(b.result.setup.order) + ", " +
                std::to_string(b.result.setup.steps) + " steps" + (b.result.check.unstable ? ", unstable>" : ">");
       });
-  m.def("binary", &binary, py::kw_only(), py::arg("system") = py::none(), py::arg("primary") = py::none(), py::arg("secondary") = py::none(),
-        py::arg("density") = py::none(), py::arg("mass") = py::none(), py::arg("order") = 2, py::arg("G") = "6.67430e-20",
-        py::arg("separation") = py::none(), py::arg("primary_period") = py::none(), py::arg("state") = py::none(), py::arg("integrator") = "SIER4",
-        py::arg("h") = py::none(), py::arg("T") = 0, py::arg("every") = py::none(), py::arg("impulse") = py::none(),
-        py::arg("observe") = false, py::arg("force") = false,
-        (R"(binary(*, system=None, primary=None, secondary=None, density=None, mass=None, order=2, G="6.67430e-20", separation=None,
-       primary_period=None, state=None, integrator="SIER4", h=None, T=0, every=None, impulse=None, observe=False, force=False, **terms) -> BinaryResult
-
-Two rigid bodies in mutual gravity (the full two-body problem), as ``rotlie binary`` (docs/binary.md); units km, kg, s.
-system: "didymos" or None; primary, secondary: "ellipsoid:a,b,c" (km) or "polyhedron:FILE"; density: kg/m3, one value
-or a pair; mass: (M1, M2) in kg; order: 0, 2 or 4; separation (km) with primary_period (hours): the circular start;
-state: a dict with r, v, Q1, Q2, omega1, omega2 or a JSON file's path; integrator: SIER2, SIER4, SIER2/X, SIER4/X,
-KEPLER2, KEPLER4, KEPLER2/X, KEPLER4/X, RK4, LGVI, odeint-rkf78[:TOL], odeint-dopri5[:TOL]; h, T: seconds (T a whole
-number of steps; T=0 the start's values); every: a trajectory sample every K steps (BinaryResult.trajectory).
-impulse: "BODY:dx,dy,dz" (mm/s) or "BODY:beta=B,m=KG,U=KM_S" at the start; observe=True reads off every step the mean
-orbit period, the libration, the spin periods and the osculating elements (BinaryResult.observables).
-force=True runs values that look like unit mistakes (G in SI, a density in g/cm3, sizes in metres, a period in
-seconds), which are otherwise refused. An untrusted run (BinaryResult.unstable) also raises a UserWarning; bodies that touch raise RuntimeError.
-Added force terms, each a keyword (BinaryResult.terms holds their values at the end):)" + term_keywords_doc()).c_str());
+  m.def("_binary_keywords", [] { return keyword_table(false); }, "binary's keywords: (name, annotation, default, help)");
+  py::options options;
+  options.disable_function_signatures();  // the signature help() shows is rotlie.binary's (python/rotlie/_typed.py)
+  m.def("binary", &binary,
+        ("Two rigid bodies in mutual gravity (the full two-body problem), as ``rotlie binary`` (docs/binary.md); units km, kg, s.\n"
+         "Returns a BinaryResult: the JSON's fields as attributes (arrays as NumPy), trajectory (every=K), observables (observe=True),\n"
+         "terms (each added force term's values at the end). An untrusted run (BinaryResult.unstable) also raises a UserWarning;\n"
+         "bodies that touch raise RuntimeError.\n\nKeywords:" +
+         keywords_doc(false))
+            .c_str());
 }
 
 }  // namespace rotlie::python

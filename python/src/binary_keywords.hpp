@@ -1,20 +1,20 @@
 #pragma once
-// rotlie.binary's and rotlie.binary_simulation's keywords as the floor's request (runs::binary_request):
-// numbers as the command line reads them, and each registered force term (runs/binary_terms.hpp) by
-// its name: a sequence of numbers or its text "a,b,…".
+// rotlie.binary's and rotlie.binary_simulation's keywords as the floor's request: each field of
+// runs/binary_fields.hpp by its name and kind, each registered force term (runs/binary_terms.hpp) by
+// its name (a sequence of numbers or its text), numbers as the command line reads them. Unknown,
+// misplaced or missing keywords raise TypeError as Python's own calls do.
 #include <pybind11/pybind11.h>
 
 #include <string>
 
 #include "arguments.hpp"
-#include "rotlie/runs/binary_run.hpp"
+#include "rotlie/runs/binary_fields.hpp"
 #include "rotlie/runs/binary_terms.hpp"
 
 namespace rotlie::python {
 
 // One value or a sequence, as the command line's "A" or "A,B,…".
 inline std::string numbers_argument(const py::handle& value, const char* what) {
-  if (value.is_none()) return "";
   if (py::isinstance<py::tuple>(value) || py::isinstance<py::list>(value)) {
     std::string text;
     for (const auto& x : value) text += (text.empty() ? "" : ",") + number_argument(x, what);
@@ -23,43 +23,73 @@ inline std::string numbers_argument(const py::handle& value, const char* what) {
   return number_argument(value, what);
 }
 
-inline std::string optional_number(const py::handle& value, const char* what) { return value.is_none() ? "" : number_argument(value, what); }
-
-inline std::string optional_text(const py::handle& value, const char* what) {
-  if (value.is_none()) return "";
-  if (!py::isinstance<py::str>(value)) type_error(std::string(what) + " must be text or None");
+inline std::string field_argument(const runs::binary_field& f, const py::handle& value) {
+  using kind = runs::binary_field::kind;
+  const char* name = f.name.c_str();
+  switch (f.type) {
+    case kind::number:
+      return number_argument(value, name);
+    case kind::numbers:
+      return numbers_argument(value, name);
+    case kind::integer:
+      if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value)) type_error(f.name + " must be an integer, got " + std::string(py::str(value.get_type().attr("__name__"))));
+      return py::str(value);
+    case kind::state:
+      return py::str(py::module_::import("os").attr("fspath")(value));
+    case kind::text:
+    case kind::flag:
+      break;
+  }
+  if (!py::isinstance<py::str>(value)) type_error(f.name + " must be text, got " + std::string(py::str(value.get_type().attr("__name__"))));
   return py::str(value);
 }
 
-/// The request of everything but T and every; `terms` the keywords beyond the named ones.
-inline runs::binary_request binary_keywords(const py::object& system, const py::object& primary, const py::object& secondary, const py::object& density,
-                                            const py::object& mass, int order, const py::object& G, const py::object& separation,
-                                            const py::object& primary_period, const py::object& state, const std::string& integrator,
-                                            const py::object& h, const py::object& impulse, bool force, const py::dict& terms,
-                                            const char* function) {
+/// The request of `function`'s keywords; a held simulation takes no run-only field (T, every, observe).
+inline runs::binary_request binary_keywords(const py::kwargs& keywords, const std::string& function, bool simulation) {
   runs::binary_request q;
-  q.system = optional_text(system, "system"), q.primary = optional_text(primary, "primary"), q.secondary = optional_text(secondary, "secondary");
-  q.density = numbers_argument(density, "density"), q.mass = numbers_argument(mass, "mass"), q.order = std::to_string(order);
-  q.G = number_argument(G, "G"), q.separation = optional_number(separation, "separation");
-  q.primary_period = optional_number(primary_period, "primary_period");
-  if (py::isinstance<py::dict>(state))
-    q.state_text = py::str(py::module_::import("json").attr("dumps")(state));
-  else
-    q.state_file = optional_text(state, "state (a file's path or a dict)");
-  q.integrator = integrator, q.h = optional_number(h, "h"), q.force = force, q.impulse = optional_text(impulse, "impulse");
-  for (const auto& [key, value] : terms) {
+  for (const auto& f : runs::binary_fields())  // Python's default where the command line requires the option
+    if (f.cli_required && f.python_default.size() > 2 && f.python_default.front() == '\'') q.*f.text = f.python_default.substr(1, f.python_default.size() - 2);
+  for (const auto& [key, value] : keywords) {
     const std::string name = py::str(key);
-    if (!runs::binary_term_named(name)) type_error(std::string(function) + "() got an unexpected keyword argument '" + name + "'");
-    if (!value.is_none()) q.terms[name] = numbers_argument(value, name.c_str());
+    if (runs::binary_term_named(name)) {
+      if (!value.is_none()) q.terms[name] = numbers_argument(value, name.c_str());
+      continue;
+    }
+    const auto* f = runs::binary_field_named(name);
+    if (!f || f->name != name) type_error(function + "() got an unexpected keyword argument '" + name + "'");
+    if (simulation && f->run_only) type_error(function + "() takes no '" + name + "': a simulation runs as far as integrate(t) asks");
+    if (value.is_none()) continue;
+    if (f->type == runs::binary_field::kind::flag) {
+      if (!py::isinstance<py::bool_>(value)) type_error(name + " must be True or False");
+      q.*f->flag = value.cast<bool>();
+    } else if (f->type == runs::binary_field::kind::state && py::isinstance<py::dict>(value)) {
+      q.state_text = py::str(py::module_::import("json").attr("dumps")(value));
+    } else {
+      q.*f->text = field_argument(*f, value);
+    }
   }
+  if (!simulation)
+    for (const auto& f : runs::binary_fields())
+      if (f.python_default.empty() && !keywords.contains(f.name)) type_error(function + "() missing required keyword argument: '" + f.name + "'");
   return q;
 }
 
-/// The docstring's lines for the registered terms.
-inline std::string term_keywords_doc() {
+/// The docstring's keyword lines: the fields (a simulation's without the run-only ones), then the terms.
+inline std::string keywords_doc(bool simulation) {
   std::string text;
-  for (const auto& term : runs::binary_terms()) text += "\n" + term.name + ": " + term.summary + " (" + runs::term_syntax(term) + "), a sequence or its text";
+  for (const auto& f : runs::binary_fields())
+    if (!(simulation && f.run_only))
+      text += "\n" + f.name + " (" + f.python_type + (f.python_default.empty() ? ", required" : ", default " + f.python_default) + "): " + f.help;
+  for (const auto& term : runs::binary_terms()) text += "\n" + term.name + " (added force term, " + runs::term_syntax(term) + "): " + term.summary;
   return text;
+}
+
+/// (name, annotation, default as Python writes it or "" when required, help) of each keyword, for the signature.
+inline py::list keyword_table(bool simulation) {
+  py::list out;
+  for (const auto& f : runs::binary_fields())
+    if (!(simulation && f.run_only)) out.append(py::make_tuple(f.name, f.python_type, f.python_default, f.help));
+  return out;
 }
 
 }  // namespace rotlie::python

@@ -23,16 +23,8 @@ constexpr long steps_between_polls = 256;  // a Ctrl-C is seen within this many 
 
 py::array_t<double> state_array(const models::vec3<double>& x) { return py::array_t<double>(3, x.data()); }
 
-std::shared_ptr<runs::binary_simulation> binary_simulation(const py::object& system, const py::object& primary, const py::object& secondary,
-                                                           const py::object& density, const py::object& mass, int order, const py::object& G,
-                                                           const py::object& separation, const py::object& primary_period, const py::object& state,
-                                                           const std::string& integrator, const py::object& h, const py::object& impulse, bool force,
-                                                           const py::kwargs& terms) {
-  for (const char* run_only : {"T", "every"})
-    if (terms.contains(run_only))
-      type_error(std::string("binary_simulation() takes no '") + run_only + "': a simulation runs as far as integrate(t) asks");
-  auto q = binary_keywords(system, primary, secondary, density, mass, order, G, separation, primary_period, state, integrator, h, impulse, force, terms,
-                           "binary_simulation");
+std::shared_ptr<runs::binary_simulation> binary_simulation(const py::kwargs& keywords) {
+  auto q = binary_keywords(keywords, "binary_simulation", true);
   if (q.h.empty()) throw std::invalid_argument("binary_simulation: h (the step in seconds) is required");
   q.T = "0";
   std::shared_ptr<runs::binary_simulation> out;
@@ -88,16 +80,15 @@ void bind_binary_simulation(py::module_& m) {
       .def("__repr__", [](const runs::binary_simulation& s) {
         return "<BinarySimulation " + s.setup().method.name + ", t = " + std::to_string(s.t()) + " s, " + std::to_string(s.steps()) + " steps>";
       });
-  m.def("binary_simulation", &binary_simulation, py::kw_only(), py::arg("system") = py::none(), py::arg("primary") = py::none(),
-        py::arg("secondary") = py::none(), py::arg("density") = py::none(), py::arg("mass") = py::none(), py::arg("order") = 2,
-        py::arg("G") = "6.67430e-20", py::arg("separation") = py::none(), py::arg("primary_period") = py::none(), py::arg("state") = py::none(),
-        py::arg("integrator") = "SIER4", py::arg("h") = py::none(), py::arg("impulse") = py::none(), py::arg("force") = false,
-        (R"(binary_simulation(*, system=None, primary=None, secondary=None, density=None, mass=None, order=2, G="6.67430e-20",
-                  separation=None, primary_period=None, state=None, integrator="SIER4", h=None, impulse=None, force=False, **terms) -> BinarySimulation
-
-The full two-body problem as a simulation you hold: rotlie.binary's keywords but T and every (h required). sim.integrate(t)
-steps on to the absolute time t; integrate(T/2) then integrate(T) equals one run to T bit for bit. copy.copy(sim) saves
-it whole. Added force terms, each a keyword:)" + term_keywords_doc()).c_str());
+  m.def("_binary_simulation_keywords", [] { return keyword_table(true); }, "binary_simulation's keywords: (name, annotation, default, help)");
+  py::options options;
+  options.disable_function_signatures();  // the signature help() shows is rotlie.binary_simulation's (python/rotlie/_typed.py)
+  m.def("binary_simulation", &binary_simulation,
+        ("The full two-body problem as a simulation you hold: rotlie.binary's keywords but T, every and observe (h required).\n"
+         "sim.integrate(t) steps on to the absolute time t; integrate(T/2) then integrate(T) equals one run to T bit for bit.\n"
+         "copy.copy(sim) saves it whole. Ctrl-C stops integrate at a step's end, the state kept.\n\nKeywords:" +
+         keywords_doc(true))
+            .c_str());
 }
 
 }  // namespace rotlie::python

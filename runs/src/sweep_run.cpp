@@ -6,10 +6,10 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
-#include <set>
 #include <sstream>
 
 #include "ordered_lines.hpp"
+#include "rotlie/runs/binary_fields.hpp"
 #include "rotlie/runs/binary_io.hpp"
 #include "rotlie/runs/binary_run.hpp"
 #include "rotlie/runs/number_text.hpp"
@@ -25,8 +25,6 @@ using nlohmann::json;
 
 constexpr int sweep_format_version = 1;
 constexpr std::size_t input_limit = std::size_t(64) << 20;  // 64 MiB of runs
-const std::set<std::string> known_options = {"system", "primary", "secondary", "density", "mass", "order", "G", "separation",
-                                             "primary-period", "primary_period", "state", "integrator", "h", "T", "force", "impulse", "observe"};
 
 std::string fnv1a(const std::string& text) {
   std::uint64_t h = 1469598103934665603ull;
@@ -39,7 +37,13 @@ std::string fnv1a(const std::string& text) {
 // An option's value as the command line would have it: text as is, a number as JSON writes it.
 std::string option_text(const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
 
-bool known_option(const std::string& key) { return known_options.count(key) > 0 || binary_term_named(key) != nullptr; }
+// A field a sweep line may give (runs/binary_fields.hpp), or nullptr.
+const binary_field* sweep_field(const std::string& key) {
+  const auto* f = binary_field_named(key);
+  return f && f->sweep ? f : nullptr;
+}
+
+bool known_option(const std::string& key) { return sweep_field(key) != nullptr || binary_term_named(key) != nullptr; }
 
 // A term's values: text, a number, or an array of numbers (as the command line's "A,B,…").
 std::string term_text(const json& v) {
@@ -51,22 +55,17 @@ std::string term_text(const json& v) {
 
 binary_request request_of(const json& j) {
   binary_request r;
-  if (j.contains("force")) r.force = j["force"].get<bool>();
-  if (j.contains("observe")) r.observe = j["observe"].get<bool>();
-  if (j.contains("impulse")) r.impulse = option_text(j["impulse"]);
-  for (const auto& term : binary_terms())
-    if (j.contains(term.name)) r.terms[term.name] = term_text(j[term.name]);
-  const auto take = [&](const char* key, std::string& into) {
-    if (j.contains(key)) into = option_text(j[key]);
-  };
-  take("system", r.system), take("primary", r.primary), take("secondary", r.secondary), take("density", r.density), take("mass", r.mass);
-  take("order", r.order), take("G", r.G), take("separation", r.separation), take("primary_period", r.primary_period);
-  take("primary-period", r.primary_period), take("integrator", r.integrator), take("h", r.h), take("T", r.T);
-  if (j.contains("state")) {
-    if (j["state"].is_object())
-      r.state_text = j["state"].dump();
-    else
-      r.state_file = option_text(j["state"]);
+  for (const auto& [key, value] : j.items()) {
+    if (const auto* term = binary_term_named(key)) {
+      r.terms[term->name] = term_text(value);
+    } else if (const auto* f = sweep_field(key)) {
+      if (f->type == binary_field::kind::flag)
+        r.*f->flag = value.get<bool>();
+      else if (f->type == binary_field::kind::state && value.is_object())
+        r.state_text = value.dump();
+      else
+        r.*f->text = option_text(value);
+    }
   }
   return r;
 }
@@ -94,9 +93,11 @@ sweep_plan plan_sweep(const std::filesystem::path& input) {
     for (const auto& [key, value] : j.items()) {
       if (!known_option(key)) throw bad_input(where + ": '" + one_line(key) + "' is not an option of binary (a sweep takes no --every or --json)");
       const bool numbers = value.is_array() && binary_term_named(key) && std::all_of(value.begin(), value.end(), [](const json& x) { return x.is_number(); });
-      const bool flag = key == "force" || key == "observe";
+      const auto* f = sweep_field(key);
+      const bool flag = f && f->type == binary_field::kind::flag;
       if (flag && !value.is_boolean()) throw bad_input(where + ": '" + key + "' must be true or false");
-      if (!(value.is_string() || value.is_number() || numbers || (key == "state" && value.is_object()) || flag))
+      const bool state = f && f->type == binary_field::kind::state && value.is_object();
+      if (!(value.is_string() || value.is_number() || numbers || state || flag))
         throw bad_input(where + ": '" + one_line(key) + "' must be text or a number" + (binary_term_named(key) ? " (or an array of numbers)" : ""));
     }
     plan.inputs.push_back(j.dump());

@@ -1,6 +1,7 @@
 """Shared helpers of the Python package's tests: the rotlie command line, for the same numbers."""
 import json
 import os
+import re
 import pathlib
 import subprocess
 
@@ -26,11 +27,12 @@ def cli(*args, expect=0):
 
 
 def cli_error(*args):
-    """The one-line message `rotlie` prints for bad arguments (exit status 2), without its prefix."""
+    """The one-line message `rotlie` prints for bad arguments (exit status 2), without its prefix, its
+    options named as Python names them (--primary-period as primary_period): Python's message."""
     line = cli(*args, expect=2).strip()
     prefix = "rotlie: error: "
     assert line.startswith(prefix) and "\n" not in line, line
-    return line[len(prefix):]
+    return re.sub(r"--([A-Za-z][A-Za-z0-9]*(?:-[A-Za-z0-9]+)*)", lambda m: m.group(1).replace("-", "_"), line[len(prefix):])
 
 
 def pytest_sessionfinish(session, exitstatus):

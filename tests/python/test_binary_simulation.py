@@ -70,3 +70,28 @@ def test_ctrl_c_stops_at_a_steps_end_and_keeps_the_state():
     assert 0 < reached < 3e7 and sim.t == reached * 1.0
     sim.integrate(sim.t + 10)  # it continues from there
     assert sim.steps == reached + 10
+
+
+def test_the_signature_shows_types_and_defaults_from_the_request_table():
+    import inspect
+    sig = inspect.signature(rotlie.binary)
+    assert sig.parameters["order"].default == 2 and sig.parameters["order"].annotation == "int"
+    assert sig.parameters["G"].default == "6.67430e-20"
+    assert sig.parameters["T"].default is inspect.Parameter.empty  # required
+    assert sig.parameters["terms"].kind is inspect.Parameter.VAR_KEYWORD
+    assert "T" not in inspect.signature(rotlie.binary_simulation).parameters
+    assert "sun (added force term" in rotlie.binary.__doc__
+    with pytest.raises(TypeError, match="missing required keyword argument: 'T'"):
+        rotlie.binary(system="didymos")
+    with pytest.raises(TypeError, match="order must be an integer, got float"):
+        rotlie.binary(system="didymos", T=0, order=2.0)
+
+
+def test_errors_name_pythons_keywords_and_dir_shows_the_api():
+    with pytest.raises(ValueError, match=r"^primary_period 0.001 h \(3.6 s\) is faster"):
+        rotlie.binary(system="didymos", primary_period=0.001, T=0)
+    with pytest.raises(ValueError, match="SI's value"):
+        rotlie.binary(system="didymos", G=6.674e-11, T=0)
+    assert rotlie.binary(system="didymos", G=6.674e-11, T=0, force=True).G == 6.674e-11
+    names = dir(rotlie)
+    assert "binary_simulation" in names and "np" not in names and "json" not in names and "_rotlie" not in names

@@ -44,7 +44,7 @@ def test_remainder_and_two_parameter_limits_match_the_command_line():
                   "solve", "--family", "Q", "--scheme", "ABCBA", "--inertia", "water")
     raises_as_cli(lambda: rotlie.solve(WATER, family="QRS", starts=0),
                   "solve", "--family", "QRS", "--starts", "0", "--inertia", "water")
-    with pytest.raises(ValueError, match="--starts and --seed apply to"):
+    with pytest.raises(ValueError, match="starts and seed apply to"):
         rotlie.solve(WATER, family="N", seed=3)
 
 

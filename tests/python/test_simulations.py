@@ -55,9 +55,9 @@ def test_spin_simulation_off_the_grid_the_past_and_steps():
 
 
 def test_spin_simulation_refuses_what_spin_refuses():
-    with pytest.raises(ValueError, match="--integrator"):
+    with pytest.raises(ValueError, match="integrator"):
         rotlie.spin_simulation("Moon", e=0, integrator="NOPE", h="1/100")
-    with pytest.raises(ValueError, match="--e"):
+    with pytest.raises(ValueError, match="e "):
         rotlie.spin_simulation("Moon", e=1.5, integrator="SIER4", h="1/100")
     with pytest.raises(TypeError):
         rotlie.spin_simulation("Moon", e=0, integrator="SIER4", h="1/100", T=1)
