@@ -38,17 +38,22 @@ py::array_t<double> array3(const models::vec3<double>& x) { return py::array_t<d
 binary_object binary(const py::kwargs& keywords) {
   const auto q = binary_keywords(keywords, "binary", false);
   auto out = std::make_shared<binary_object>();
-  run_symbolic([q, out] {  // a rotor SCHEME:PERM:LABEL is solved symbolically
-    const auto setup = runs::binary_setup_of(q);
-    const auto sys = setup.system_model();
+  auto setup = std::make_shared<runs::binary_setup>();
+  run_symbolic([q, setup] { *setup = runs::binary_setup_of(q); });  // a rotor SCHEME:PERM:LABEL is solved symbolically
+  // the run itself stops on Ctrl-C within 64 steps
+  run_cancellable([&](const cancellation& cancel) {
+    const auto sys = setup->system_model();
     auto& tr = out->trajectory;
-    tr.every = setup.every;
-    out->result = runs::binary_run(setup, [&](const runs::binary_sample& s) {
-      tr.t.push_back(s.t), tr.energy.push_back(s.energy), tr.r.push_back(vec(s.x.r)), tr.v.push_back(vec(s.x.v));
-      tr.Q1.push_back(s.x.body[0].Q.a), tr.Q2.push_back(s.x.body[1].Q.a);
-      tr.omega1.push_back(vec(models::angular_velocity(sys.moments(0), s.x.body[0].G)));
-      tr.omega2.push_back(vec(models::angular_velocity(sys.moments(1), s.x.body[1].G)));
-    });
+    tr.every = setup->every;
+    out->result = runs::binary_run(
+        *setup,
+        [&](const runs::binary_sample& s) {
+          tr.t.push_back(s.t), tr.energy.push_back(s.energy), tr.r.push_back(vec(s.x.r)), tr.v.push_back(vec(s.x.v));
+          tr.Q1.push_back(s.x.body[0].Q.a), tr.Q2.push_back(s.x.body[1].Q.a);
+          tr.omega1.push_back(vec(models::angular_velocity(sys.moments(0), s.x.body[0].G)));
+          tr.omega2.push_back(vec(models::angular_velocity(sys.moments(1), s.x.body[1].G)));
+        },
+        {}, [&] { return cancel.requested(); });
     out->json = runs::binary_json(out->result).dump();
   });
   out->fields = py::module_::import("json").attr("loads")(out->json);

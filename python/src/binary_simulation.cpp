@@ -19,8 +19,6 @@
 namespace rotlie::python {
 namespace {
 
-constexpr long steps_between_polls = 256;  // a Ctrl-C is seen within this many steps
-
 py::array_t<double> state_array(const models::vec3<double>& x) { return py::array_t<double>(3, x.data()); }
 
 std::shared_ptr<runs::binary_simulation> binary_simulation(const py::kwargs& keywords) {
@@ -37,7 +35,7 @@ void integrate_to(runs::binary_simulation& sim, double t) {
   if (t < sim.t()) throw std::invalid_argument("integrate: t = " + std::to_string(t) + " s lies before the simulation's time " + std::to_string(sim.t()) + " s");
   run_cancellable([&](const cancellation& cancel) {
     const long target = static_cast<long>(std::floor(t / sim.h() + 1e-9));
-    while (sim.steps() < target && !cancel.requested()) sim.advance(std::min(steps_between_polls, target - sim.steps()));
+    sim.advance(target - sim.steps(), {}, {}, [&] { return cancel.requested(); });
   });
 }
 

@@ -215,7 +215,8 @@ binary_setup binary_setup_of(const binary_request& given) {
   return s;
 }
 
-binary_result binary_run(const binary_setup& s, const std::function<void(const binary_sample&)>& sample, const std::function<void(double)>& progress) {
+binary_result binary_run(const binary_setup& s, const std::function<void(const binary_sample&)>& sample, const std::function<void(double)>& progress,
+                         const std::function<bool()>& stop) {
   binary_setup stepped = s;
   if (!(stepped.h > 0)) stepped.h = 1;  // T = 0 without a step: nothing is stepped
   binary_observer observer;
@@ -226,9 +227,10 @@ binary_result binary_run(const binary_setup& s, const std::function<void(const b
     if (sample && s.every > 0 && std::llround(x.t / stepped.h) % s.every == 0) sample(x);
   };
   if (s.observe)
-    simulation.advance(s.steps, observed, progress);
+    simulation.advance(s.steps, observed, progress, stop);
   else
-    simulation.advance(s.steps, sample, progress);
+    simulation.advance(s.steps, sample, progress, stop);
+  if (simulation.steps() < s.steps) throw binary_stopped();
   auto r = simulation.result();
   if (s.observe) r.observables = observer.result(simulation.system(), r.end.x);
   r.setup = s;

@@ -30,6 +30,7 @@ constexpr double max_checks = 1e4;               // the conserved quantities' sa
 constexpr long open_check_every = 100;           // the same when the run's length is not known
 constexpr double adaptive_steps_per_orbit = 1e6;  // an adaptive run's budget (tried steps per mutual orbit)
 constexpr double step_grid_slack = 1e-9;          // a target time this close to a step's end reaches it
+constexpr long stop_poll_steps = 64;               // how often a run asks whether to stop
 
 }  // namespace
 
@@ -243,7 +244,8 @@ void binary_simulation::integrate(double t, const std::function<void(const binar
   advance(static_cast<long>(target) - steps_, sample, progress);
 }
 
-void binary_simulation::advance(long count, const std::function<void(const binary_sample&)>& sample, const std::function<void(double)>& progress) {
+void binary_simulation::advance(long count, const std::function<void(const binary_sample&)>& sample, const std::function<void(double)>& progress,
+                                const std::function<bool()>& stop) {
   if (count < 0) throw std::invalid_argument("a simulation does not step backwards");
   const auto& s = setup_;
   const long end = steps_ + count;
@@ -253,6 +255,7 @@ void binary_simulation::advance(long count, const std::function<void(const binar
   double sampling = 0;
   const double begin = models::thread_cpu_seconds(), checks_before = watch_->spent();
   for (long k = steps_ + 1; k <= end; ++k) {
+    if (stop && k % stop_poll_steps == 0 && stop()) break;
     stepper_->step(x_, k - 1, s.h);
     steps_ = k;
     if (bodies_touch(s.primary, x_.body[0].Q, s.secondary, x_.body[1].Q, x_.r)) throw binary_contact(static_cast<double>(k) * s.h, k);

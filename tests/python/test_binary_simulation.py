@@ -95,3 +95,16 @@ def test_errors_name_pythons_keywords_and_dir_shows_the_api():
     assert rotlie.binary(system="didymos", G=6.674e-11, T=0, force=True).G == 6.674e-11
     names = dir(rotlie)
     assert "binary_simulation" in names and "np" not in names and "json" not in names and "_rotlie" not in names
+
+
+def test_ctrl_c_stops_a_long_binary_run_and_frees_the_module():
+    timer = threading.Timer(0.5, lambda: signal.raise_signal(signal.SIGINT))
+    timer.start()
+    started = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        rotlie.binary(system="didymos", integrator="SIER4", order=4, h=1, T=3e7)
+    assert time.monotonic() - started < 5
+    # the next call is not held up by the abandoned run
+    started = time.monotonic()
+    rotlie.binary(system="didymos", integrator="SIER4", h=60, T=600)
+    assert time.monotonic() - started < 2

@@ -123,7 +123,13 @@ struct binary_contact : std::runtime_error {
 /// Runs the setup; `sample` (if given) receives the state at steps 0, every, 2·every, …, and `progress`
 /// (if given) the fraction done about every 1 % of the steps. Throws binary_contact, or
 /// std::runtime_error when an adaptive run exhausts its step budget.
+/// `stop` (if given) is asked every 64 steps; when it says so the run throws binary_stopped.
 binary_result binary_run(const binary_setup& setup, const std::function<void(const binary_sample&)>& sample = {},
-                         const std::function<void(double)>& progress = {});
+                         const std::function<void(double)>& progress = {}, const std::function<bool()>& stop = {});
+
+/// The run was stopped before its end (binary_run's `stop`): no result.
+struct binary_stopped : std::runtime_error {
+  binary_stopped() : std::runtime_error("the run was stopped before its end") {}
+};
 
 }  // namespace rotlie::runs

@@ -35,8 +35,10 @@ class binary_simulation {
   /// `every`-th step's state; `progress` the fraction of this call's steps done, about every 1 %.
   void integrate(double t, const std::function<void(const binary_sample&)>& sample = {}, const std::function<void(double)>& progress = {});
 
-  /// The same, by a count of steps.
-  void advance(long steps, const std::function<void(const binary_sample&)>& sample = {}, const std::function<void(double)>& progress = {});
+  /// The same, by a count of steps; `stop` (if given) is asked every 64 steps and ends the call early
+  /// when it says so (the state that of the last step taken).
+  void advance(long steps, const std::function<void(const binary_sample&)>& sample = {}, const std::function<void(double)>& progress = {},
+               const std::function<bool()>& stop = {});
 
   double t() const { return static_cast<double>(steps_) * setup_.h; }
   long steps() const { return steps_; }
