@@ -2,52 +2,34 @@
 // Didymos system. The benchmark's observables from two starts (the circular start that balances the
 // mutual pull, and the public GUBAS example's start), the period change of an impulsive Δv on the
 // secondary at DART's geometry, and error against CPU time for every integrator at orders 2 and 4.
-// Every number is runs::'s (binary_study.hpp); the section formats and draws.
-#include <algorithm>
+// Every number is runs::'s (didymos_study.hpp, binary_study.hpp); the section formats and draws.
 #include <cmath>
-#include <limits>
 #include <map>
 #include <sstream>
+#include <utility>
 
 #include "rotlie/reports/chart.hpp"
 #include "rotlie/reports/report.hpp"
 #include "rotlie/reports/section_writer.hpp"
-#include "rotlie/runs/binary_study.hpp"
+#include "rotlie/runs/didymos_study.hpp"
 #include "rotlie/runs/number_text.hpp"
-#include "rotlie/schemes/message_number.hpp"
 #include "sections.hpp"
 
 namespace rotlie::reports {
 namespace {
 
 constexpr double hour = 3600;
-constexpr double orbit_unit = 42240;  // s: a whole number of every step of the study, near one mutual orbit (11.73 h)
 
 // Quotes: the observed system (not computed here).
 constexpr double observed_period_h = 11.921473;   // Dimorphos's pre-impact orbit (Scheirich & Pravec 2022)
 constexpr double observed_change_min = -33.0;     // ± 1.0 min (Thomas et al. 2023, Nature 616, 448)
 constexpr double observed_primary_h = 2.2600;     // Didymos's rotation (Pravec et al. 2006)
 // DART's momentum transfer (Cheng et al. 2023, Nature 616, 457): mass and speed at impact, and β
-constexpr double dart_mass_kg = 579.4, dart_speed_km_s = 6.1449, dart_beta = 3.61;
-
-runs::binary_setup didymos(int order, const std::string& integrator, double h, double T, bool gubas_start) {
-  runs::binary_request r;
-  r.system = "didymos";
-  r.order = std::to_string(order);
-  r.integrator = integrator;
-  r.h = schemes::message_number(h);
-  r.T = schemes::message_number(T);
-  if (gubas_start) {
-    // the GUBAS example's start (example/hou_config.cfg): 1200 m, 0.175704287113523 m/s, frames aligned
-    r.state_text = R"({"r": [1.2, 0, 0], "v": [0, 0.000175704287113523, 0], "Q1": [[1,0,0],[0,1,0],[0,0,1]], "Q2": [[1,0,0],[0,1,0],[0,0,1]],
-                       "omega1": [0, 0, 7.72269580528e-4], "omega2": [0, 0, 1.46420239261e-4]})";
-  }
-  return runs::binary_setup_of(r);
-}
+constexpr runs::dart_impact dart{579.4, 6.1449, 3.61};
 
 void benchmark_table(std::ostringstream& md, const report_options& o, double days) {
   if (o.progress) o.progress("Binary asteroid: the Didymos benchmark");
-  const double T = std::round(days * 86400 / 60) * 60;
+  const double T = runs::didymos_span_s(days);
   md << "### The Didymos system\n\n"
      << "`--system didymos`: the secondary 103.16 × 79.35 × 66.13 m, both bodies of density 2203.1 kg/m³, 1.2 km apart, the primary "
         "spinning in 2.26 h (the public GUBAS example configuration) and the primary an ellipsoid 398.88 × 391.30 × 383.48 m (GUBAS's "
@@ -56,15 +38,15 @@ void benchmark_table(std::ostringstream& md, const report_options& o, double day
      << runs::significant_text(T / 86400, 3) << " days by KEPLER4 at h = 60 s, sampled every 5 minutes:\n\n"
      << "| start | order | mutual orbit (h) | separation (km) | libration of the secondary (°) | its period (h) | primary's spin (h) |\n"
         "|:--|--:|--:|--:|--:|--:|--:|\n";
-  for (const bool gubas : {false, true})
-    for (const int order : {2, 4}) {
-      const auto ob = runs::observe_binary(didymos(order, "KEPLER4", 60, T, gubas), 5);
-      md << "| " << (gubas ? "GUBAS example (0.1757 m/s)" : "circular, balanced") << " | " << order << " | " << runs::significant_text(ob.orbit_period_h, 6)
-         << " | " << runs::significant_text(ob.separation_min_km, 5) << " – " << runs::significant_text(ob.separation_max_km, 5) << " | "
-         << runs::significant_text(ob.libration_mean_deg, 3) << " ± " << runs::significant_text(ob.libration_amplitude_deg, 3) << " | "
-         << (ob.libration_period_h > 0 ? runs::significant_text(ob.libration_period_h, 4) : std::string("–")) << " | "
-         << runs::significant_text(ob.primary_period_h, 6) << " |\n";
-    }
+  for (const auto& row : runs::didymos_benchmark(T)) {
+    const auto& ob = row.observed;
+    md << "| " << (row.gubas_start ? "GUBAS example (0.1757 m/s)" : "circular, balanced") << " | " << row.order << " | "
+       << runs::significant_text(ob.orbit_period_h, 6) << " | " << runs::significant_text(ob.separation_min_km, 5) << " – "
+       << runs::significant_text(ob.separation_max_km, 5) << " | " << runs::significant_text(ob.libration_mean_deg, 3) << " ± "
+       << runs::significant_text(ob.libration_amplitude_deg, 3) << " | "
+       << (ob.libration_period_h > 0 ? runs::significant_text(ob.libration_period_h, 4) : std::string("–")) << " | "
+       << runs::significant_text(ob.primary_period_h, 6) << " |\n";
+  }
   md << "\nObserved (quotes): the mutual orbit " << observed_period_h << " h before the impact (Scheirich & Pravec 2022), the primary's "
      << "rotation " << observed_primary_h << " h (Pravec et al. 2006). The circular start is a relative equilibrium for an axisymmetric "
         "primary: its libration is what the primary's small triaxiality and the fourth-degree terms force. The GUBAS start is not balanced "
@@ -73,23 +55,18 @@ void benchmark_table(std::ostringstream& md, const report_options& o, double day
 
 void dart_table(std::ostringstream& md, const report_options& o, double days) {
   if (o.progress) o.progress("Binary asteroid: an impulsive Δv at DART's geometry");
-  const double T = std::round(days * 86400 / 60) * 60;
-  const auto before_setup = didymos(4, "KEPLER4", 60, T, false);
-  const double M2 = before_setup.system_model().body(1).mass;
-  const double dv_beta = dart_beta * dart_mass_kg * dart_speed_km_s / M2;  // km/s
-  const auto before = runs::observe_binary(before_setup, 5);
+  const double T = runs::didymos_span_s(days);
+  const auto d = runs::dart_period_change(dart, T);
   md << "### DART, as a worked example\n\n"
      << "An impulsive Δv on the secondary against its orbital motion, at the circular start (order 4, KEPLER4 at h = 60 s, the "
         "period read over "
-     << runs::significant_text(T / 86400, 3) << " days). Δv from DART's momentum, β m U / M₂ with m = " << dart_mass_kg << " kg, U = "
-     << dart_speed_km_s << " km/s and β = " << dart_beta << " (Cheng et al. 2023, quotes) and this model's M₂ = " << runs::scientific_or_dash(M2, 4)
-     << " kg:\n\n| Δv (mm/s) | mutual orbit (h) | change (min) |\n|--:|--:|--:|\n"
-     << "| 0 | " << runs::significant_text(before.orbit_period_h, 6) << " | – |\n";
-  for (const double dv : {dv_beta, dv_beta / 2, 2 * dv_beta}) {
-    const auto after = runs::observe_binary(runs::with_impulse(before_setup, dv), 5);
-    md << "| " << runs::significant_text(dv * 1e6, 3) << " | " << runs::significant_text(after.orbit_period_h, 6) << " | "
-       << runs::significant_text((after.orbit_period_h - before.orbit_period_h) * 60, 4) << " |\n";
-  }
+     << runs::significant_text(T / 86400, 3) << " days). Δv from DART's momentum, β m U / M₂ with m = " << dart.mass_kg << " kg, U = "
+     << dart.speed_km_s << " km/s and β = " << dart.beta << " (Cheng et al. 2023, quotes) and this model's M₂ = "
+     << runs::scientific_or_dash(d.secondary_mass_kg, 4) << " kg:\n\n| Δv (mm/s) | mutual orbit (h) | change (min) |\n|--:|--:|--:|\n"
+     << "| 0 | " << runs::significant_text(d.period_before_h, 6) << " | – |\n";
+  for (const auto& r : d.rows)
+    md << "| " << runs::significant_text(r.dv_km_s * 1e6, 3) << " | " << runs::significant_text(r.period_h, 6) << " | "
+       << runs::significant_text(r.change_min, 4) << " |\n";
   md << "\nObserved (quote): " << observed_change_min << " ± 1.0 min (Thomas et al. 2023). The model leaves out what the impact did "
         "besides the push: the ejecta's momentum not along the orbit, Dimorphos's mass loss and reshaping (which changes its "
         "moments and the mutual potential), the real shapes (shape models instead of ellipsoids), the Sun's tide and radiation "
@@ -98,16 +75,8 @@ void dart_table(std::ostringstream& md, const report_options& o, double days) {
 }
 
 void cost_tables(report_section& s, std::ostringstream& md, const report_options& o) {
-  runs::binary_cost_plan plan;
   const double orbits = o.full ? 1000 : o.quick ? 2 : 10;
-  plan.T = orbits * orbit_unit;
-  plan.integrators = {"SIER2", "SIER4", "SIER6", "KEPLER2", "KEPLER4", "KEPLER6", "SIER4/ABCBA2:ABC", "KEPLER4/ABCBA2:ABC", "KEPLER6/ABCBA2:ABC",
-                      "LGVI", "RK4"};
-  plan.steps = o.quick ? std::vector<double>{480, 120, 30} : std::vector<double>{480, 240, 120, 60, 30};
-  plan.adaptive = {"odeint-rkf78:1e-9", "odeint-rkf78:1e-11", "odeint-rkf78:1e-13"};
-  plan.adaptive_h = 480;
-  plan.reference = "KEPLER4";
-  plan.reference_h = 7.5;
+  const auto plan = runs::didymos_cost_plan(orbits, o.quick);
   const auto result = runs::binary_cost_study(plan, [&](const std::string& line) {
     if (o.progress) o.progress(line);
   });
@@ -129,6 +98,7 @@ void cost_tables(report_section& s, std::ostringstream& md, const report_options
       md << "| " << r.integrator << " | " << r.h << " | " << r.steps << " | " << r.evaluations << " | " << runs::scientific_or_dash(r.cpu_s, 3) << " | "
          << runs::scientific_or_dash(r.error, 2) << (r.unstable ? " (unstable)" : "") << " | " << runs::scientific_or_dash(r.energy_error, 2) << " | "
          << runs::scientific_or_dash(r.angular_momentum_error, 2) << " |\n";
+      // one curve per integrator, RKF78's tolerances on one; a log chart leaves out the points it cannot place
       const std::string family = r.integrator.rfind("odeint-rkf78", 0) == 0 ? "odeint-rkf78" : r.integrator;
       auto& ser = series[family];
       ser.name = family;
@@ -141,28 +111,17 @@ void cost_tables(report_section& s, std::ostringstream& md, const report_options
     c.y_label = "error (relative position, attitude angles)";
     for (auto& [name, ser] : series) c.series.push_back(std::move(ser));
     add_chart(s, md, o, "binary_cost_order" + std::to_string(order), c, "Error against CPU time at order " + std::to_string(order) + ".");
-    // the goals' ratios: at the LGVI's error with h = 30 s, the cheapest splitting; at RKF78's tightest error, the same
-    const auto cheapest_at = [&](double error, const std::string& except) {
-      const runs::binary_cost_row* best = nullptr;
-      for (const auto& r : result.rows)
-        if (r.order == order && r.integrator != except && r.integrator.rfind("odeint", 0) != 0 && r.integrator != "RK4" && r.integrator != "LGVI" &&
-            r.error <= error && !r.unstable && (!best || r.cpu_s < best->cpu_s))
-          best = &r;
-      return best;
-    };
-    for (const auto& anchor : {std::pair<std::string, double>{"LGVI", 30}, {"odeint-rkf78:1e-13", plan.adaptive_h}}) {
-      const auto it = std::find_if(result.rows.begin(), result.rows.end(),
-                                   [&](const runs::binary_cost_row& r) { return r.order == order && r.integrator == anchor.first && r.h == anchor.second; });
-      if (it == result.rows.end()) continue;
-      const auto* best = cheapest_at(it->error, "");
-      md << "At the error of " << anchor.first << (anchor.first == "LGVI" ? " with h = 30 s" : "") << " (" << runs::scientific_or_dash(it->error, 2) << ", "
-         << runs::scientific_or_dash(it->cpu_s, 3) << " s): ";
-      if (best)
-        md << "the cheapest splitting that reaches it is " << best->integrator << " at h = " << best->h << " s (" << runs::scientific_or_dash(best->error, 2)
-           << ", " << runs::scientific_or_dash(best->cpu_s, 3) << " s): "
-           << (it->cpu_s >= best->cpu_s ? runs::significant_text(it->cpu_s / best->cpu_s, 3) + "× less CPU"
-                                        : runs::significant_text(best->cpu_s / it->cpu_s, 3) + "× more CPU (over this span; docs/binary.md has 10⁴ orbits)")
-           << ".\n\n";
+    // the goals' ratios: at the LGVI's error with h = 30 s, and at RKF78's tightest error
+    for (const auto& [anchor, h] : {std::pair<std::string, double>{"LGVI", 30}, {"odeint-rkf78:1e-13", plan.adaptive_h}}) {
+      const auto cheapest = runs::cheapest_splitting_at(result, order, anchor, h);
+      if (!cheapest) continue;
+      md << "At the error of " << anchor << (anchor == "LGVI" ? " with h = 30 s" : "") << " (" << runs::scientific_or_dash(cheapest->anchor.error, 2) << ", "
+         << runs::scientific_or_dash(cheapest->anchor.cpu_s, 3) << " s): ";
+      if (cheapest->found)
+        md << "the cheapest splitting that reaches it is " << cheapest->best.integrator << " at h = " << cheapest->best.h << " s ("
+           << runs::scientific_or_dash(cheapest->best.error, 2) << ", " << runs::scientific_or_dash(cheapest->best.cpu_s, 3) << " s): "
+           << runs::significant_text(cheapest->cpu_ratio, 3)
+           << (cheapest->less_cpu ? "× less CPU" : "× more CPU (over this span; docs/binary.md has 10⁴ orbits)") << ".\n\n";
       else
         md << "no splitting step of this sweep reaches it.\n\n";
     }

@@ -20,6 +20,9 @@ double rotation_angle(const models::mat3<double>& A, const models::mat3<double>&
   return std::atan2(s, c);
 }
 
+// The methods the cost study's goals compare against (Odeint, RK4, the LGVI) are not TV splittings.
+bool is_tv_splitting(const std::string& name) { return name.rfind("odeint", 0) != 0 && name != "RK4" && name != "LGVI"; }
+
 binary_setup setup_named(const std::string& system, int order, const std::string& integrator, double h, double T) {
   binary_request r;
   r.system = system;
@@ -77,6 +80,23 @@ binary_cost_result binary_cost_study(const binary_cost_plan& plan, const std::fu
       for (const double h : plan.steps) add(name, h);
     for (const auto& name : plan.adaptive) add(name, plan.adaptive_h);
   }
+  return out;
+}
+
+std::optional<cheapest_splitting> cheapest_splitting_at(const binary_cost_result& result, int order, const std::string& anchor, double h) {
+  const auto& rows = result.rows;
+  const auto it = std::find_if(rows.begin(), rows.end(), [&](const binary_cost_row& r) { return r.order == order && r.integrator == anchor && r.h == h; });
+  if (it == rows.end()) return std::nullopt;
+  cheapest_splitting out;
+  out.anchor = *it;
+  const binary_cost_row* best = nullptr;
+  for (const auto& r : rows)
+    if (r.order == order && is_tv_splitting(r.integrator) && r.error <= it->error && !r.unstable && (!best || r.cpu_s < best->cpu_s)) best = &r;
+  if (!best) return out;
+  out.found = true;
+  out.best = *best;
+  out.less_cpu = it->cpu_s >= best->cpu_s;
+  out.cpu_ratio = out.less_cpu ? it->cpu_s / best->cpu_s : best->cpu_s / it->cpu_s;
   return out;
 }
 

@@ -207,4 +207,13 @@ resonance_run resonance(const spin_body& body, double e, double p, double omega0
   return r;
 }
 
+std::vector<spin_body_ratios> spin_body_table() {
+  std::vector<spin_body_ratios> out;
+  for (const auto& b : spin_bodies()) {
+    const auto I = spin_moments(b);
+    out.push_back({b.name, I[0] / I[2], I[1] / I[2], (I[1] - I[0]) / I[2], b.orbit_e, b.source});
+  }
+  return out;
+}
+
 }  // namespace rotlie::runs

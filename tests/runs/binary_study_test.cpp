@@ -1,7 +1,8 @@
 // The binary scene's observables (runs/binary_study.hpp) against closed forms: at order 0 the mutual
 // orbit's period is Kepler's; a small secondary about a spherical primary librates with the linear
 // theory's period 2π / (n √(3(B − A)/C)); a tangential Δv changes the period as the vis-viva law says;
-// and a polyhedron of an ellipsoid moves as the ellipsoid does, to the mesh's error.
+// a polyhedron of an ellipsoid moves as the ellipsoid does, to the mesh's error; the report's Didymos
+// study: the cheapest splitting at an error, the sweep's steps dividing its span, DART against vis-viva.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -10,7 +11,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "rotlie/runs/binary_study.hpp"
+#include "rotlie/runs/didymos_study.hpp"
 
 BOOST_AUTO_TEST_SUITE(binary_study_test)
 
@@ -127,6 +128,71 @@ BOOST_AUTO_TEST_CASE(every_splitting_keeps_the_angular_momentum_over_a_thousand_
                             << result.check.max_rel_energy_error);
     BOOST_TEST(result.check.max_rel_angular_momentum_error < 1e-13, name);
     BOOST_TEST(!result.check.unstable, name);
+  }
+}
+
+// The goals' ratios read off a sweep: among the stable TV splittings of the anchor's order that reach its
+// error, the cheapest; Odeint, RK4 and the LGVI are not candidates, however cheap.
+BOOST_AUTO_TEST_CASE(the_cheapest_splitting_at_an_anchors_error) {
+  runs::binary_cost_result sweep;
+  const auto row = [](const std::string& name, int order, double h, double cpu, double error, bool unstable = false) {
+    runs::binary_cost_row r{name, order, h};
+    r.cpu_s = cpu, r.error = error, r.unstable = unstable;
+    return r;
+  };
+  sweep.rows = {row("LGVI", 2, 30, 4.0, 1e-6),     row("RK4", 2, 480, 0.1, 1e-7),      row("odeint-rkf78:1e-13", 2, 480, 0.2, 1e-12),
+                row("SIER2", 2, 120, 1.0, 1e-6),   row("KEPLER2", 2, 480, 0.5, 2e-6),  row("KEPLER2", 2, 240, 0.8, 5e-7),
+                row("SIER4", 2, 480, 0.3, 1e-7, true), row("KEPLER4", 4, 480, 0.05, 1e-9), row("KEPLER6", 2, 480, 2.0, 1e-12)};
+  const auto lgvi = runs::cheapest_splitting_at(sweep, 2, "LGVI", 30);
+  BOOST_REQUIRE(lgvi.has_value());
+  BOOST_REQUIRE(lgvi->found);
+  // KEPLER2 at 480 s misses the error, SIER4 is unstable, KEPLER4 is of order 4: KEPLER2 at 240 s, 5 times cheaper
+  BOOST_TEST(lgvi->best.integrator == "KEPLER2");
+  BOOST_TEST(lgvi->best.h == 240);
+  BOOST_TEST(lgvi->less_cpu);
+  BOOST_TEST(lgvi->cpu_ratio == 5.0, boost::test_tools::tolerance(1e-15));
+  // only KEPLER6 reaches RKF78's error, at ten times its CPU
+  const auto rkf = runs::cheapest_splitting_at(sweep, 2, "odeint-rkf78:1e-13", 480);
+  BOOST_REQUIRE(rkf.has_value());
+  BOOST_TEST(rkf->best.integrator == "KEPLER6");
+  BOOST_TEST(!rkf->less_cpu);
+  BOOST_TEST(rkf->cpu_ratio == 10.0, boost::test_tools::tolerance(1e-15));
+  BOOST_TEST(!runs::cheapest_splitting_at(sweep, 2, "LGVI", 60).has_value());  // no such anchor run
+  sweep.rows.pop_back();
+  BOOST_TEST(!runs::cheapest_splitting_at(sweep, 2, "odeint-rkf78:1e-13", 480)->found);
+}
+
+// Every step of the report's sweep, and the reference's two, divide its span: each run ends on T exactly.
+BOOST_AUTO_TEST_CASE(the_didymos_sweep_steps_divide_its_span) {
+  for (const bool quick : {true, false})
+    for (const double orbits : {2.0, 10.0, 1000.0}) {
+      const auto plan = runs::didymos_cost_plan(orbits, quick);
+      BOOST_TEST(plan.T == orbits * 42240);
+      auto steps = plan.steps;
+      steps.insert(steps.end(), {plan.adaptive_h, plan.reference_h, plan.reference_h / 2});
+      for (const double h : steps) BOOST_TEST(std::fmod(plan.T, h) == 0, "h = " << h << " s, T = " << plan.T << " s");
+    }
+  BOOST_TEST(runs::didymos_span_s(2) == 172800);
+  BOOST_TEST(runs::didymos_span_s(1.0 / 86400 * 89) == 60);  // 89 s rounds to a whole minute
+}
+
+// DART's Δv is β m U / M₂, and the period it leaves follows the vis-viva law about the mass the circular
+// start balances (GM = v² r). The pair to degree 4 is not two point masses: the mean period read over
+// 2 days departs from vis-viva's by 2-4 % (about 2 % over 12 days; the point-mass law itself is checked
+// to 1e-5 above), while a wrong sign, unit or factor in Δv would be far outside 5 %.
+BOOST_AUTO_TEST_CASE(darts_period_change_follows_the_vis_viva_law) {
+  const runs::dart_impact dart{579.4, 6.1449, 3.61};
+  const double T = runs::didymos_span_s(2);
+  const auto d = runs::dart_period_change(dart, T);
+  const auto start = runs::didymos_setup(4, "KEPLER4", 60, T, false).start;
+  BOOST_TEST(d.dv_km_s == 3.61 * 579.4 * 6.1449 / d.secondary_mass_kg, boost::test_tools::tolerance(1e-15));
+  const double r = std::sqrt(models::dot(start.r, start.r)), v = std::sqrt(models::dot(start.v, start.v)), GM = v * v * r;
+  BOOST_REQUIRE(d.rows.size() == 3u);
+  for (const auto& row : d.rows) {
+    const double w = v - row.dv_km_s, a = 1 / (2 / r - w * w / GM);
+    const double expected_min = (std::pow(a / r, 1.5) - 1) * d.period_before_h * 60;
+    BOOST_TEST_MESSAGE("Δv " << row.dv_km_s * 1e6 << " mm/s: " << row.change_min << " min against vis-viva's " << expected_min << " min");
+    BOOST_TEST(std::abs(row.change_min / expected_min - 1) < 0.05);
   }
 }
 

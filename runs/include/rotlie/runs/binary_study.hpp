@@ -2,7 +2,9 @@
 // The measurements behind the report's section "Binary asteroid" (docs/binary.md): the Didymos
 // system's observables (mutual orbit period, the secondary's libration, the primary's spin), the
 // period change of an impulsive Δv on the secondary (DART), and error against CPU time for every
-// integrator at orders 2 and 4.
+// integrator at orders 2 and 4, and the cheapest splitting at a given error.
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,5 +55,18 @@ binary_cost_result binary_cost_study(const binary_cost_plan& plan, const std::fu
 
 /// The distance of two final states as binary_cost_row::error measures it.
 double binary_state_error(const models::binary_state<double>& x, const models::binary_state<double>& reference);
+
+/// At the error one run of a cost sweep reached (`anchor` at step h, at one order): the cheapest TV
+/// splitting of the same order (Odeint, RK4 and the LGVI left out) that reaches it without going unstable.
+struct cheapest_splitting {
+  binary_cost_row anchor;
+  bool found = false;    ///< some splitting step of the sweep reaches the anchor's error
+  binary_cost_row best;  ///< when found
+  bool less_cpu = false; ///< the splitting needs no more CPU than the anchor
+  double cpu_ratio = 0;  ///< the larger CPU time over the smaller (≥ 1), when found
+};
+
+/// Empty when the sweep has no such anchor run.
+std::optional<cheapest_splitting> cheapest_splitting_at(const binary_cost_result& result, int order, const std::string& anchor, double h);
 
 }  // namespace rotlie::runs

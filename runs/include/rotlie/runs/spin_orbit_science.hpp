@@ -65,4 +65,13 @@ struct resonance_run {
 /// Started at θ = 0 at pericentre with spin rate omega0 (the periodic orbit's, so that no free libration is excited).
 resonance_run resonance(const spin_body& body, double e, double p, double omega0, int orbits, long steps_per_orbit);
 
+/// A named body's moments with C = 1 and its orbit, as the report's table of bodies lists them.
+struct spin_body_ratios {
+  std::string name;
+  double a_over_c = 0, b_over_c = 0, asphericity = 0;  ///< A/C, B/C, (B − A)/C
+  double e = 0;
+  std::string source;
+};
+std::vector<spin_body_ratios> spin_body_table();
+
 }  // namespace rotlie::runs

@@ -1,0 +1,58 @@
+#pragma once
+// The Didymos system as the report's "Binary asteroid" section shows it (docs/binary.md): its observables
+// from two starts, the period change of an impulsive Δv at DART's geometry, and the plan of the sweep of
+// error against CPU time. Plain numbers; the section formats them.
+#include <string>
+#include <vector>
+
+#include "rotlie/runs/binary_study.hpp"
+
+namespace rotlie::runs {
+
+/// s: a whole number of every step of the cost sweep, near one mutual orbit (11.73 h).
+inline constexpr double didymos_orbit_unit_s = 42240;
+
+/// `--system didymos` at an order, integrator, step h (s) and span T (s). gubas_start: the public GUBAS
+/// example's start (1200 m, 0.175704287113523 m/s, frames aligned) instead of the circular, balanced one.
+binary_setup didymos_setup(int order, const std::string& integrator, double h, double T, bool gubas_start);
+
+/// `days` rounded to whole minutes, in seconds: the span of the benchmark and DART runs.
+double didymos_span_s(double days);
+
+/// One start at one order, read over T by KEPLER4 at h = 60 s, sampled every 5 steps.
+struct didymos_benchmark_row {
+  bool gubas_start = false;
+  int order = 2;
+  binary_observables observed;
+};
+
+/// The circular start, then the GUBAS one, each at orders 2 and 4.
+std::vector<didymos_benchmark_row> didymos_benchmark(double T);
+
+/// A momentum transfer: Δv = β m U / M₂ (m in kg, U in km/s), against the secondary's orbital motion.
+struct dart_impact {
+  double mass_kg = 0, speed_km_s = 0, beta = 1;
+};
+
+struct dart_row {
+  double dv_km_s = 0;
+  double period_h = 0;    ///< the mean mutual orbit period after the impulse
+  double change_min = 0;  ///< against the period before
+};
+
+struct dart_result {
+  double secondary_mass_kg = 0;
+  double dv_km_s = 0;          ///< β m U / M₂
+  double period_before_h = 0;
+  std::vector<dart_row> rows;  ///< at Δv, Δv/2 and 2Δv
+};
+
+/// The circular start at order 4 (KEPLER4, h = 60 s, over T seconds, sampled every 5 steps), before and
+/// after the impulse.
+dart_result dart_period_change(const dart_impact& impact, double T);
+
+/// The report's sweep over `orbits` × didymos_orbit_unit_s: the TV splittings, the LGVI and RK4 at fixed
+/// steps (three with quick, five otherwise), Odeint's RKF78 at three tolerances, against KEPLER4 at 7.5 s.
+binary_cost_plan didymos_cost_plan(double orbits, bool quick);
+
+}  // namespace rotlie::runs

@@ -1,0 +1,59 @@
+#include "rotlie/runs/didymos_study.hpp"
+
+#include <cmath>
+
+#include "rotlie/schemes/message_number.hpp"
+
+namespace rotlie::runs {
+
+binary_setup didymos_setup(int order, const std::string& integrator, double h, double T, bool gubas_start) {
+  binary_request r;
+  r.system = "didymos";
+  r.order = std::to_string(order);
+  r.integrator = integrator;
+  r.h = schemes::message_number(h);
+  r.T = schemes::message_number(T);
+  if (gubas_start) {
+    // the GUBAS example's start (example/hou_config.cfg)
+    r.state_text = R"({"r": [1.2, 0, 0], "v": [0, 0.000175704287113523, 0], "Q1": [[1,0,0],[0,1,0],[0,0,1]], "Q2": [[1,0,0],[0,1,0],[0,0,1]],
+                       "omega1": [0, 0, 7.72269580528e-4], "omega2": [0, 0, 1.46420239261e-4]})";
+  }
+  return binary_setup_of(r);
+}
+
+double didymos_span_s(double days) { return std::round(days * 86400 / 60) * 60; }
+
+std::vector<didymos_benchmark_row> didymos_benchmark(double T) {
+  std::vector<didymos_benchmark_row> rows;
+  for (const bool gubas : {false, true})
+    for (const int order : {2, 4}) rows.push_back({gubas, order, observe_binary(didymos_setup(order, "KEPLER4", 60, T, gubas), 5)});
+  return rows;
+}
+
+dart_result dart_period_change(const dart_impact& impact, double T) {
+  const auto before_setup = didymos_setup(4, "KEPLER4", 60, T, false);
+  dart_result out;
+  out.secondary_mass_kg = before_setup.system_model().body(1).mass;
+  out.dv_km_s = impact.beta * impact.mass_kg * impact.speed_km_s / out.secondary_mass_kg;
+  out.period_before_h = observe_binary(before_setup, 5).orbit_period_h;
+  for (const double dv : {out.dv_km_s, out.dv_km_s / 2, 2 * out.dv_km_s}) {
+    const double after = observe_binary(with_impulse(before_setup, dv), 5).orbit_period_h;
+    out.rows.push_back({dv, after, (after - out.period_before_h) * 60});
+  }
+  return out;
+}
+
+binary_cost_plan didymos_cost_plan(double orbits, bool quick) {
+  binary_cost_plan plan;
+  plan.T = orbits * didymos_orbit_unit_s;
+  plan.integrators = {"SIER2", "SIER4", "SIER6", "KEPLER2", "KEPLER4", "KEPLER6", "SIER4/ABCBA2:ABC", "KEPLER4/ABCBA2:ABC", "KEPLER6/ABCBA2:ABC",
+                      "LGVI", "RK4"};
+  plan.steps = quick ? std::vector<double>{480, 120, 30} : std::vector<double>{480, 240, 120, 60, 30};
+  plan.adaptive = {"odeint-rkf78:1e-9", "odeint-rkf78:1e-11", "odeint-rkf78:1e-13"};
+  plan.adaptive_h = 480;
+  plan.reference = "KEPLER4";
+  plan.reference_h = 7.5;
+  return plan;
+}
+
+}  // namespace rotlie::runs
