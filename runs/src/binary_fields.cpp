@@ -18,7 +18,10 @@ binary_field text(std::string name, std::string type, std::string python_default
 
 binary_field flag(std::string name, std::string help, bool binary_request::*member) {
   binary_field f;
-  f.name = name, f.option = "--" + name, f.type = field_kind::flag, f.python_type = "bool", f.python_default = "False", f.help = std::move(help), f.flag = member;
+  f.name = name, f.option = "--" + name, f.type = field_kind::flag;
+  for (auto& c : f.option)
+    if (c == '_') c = '-';
+  f.python_type = "bool", f.python_default = "False", f.help = std::move(help), f.flag = member;
   return f;
 }
 
@@ -65,6 +68,16 @@ std::vector<binary_field> all_fields() {
                    "Read off every step: the mean orbit period, the secondary's libration (amplitude, mean, period), both spin periods and the "
                    "osculating elements at the end (the JSON's observables)",
                    &binary_request::observe));
+  f.back().run_only = true;
+  f.push_back(text("accuracy", "float | tuple[float, float]", "'1e-3,1e-2'",
+                   "The error estimate's bounds: REL (position and velocity, relative) or REL,RAD (RAD the attitudes' angle; default 1e-3,1e-2): "
+                   "beyond them the run is marked inaccurate",
+                   &binary_request::accuracy, field_kind::numbers));
+  f.back().run_only = true;
+  f.push_back(flag("no_error_estimate",
+                   "Skip the error estimate (a fixed-step run is otherwise repeated at twice the step alongside, about 50 % more CPU, to see phase "
+                   "errors the energy cannot)",
+                   &binary_request::no_error_estimate));
   f.back().run_only = true;
   f.push_back(flag("force", "Run values that look like unit mistakes (G in SI, a density in g/cm3, sizes in metres, a period in seconds)", &binary_request::force));
   return f;

@@ -129,6 +129,15 @@ json binary_json(const binary_result& r) {
   }
   j["unstable"] = r.check.unstable;
   j["round_off_floor"] = r.check.round_off_floor;
+  j["inaccurate"] = r.check.inaccurate;
+  j["accuracy"] = {{"relative", s.accuracy_rel}, {"angle_rad", s.accuracy_rad}};
+  if (r.error_estimate) {
+    const auto& e = *r.error_estimate;
+    j["error_estimate"] = {{"position_rel", e.position_rel}, {"velocity_rel", e.velocity_rel}, {"attitude1_rad", e.attitude1_rad},
+                           {"attitude2_rad", e.attitude2_rad}, {"order", e.order}, {"step_ratio", e.step_ratio}, {"cpu_s", e.cpu_s}};
+  } else {
+    j["error_estimate"] = nullptr;
+  }
   j["warnings"] = r.check.warnings;
   return j;
 }
@@ -153,6 +162,10 @@ std::string binary_text(const binary_result& r) {
       << "final separation " << message_number(d) << " km; relative errors: energy " << message_number(r.check.max_rel_energy_error)
       << ", angular momentum " << message_number(r.check.max_rel_angular_momentum_error) << (r.check.unstable ? ": UNSTABLE" : "") << "\n"
       << "CPU " << message_number(r.cpu_s) << " s\n";
+  if (r.error_estimate)
+    out << "estimated error at the end: position " << message_number(r.error_estimate->position_rel) << ", velocity "
+        << message_number(r.error_estimate->velocity_rel) << " relative; attitudes " << message_number(r.error_estimate->attitude1_rad) << " and "
+        << message_number(r.error_estimate->attitude2_rad) << " rad" << (r.check.inaccurate ? ": INACCURATE" : "") << "\n";
   if (r.observables) {
     const auto& o = *r.observables;
     out << "observed: mean orbit period " << message_number(o.orbit_period_h) << " h (osculating at the end " << message_number(o.osculating.period_h)

@@ -175,6 +175,12 @@ binary_setup binary_setup_of(const binary_request& given) {
     s.start = with_impulse(s.start, *s.impulse);
   }
   s.observe = r.observe;
+  s.error_estimate = !r.no_error_estimate;
+  {
+    const auto bounds = positive_numbers(r.accuracy, "--accuracy");
+    if (bounds.size() > 2) throw bad_input("--accuracy takes REL or REL,RAD, got '" + one_line(r.accuracy) + "'");
+    s.accuracy_rel = bounds[0], s.accuracy_rad = bounds.size() == 2 ? bounds[1] : 10 * bounds[0];
+  }
   // the start: apart, and on an orbit that does not surely collide
   if (bodies_touch(s.primary, s.start.body[0].Q, s.secondary, s.start.body[1].Q, s.start.r))
     throw bad_input("--state: the bodies overlap at the start (|r| = " + message_number(norm(s.start.r)) + " km)");
@@ -215,6 +221,32 @@ binary_setup binary_setup_of(const binary_request& given) {
   return s;
 }
 
+namespace {
+
+constexpr double rotation_gap_unstable = 1e-3;       // |QᵀQ − 1| beyond which an attitude is no longer a rotation (RK4 leaves it at its truncation error)
+constexpr double angular_momentum_unstable = 1e-3;  // a relative change of L no method that converges makes
+
+// What the energy criterion cannot see: an attitude off the rotations, a conserved angular momentum
+// lost (the non-symplectic methods drift in it; a blow-up loses it whole).
+void judge_beyond_energy(binary_result& r, const models::binary_system<double>& sys) {
+  if (r.check.unstable) return;
+  double gap = 0;
+  for (int b = 0; b < 2; ++b) {
+    const auto P = transpose(r.end.x.body[b].Q) * r.end.x.body[b].Q;
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) gap = std::max(gap, std::abs(P(i, k) - (i == k ? 1.0 : 0.0)));
+  }
+  std::string why;
+  if (!(gap <= rotation_gap_unstable)) why = "an attitude is no longer a rotation (|QᵀQ − 1| = " + message_number(gap) + ")";
+  else if (!sys.time_dependent() && r.check.max_rel_angular_momentum_error > angular_momentum_unstable)
+    why = "the total angular momentum changed by " + message_number(r.check.max_rel_angular_momentum_error) + " of itself";
+  if (why.empty()) return;
+  r.check.unstable = true;
+  r.check.warnings.push_back(why + ": the step is beyond the integrator's stable or accurate range; the result cannot be trusted");
+}
+
+}  // namespace
+
 binary_result binary_run(const binary_setup& s, const std::function<void(const binary_sample&)>& sample, const std::function<void(double)>& progress,
                          const std::function<bool()>& stop) {
   binary_setup stepped = s;
@@ -233,6 +265,20 @@ binary_result binary_run(const binary_setup& s, const std::function<void(const b
   if (simulation.steps() < s.steps) throw binary_stopped();
   auto r = simulation.result();
   if (s.observe) r.observables = observer.result(simulation.system(), r.end.x);
+  judge_beyond_energy(r, simulation.system());
+  if (s.error_estimate && !r.check.unstable) {
+    std::string why;
+    r.error_estimate = estimate_binary_error(s, r.end.x, why, stop);
+    const auto& e = r.error_estimate;
+    if (e && (e->position_rel > s.accuracy_rel || e->velocity_rel > s.accuracy_rel || e->attitude1_rad > s.accuracy_rad || e->attitude2_rad > s.accuracy_rad)) {
+      r.check.inaccurate = true;
+      r.check.warnings.push_back("the estimated error of the final state (position " + message_number(e->position_rel) + ", velocity " +
+                                 message_number(e->velocity_rel) + " relative; attitudes " + message_number(e->attitude1_rad) + " and " +
+                                 message_number(e->attitude2_rad) + " rad, from the same method at " + message_number(e->step_ratio) +
+                                 "x the step) is beyond the accuracy asked for (" + message_number(s.accuracy_rel) + ", " + message_number(s.accuracy_rad) +
+                                 " rad): take a smaller step");
+    }
+  }
   r.setup = s;
   r.end.t = s.T;
   return r;

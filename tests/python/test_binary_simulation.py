@@ -28,7 +28,8 @@ def test_two_calls_are_one_run_bit_for_bit(integrator, order):
     # the errors are maxima over samples of the conserved quantities: the run samples every step of its
     # 360, the open-ended simulation every 100 steps; every other field is the same
     d, w = sim.to_dict(), whole.to_dict()
-    for key in ("cpu_s", "max_rel_energy_error", "max_rel_angular_momentum_error"):
+    # and a held simulation carries no estimate at twice the step (a run of rotlie.binary does)
+    for key in ("cpu_s", "max_rel_energy_error", "max_rel_angular_momentum_error", "error_estimate", "inaccurate", "warnings"):
         d.pop(key), w.pop(key)
     assert d == w
 

@@ -23,6 +23,7 @@
 #include "rotlie/models/scenes/binary_system.hpp"
 #include "rotlie/models/scenes/spin_orbit_odeint.hpp"
 #include "rotlie/runs/binary_bodies.hpp"
+#include "rotlie/runs/binary_estimate.hpp"
 #include "rotlie/runs/binary_observables.hpp"
 #include "rotlie/runs/binary_terms.hpp"
 #include "rotlie/schemes/scheme_table.hpp"
@@ -47,6 +48,8 @@ struct binary_request {
   bool force = false;                        ///< run values that look like unit mistakes (binary_units.hpp)
   std::string impulse;                       ///< an impulse on one body at the start (binary_observables.hpp), or empty
   bool observe = false;                      ///< read the observables off every step (binary_observables.hpp)
+  std::string accuracy = "1e-3,1e-2";        ///< the error estimate's bounds: relative (position, velocity), rad (attitudes)
+  bool no_error_estimate = false;            ///< skip the run at twice the step (binary_estimate.hpp)
 };
 
 struct binary_method {
@@ -74,6 +77,8 @@ struct binary_setup {
   std::vector<std::pair<std::string, std::shared_ptr<const registered_term>>> terms;  ///< added force terms, by name
   std::optional<binary_impulse> impulse;  ///< applied to the start given (start holds the pair after it)
   bool observe = false;
+  bool error_estimate = true;            ///< a fixed-step run's estimate at twice the step (binary_estimate.hpp)
+  double accuracy_rel = 1e-3, accuracy_rad = 1e-2;
 
   /// The pair with its added terms.
   models::binary_system<double> system_model() const;
@@ -99,6 +104,7 @@ struct binary_check {
   double potential_fluctuation = 0;  ///< max − min of U over the samples (kg km² s⁻²)
   bool unstable = false;
   bool round_off_floor = false;  ///< a step moves the pair by less than 1000 ε: lost in round-off
+  bool inaccurate = false;       ///< the error estimate beyond the accuracy asked for
   std::vector<std::string> warnings;
 };
 
@@ -111,6 +117,7 @@ struct binary_result {
   double cpu_s = 0;
   long evaluations = 0;  ///< mutual-gravity evaluations
   std::optional<binary_observables> observables;  ///< with setup.observe
+  std::optional<binary_error_estimate> error_estimate;  ///< with setup.error_estimate, for a fixed-step run
 };
 
 /// The bodies came into contact: the run stops (the CLI exits 1 saying when).

@@ -1,0 +1,82 @@
+#include "rotlie/runs/binary_estimate.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "rotlie/runs/binary_run.hpp"
+#include "rotlie/runs/binary_simulation.hpp"
+#include "rotlie/schemes/reference_schemes.hpp"
+
+namespace rotlie::runs {
+
+namespace {
+
+// The composition's declared order: its TV table's, or its rotor table's when lower.
+int declared_order(const binary_method& m) {
+  switch (m.family) {
+    case binary_method::kind::rk4:
+      return 4;
+    case binary_method::kind::lgvi:
+      return 2;
+    case binary_method::kind::odeint:
+      return 0;
+    case binary_method::kind::splitting:
+      break;
+  }
+  int p = schemes::reference_scheme(m.splitting.tv_table)->order;
+  for (const auto& rotor : m.rotor)
+    if (rotor) p = std::min(p, rotor->order);
+  return p;
+}
+
+double distance(const models::vec3<double>& a, const models::vec3<double>& b) {
+  return models::norm(models::vec3<double>{a[0] - b[0], a[1] - b[1], a[2] - b[2]});
+}
+
+}  // namespace
+
+double rotation_angle(const models::mat3<double>& A, const models::mat3<double>& B) {
+  const auto R = transpose(A) * B;
+  const double c = (R(0, 0) + R(1, 1) + R(2, 2) - 1) / 2;
+  const double s = std::sqrt((R(2, 1) - R(1, 2)) * (R(2, 1) - R(1, 2)) + (R(0, 2) - R(2, 0)) * (R(0, 2) - R(2, 0)) + (R(1, 0) - R(0, 1)) * (R(1, 0) - R(0, 1))) / 2;
+  return std::atan2(s, c);
+}
+
+std::optional<binary_error_estimate> estimate_binary_error(const binary_setup& setup, const models::binary_state<double>& end, std::string& why,
+                                                           const std::function<bool()>& stop) {
+  const int p = declared_order(setup.method);
+  if (p == 0 || setup.steps < 2) {
+    why = p == 0 ? "an adaptive method meets its tolerance" : "fewer than 2 steps";
+    return std::nullopt;
+  }
+  binary_setup coarse = setup;
+  coarse.steps = setup.steps / 2;
+  coarse.h = setup.T / static_cast<double>(coarse.steps);
+  coarse.every = 0, coarse.observe = false;
+  binary_error_estimate e;
+  e.order = p, e.step_ratio = coarse.h / setup.h;
+  models::binary_state<double> x;
+  try {
+    binary_simulation companion(coarse);
+    companion.advance(coarse.steps, {}, {}, stop);
+    if (companion.steps() < coarse.steps) throw binary_stopped();
+    x = companion.state();
+    e.cpu_s = companion.result().cpu_s;
+  } catch (const binary_contact&) {
+    why = "its run at twice the step touched";
+    return std::nullopt;
+  } catch (const binary_stopped&) {
+    throw;
+  } catch (const std::runtime_error& failure) {
+    why = std::string("its run at twice the step failed: ") + failure.what();
+    return std::nullopt;
+  }
+  const double scale = std::pow(e.step_ratio, p) - 1;
+  e.position_rel = distance(x.r, end.r) / models::norm(end.r) / scale;
+  e.velocity_rel = distance(x.v, end.v) / models::norm(end.v) / scale;
+  e.attitude1_rad = rotation_angle(x.body[0].Q, end.body[0].Q) / scale;
+  e.attitude2_rad = rotation_angle(x.body[1].Q, end.body[1].Q) / scale;
+  return e;
+}
+
+}  // namespace rotlie::runs
