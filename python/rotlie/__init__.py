@@ -32,7 +32,7 @@ __all__ = [
     "Body", "Scheme", "scheme", "load_table", "solve", "exact_flow", "integrate", "order",
     "remainder", "Remainder", "best", "map_line", "bch", "md", "spin", "SpinResult", "SpinTrajectory",
     "md_simulation", "MdSimulation", "spin_simulation", "SpinSimulation", "binary", "BinaryResult", "BinaryTrajectory",
-    "binary_simulation", "BinarySimulation",
+    "binary_simulation", "BinarySimulation", "integrators",
     "Result", "MdResult", "MdTrajectory", "OrderResult", "BestResult", "MapLine",
 ]
 __version__ = "0.1.0"
@@ -172,3 +172,4 @@ from ._rotlie import spin, SpinResult, SpinTrajectory  # noqa: E402  (typed in C
 from ._rotlie import MdSimulation, SpinSimulation, spin_simulation  # noqa: E402  (python/src/*_simulation.cpp)
 from ._rotlie import binary, BinaryResult, BinaryTrajectory  # noqa: E402  (typed in C++: python/src/binary.cpp)
 from ._rotlie import binary_simulation, BinarySimulation  # noqa: E402  (python/src/binary_simulation.cpp)
+from ._rotlie import integrators  # noqa: E402  (the method registry: python/src/md.cpp)

@@ -13,6 +13,7 @@
 #include "interruption.hpp"
 #include "rotlie/runs/binary_io.hpp"
 #include "rotlie/runs/binary_run.hpp"
+#include "rotlie/runs/methods.hpp"
 
 namespace rotlie::python {
 namespace {
@@ -125,8 +126,8 @@ void bind_binary(py::module_& m) {
 Two rigid bodies in mutual gravity (the full two-body problem), as ``rotlie binary`` (docs/binary.md); units km, kg, s.
 system: "didymos" or None; primary, secondary: "ellipsoid:a,b,c" (km) or "polyhedron:FILE"; density: kg/m3, one value
 or a pair; mass: (M1, M2) in kg; order: 0, 2 or 4; separation (km) with primary_period (hours): the circular start;
-state: a dict with r, v, Q1, Q2, omega1, omega2 or a JSON file's path; integrator: SIER2, SIER4, SIER2/X, SIER4/X,
-KEPLER2, KEPLER4, KEPLER2/X, KEPLER4/X, RK4, LGVI, odeint-rkf78[:TOL], odeint-dopri5[:TOL]; h, T: seconds (T a whole
+state: a dict with r, v, Q1, Q2, omega1, omega2 or a JSON file's path; integrator: )" +
+         runs::method_names_text(runs::method_system::binary) + R"( (rotlie.integrators("binary")); h, T: seconds (T a whole
 number of steps; T=0 the start's values); every: a trajectory sample every K steps (BinaryResult.trajectory).
 impulse: "BODY:dx,dy,dz" (mm/s) or "BODY:beta=B,m=KG,U=KM_S" at the start; observe=True reads off every step the mean
 orbit period, the libration, the spin periods and the osculating elements (BinaryResult.observables).
