@@ -54,8 +54,6 @@ const std::vector<method_family>& method_families() {
        "MRDL with the axes reversed, 3-2-1-2-3 (the full step on the smallest moment)"},
       {"SEJ4", k::tv_splitting, 2, "Strang-TV", "sej4", false, {}, all,
        "Strang-TV with the sej4 rotor (a reconstruction)"},
-      {"TEST2", k::tv_splitting, 2, "Strang-TV", "exact", true, {}, all,
-       "a throw-away family: Strang-TV with a rotor slot, to show what one row brings", true},
       {"KEPLER2", k::kepler_splitting, 2, "Strang-TV", "exact", true, {}, {binary},
        "SIER2's composition of H_Kepler + T_rot and U - U0: the point masses' Kepler orbit drifts exactly"},
       {"KEPLER4", k::kepler_splitting, 4, "PEFRL-TV", "exact", true, {}, {binary},
