@@ -14,6 +14,7 @@
 
 #include "rotlie/models/experiments/md_experiment.hpp"
 #include "rotlie/models/scenes/dipole_field.hpp"
+#include "rotlie/runs/methods.hpp"
 #include "rotlie/runs/protocol_curves.hpp"
 #include "rotlie/solver/scheme_table.hpp"
 
@@ -47,7 +48,7 @@ const schemes::scheme_table* dedicated(const std::string& key) {
 void md_step(benchmark::State& state, const std::string& name, const std::string& dedicated_key) {
   const models::dipole_field<double> scene;
   models::md_run_options o;
-  o.integrator = models::md_integrator_named(dedicated_key.empty() ? name : "SIER2/" + dedicated_key);
+  o.integrator = runs::method_named(dedicated_key.empty() ? name : "SIER2/" + dedicated_key, runs::method_system::md).splitting;
   o.rotor_table = dedicated(dedicated_key);
   const int f = o.integrator.f;
   const double h = h_over_f * f;
@@ -124,7 +125,7 @@ void odeint_at_equal_cpu(benchmark::State& state) {
   double sumV = 0, sumV2 = 0;
   for (auto _ : state) {
     models::md_run_options o;
-    o.integrator = models::md_integrator_named("SIER2");
+    o.integrator = runs::method_named("SIER2", runs::method_system::md).splitting;
     models::with_scene_integrator<double>(scene, o, [&](const auto& method) {
       auto x = start;
       const double mvv2e = models::real_units::mvv2e<double>();

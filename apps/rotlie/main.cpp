@@ -18,6 +18,7 @@
 #include "commands.hpp"
 #include "rotlie/runs/binary_fields.hpp"
 #include "rotlie/runs/binary_terms.hpp"
+#include "rotlie/runs/methods.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
 #include "rotlie/runs/scenes.hpp"
 
@@ -201,11 +202,7 @@ subcommand add_md(CLI::App& app, md_options& md) {
   std::string scenes;
   for (const auto& s : rotlie::runs::scenes()) scenes += (scenes.empty() ? "" : "; ") + s.name + ": " + s.summary;
   md_cmd->add_option("--scene", md.scene, scenes)->required();
-  md_cmd->add_option("--integrator", md.integrator,
-                     "SIER2, SIER4, MRDL (axes 1-2-3-2-1, DLM's order and LAMMPS's NO_SQUISH map), MRDL-reversed (3-2-1-2-3, "
-                     "the full step on the smallest moment), SEJ4 (a reconstruction), "
-                     "or SIER2/X, SIER4/X with the free rotation by scheme X "
-                     "(RS4-S5-McLachlan:CBA, or SCHEME:PERM:LABEL such as P1:BAC:5 solved for the water molecule)")
+  md_cmd->add_option("--integrator", md.integrator, rotlie::runs::method_names_text(rotlie::runs::method_system::md) + " (spin-orbit: rotlie spin's)")
       ->required();
   md_cmd->add_option("--h", md.h, "The step h in fs (the step itself: SIER4 at h/f = 4.2 fs is --h 16.8); spin-orbit: a fraction "
                                   "of the orbital period")->required();
@@ -285,10 +282,7 @@ subcommand add_spin(CLI::App& app, spin_options& spin) {
                                               "period 2 pi): its final attitude and spin");
   spin_cmd->add_option("--body", spin.body, "Hyperion, Moon, Mercury (cited moments), or A,B,C with A <= B <= C")->required();
   spin_cmd->add_option("--e", spin.e, "Orbital eccentricity in [0, 1)")->required();
-  spin_cmd->add_option("--integrator", spin.integrator,
-                       "SIER2, SIER4 (exact rotor), MRDL, MRDL-reversed, SIER2/X, SIER4/X (rotor by scheme X: reference name, "
-                       "SCHEME:PERM:LABEL solved for the body, or a table file), odeint-dopri5[:TOL], odeint-rkf78[:TOL] (default TOL 1e-10)")
-      ->required();
+  spin_cmd->add_option("--integrator", spin.integrator, rotlie::runs::method_names_text(rotlie::runs::method_system::spin))->required();
   spin_cmd->add_option("--h", spin.h, "The step as a fraction of the orbital period, e.g. 1/1000 (taken exactly; an adaptive "
                                       "method's first trial step and the spacing of its checks)")->required();
   spin_cmd->add_option("--T", spin.T, "Length of the run in orbits: a whole number of steps --h (else refused)")->required();

@@ -13,7 +13,7 @@
 #include "rotlie/models/closed_form_rotors.hpp"
 #include "rotlie/models/exact_free_rotation.hpp"
 #include "rotlie/models/table_rotor.hpp"
-#include "rotlie/runs/md_methods.hpp"
+#include "rotlie/runs/methods.hpp"
 #include "rotlie/schemes/same_body.hpp"
 #include "rotlie/runs/user_input.hpp"
 
@@ -88,8 +88,10 @@ bool symmetric_top(const std::array<double, 3>& I) {
   return I[1] - I[0] <= shape_tolerance * I[2] || I[2] - I[1] <= shape_tolerance * I[2];
 }
 
+std::string rotor_values_help() { return "auto (chosen per body shape from the shipped maps), " + runs::rotor_values_text(); }
+
 rotor_request parse_rotor(const std::string& value) {
-  if (value.empty()) throw runs::bad_input("rotor needs a value: exact, auto, a scheme name or a scheme-table file");
+  if (value.empty()) throw runs::bad_input("rotor needs a value: " + rotor_values_help());
   if (models::is_closed_form_rotor(value)) return {rotor_request::kind::closed_form, value};
   if (value == "auto") return {rotor_request::kind::automatic, ""};
   return {rotor_request::kind::table, value};

@@ -49,6 +49,9 @@ struct rotor_request {
                                ///< name, SCHEME:PERM:LABEL or a scheme-table file
 };
 
+/// The values of the rotor keyword: auto and the registry's rotors (runs/methods.hpp), for messages.
+std::string rotor_values_help();
+
 /// Reads VALUE (a listed rotor such as exact, auto, or a table name); throws runs::bad_input for an empty value.
 rotor_request parse_rotor(const std::string& value);
 

@@ -26,6 +26,7 @@
 #include "rigid_const.h"
 #include "rotlie/models/composition.hpp"
 #include "rotlie/models/exact_free_rotation_batch.hpp"
+#include "rotlie/runs/methods.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 #include "update.h"
 #include "utils.h"
@@ -51,7 +52,7 @@ struct FixRigidSierSmall::arguments {
     for (int i = first; i < narg; ++i) {
       const std::string w = arg[i];
       if (w == "rotor") {
-        if (i + 1 >= narg) lmp->error->all(FLERR, "Fix " + style + ": rotor needs a value (exact, auto, a scheme name or a scheme-table file)");
+        if (i + 1 >= narg) lmp->error->all(FLERR, "Fix " + style + ": rotor needs a value (" + rotor_values_help() + ")");
         rotor = arg[++i];
       } else if (refused.count(w)) {
         lmp->error->all(FLERR, "Fix " + style + ": keyword '" + w +
@@ -67,12 +68,14 @@ struct FixRigidSierSmall::arguments {
   }
 };
 
-FixRigidSierSmall::FixRigidSierSmall(LAMMPS* lmp, int narg, char** arg, const char* tv_table)
-    : FixRigidSierSmall(lmp, arguments(lmp, narg, arg), tv_table) {}
+FixRigidSierSmall::FixRigidSierSmall(LAMMPS* lmp, int narg, char** arg) : FixRigidSierSmall(lmp, arguments(lmp, narg, arg)) {}
 
-FixRigidSierSmall::FixRigidSierSmall(LAMMPS* lmp, arguments&& args, const char* tv_table)
-    : FixRigidSmall(lmp, static_cast<int>(args.argv.size()), args.argv.data()), tv_table_(tv_table) {
+FixRigidSierSmall::FixRigidSierSmall(LAMMPS* lmp, arguments&& args)
+    : FixRigidSmall(lmp, static_cast<int>(args.argv.size()), args.argv.data()) {
   try {
+    const auto* family = runs::lammps_style_family(style);
+    if (!family) throw std::invalid_argument("no integrator family has this style");
+    tv_table_ = family->tv_table;
     rotors_ = std::make_unique<body_rotors>(parse_rotor(args.rotor));
     const auto table = schemes::reference_scheme(tv_table_);
     // V T V … V: a kick first and last, the forces of the step's start and end (first same as last)

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #pragma once
-// fix rigid/sier2/small and rigid/sier4/small: van Zon & Schofield's SIER2 (Strang-TV, eq. 7) and
-// SIER4 (PEFRL-TV with the corrected h5, eq. 8) on the bodies of LAMMPS's fix rigid/small, whose
+// fix rigid/sier2/small, rigid/sier4/small, …, one style for each TV family of the method registry that
+// has one (runs/methods.hpp: van Zon & Schofield's SIER2, Strang-TV, eq. 7; SIER4, PEFRL-TV with the
+// corrected h5, eq. 8; SIER6, Kahan & Li's composition of Strang-TV) on the bodies of LAMMPS's fix rigid/small, whose
 // body bookkeeping (creation from molecules or custom IDs, ghost bodies, exchange between ranks,
 // forces and torques on bodies, atom positions from bodies) they inherit unchanged. They replace the
 // time integration: a TV table's kicks (V) and free flights (T: translation and the free rotation
@@ -26,8 +27,8 @@ namespace rotlie::lammps {
 
 class FixRigidSierSmall : public LAMMPS_NS::FixRigidSmall {
  public:
-  /// tv_table: Strang-TV (rigid/sier2/small) or PEFRL-TV (rigid/sier4/small).
-  FixRigidSierSmall(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg, const char* tv_table);
+  /// The style (arg[2], rigid/NAME/small) names the family of runs/methods.hpp whose TV table it steps.
+  FixRigidSierSmall(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg);
   ~FixRigidSierSmall() override;
 
   int setmask() override;
@@ -38,7 +39,7 @@ class FixRigidSierSmall : public LAMMPS_NS::FixRigidSmall {
 
  private:
   struct arguments;  // the command's words without `rotor VALUE`, thermostats and barostats refused
-  FixRigidSierSmall(LAMMPS_NS::LAMMPS* lmp, arguments&& args, const char* tv_table);
+  FixRigidSierSmall(LAMMPS_NS::LAMMPS* lmp, arguments&& args);
 
   void kick(double c);           // V for c h: vcm, angmom, omega of the owned bodies
   void free_flight(double c);    // T for c h: xcm and the free rotation of the owned bodies

@@ -5,9 +5,13 @@
 //                                 `lammps` Python module (python/rotlie_lammps.py.in)
 //   lammpsplugin_init(...)        the entry of LAMMPS's PLUGIN package (`plugin load rotlieplugin.so`),
 //                                 for LAMMPS builds that have it (Debian's does not: built, not run here)
+#include <string>
+#include <vector>
+
 #include "lammps.h"
 #include "lammpsplugin.h"
 #include "register_styles.h"
+#include "rotlie/runs/methods.hpp"
 #include "version.h"
 
 extern "C" {
@@ -18,11 +22,8 @@ __attribute__((visibility("default"))) int rotlie_lammps_register(void* lmp) {
   return 0;
 }
 
-static void* create_sier2(void* lmp, int narg, char** arg) {
-  return rotlie::lammps::create_sier2(static_cast<LAMMPS_NS::LAMMPS*>(lmp), narg, arg);
-}
-static void* create_sier4(void* lmp, int narg, char** arg) {
-  return rotlie::lammps::create_sier4(static_cast<LAMMPS_NS::LAMMPS*>(lmp), narg, arg);
+static void* create_fix(void* lmp, int narg, char** arg) {
+  return rotlie::lammps::create_fix(static_cast<LAMMPS_NS::LAMMPS*>(lmp), narg, arg);
 }
 
 __attribute__((visibility("default"))) void lammpsplugin_init(void* lmp, void* handle, void* regfunc) {
@@ -32,14 +33,17 @@ __attribute__((visibility("default"))) void lammpsplugin_init(void* lmp, void* h
   plugin.style = "fix";
   plugin.author = "rotlie";
   plugin.handle = handle;
-  plugin.name = "rigid/sier2/small";
-  plugin.info = "rotlie: SIER2 (Strang-TV) on rigid/small bodies, keyword rotor";
-  plugin.creator.v2 = &create_sier2;
-  reg(&plugin, lmp);
-  plugin.name = "rigid/sier4/small";
-  plugin.info = "rotlie: SIER4 (PEFRL-TV, 4 force evaluations per step) on rigid/small bodies, keyword rotor";
-  plugin.creator.v2 = &create_sier4;
-  reg(&plugin, lmp);
+  for (const auto& f : rotlie::runs::method_families()) {
+    if (!f.lammps_style) continue;
+    // the registry's rows live as long as the program: their text can be handed to LAMMPS
+    static std::vector<std::string> texts;
+    texts.reserve(2 * rotlie::runs::method_families().size());  // no reallocation: LAMMPS keeps the pointers
+    plugin.name = texts.emplace_back(rotlie::runs::lammps_style_of(f)).c_str();
+    plugin.info = texts.emplace_back("rotlie: " + f.name + " (" + f.tv_table + ", " + std::to_string(f.force_evaluations()) +
+                                     " force evaluations per step) on rigid/small bodies, keyword rotor").c_str();
+    plugin.creator.v2 = &create_fix;
+    reg(&plugin, lmp);
+  }
 }
 
 }  // extern "C"

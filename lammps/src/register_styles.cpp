@@ -8,13 +8,13 @@
 #include "fix_rigid_sier_small.h"
 #include "lammps.h"
 #include "modify.h"
+#include "rotlie/runs/methods.hpp"
 #include "version.h"
 
 namespace rotlie::lammps {
 using namespace LAMMPS_NS;
 
-Fix* create_sier2(LAMMPS* lmp, int narg, char** arg) { return new FixRigidSierSmall(lmp, narg, arg, "Strang-TV"); }
-Fix* create_sier4(LAMMPS* lmp, int narg, char** arg) { return new FixRigidSierSmall(lmp, narg, arg, "PEFRL-TV"); }
+Fix* create_fix(LAMMPS* lmp, int narg, char** arg) { return new FixRigidSierSmall(lmp, narg, arg); }
 
 const char* header_version() { return LAMMPS_VERSION; }
 
@@ -22,8 +22,8 @@ void register_styles(LAMMPS* lmp) {
   if (std::strcmp(lmp->version, LAMMPS_VERSION) != 0)
     lmp->error->all(FLERR, std::string("rotlie's fix styles were built against LAMMPS ") + LAMMPS_VERSION + ", this is LAMMPS " +
                                lmp->version + ": rebuild lammps/ with this version's headers");
-  (*lmp->modify->fix_map)["rigid/sier2/small"] = &create_sier2;
-  (*lmp->modify->fix_map)["rigid/sier4/small"] = &create_sier4;
+  for (const auto& f : runs::method_families())
+    if (f.lammps_style) (*lmp->modify->fix_map)[runs::lammps_style_of(f)] = &create_fix;
 }
 
 }  // namespace rotlie::lammps

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #pragma once
-// The fix styles rigid/sier2/small and rigid/sier4/small added to a running LAMMPS instance's style
+// The fix styles rigid/NAME/small, one for each family of the method registry that has one
+// (runs/methods.hpp: rigid/sier2/small, rigid/sier4/small, …), added to a running LAMMPS instance's style
 // map (Modify::fix_map is public), as LAMMPS's PLUGIN package does internally: no plugin support is
 // needed in the LAMMPS build.
 namespace LAMMPS_NS {
@@ -13,9 +14,8 @@ namespace rotlie::lammps {
 /// The LAMMPS version (date) of the headers this adapter was compiled against.
 const char* header_version();
 
-/// The styles' creators (Modify's FixCreator signature).
-LAMMPS_NS::Fix* create_sier2(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg);
-LAMMPS_NS::Fix* create_sier4(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg);
+/// The styles' creator (Modify's FixCreator signature): the style, arg[2], names the family.
+LAMMPS_NS::Fix* create_fix(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg);
 
 /// Registers the styles; a LAMMPS whose version differs from header_version() is refused with one
 /// ERROR: line (the classes' layout is that of the headers).

@@ -16,6 +16,7 @@
 #include "rotlie/models/scenes/lammps_water_io.hpp"
 #include "rotlie/models/scenes/liquid_water.hpp"
 #include "rotlie/models/scenes/water_setup.hpp"
+#include "rotlie/runs/methods.hpp"
 
 namespace rotlie_lammps_test {
 
@@ -85,7 +86,7 @@ inline water_start liquid_start(long n) {
   o.box = L;
   o.cutoff = cutoff;
   const liquid_water<double> switched(tip3p<double>(), o);
-  with_md_integrator(md_integrator_named("MRDL"), nullptr, tip3p<double>().mass, tip3p<double>().moments, switched, [&](const auto& m) {
+  with_md_integrator(rotlie::runs::method_named("MRDL", rotlie::runs::method_system::md).splitting, nullptr, tip3p<double>().mass, tip3p<double>().moments, switched, [&](const auto& m) {
     equilibrate(m, s, 0.5, 300, 297.0, 20.0, [](long, double, double) {});
     return 0;
   });
@@ -130,7 +131,7 @@ inline double largest_distance_to_rotlie(const std::string& folder, const std::s
   const auto rows = read_lammps_dump(d.dir / "final.dump");
   if (rows.size() != 3 * 216u) return INFINITY;
   auto s = start.s;
-  with_md_integrator(md_integrator_named(integrator), nullptr, tip3p<double>().mass, tip3p<double>().moments, start.w, [&](const auto& m) {
+  with_md_integrator(rotlie::runs::method_named(integrator, rotlie::runs::method_system::md).splitting, nullptr, tip3p<double>().mass, tip3p<double>().moments, start.w, [&](const auto& m) {
     for (int k = 0; k < steps; ++k) m.step(s, 1.0);
     return 0;
   });

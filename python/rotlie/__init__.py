@@ -32,7 +32,7 @@ __all__ = [
     "Body", "Scheme", "scheme", "load_table", "solve", "exact_flow", "integrate", "order",
     "remainder", "Remainder", "best", "map_line", "bch", "md", "spin", "SpinResult", "SpinTrajectory",
     "md_simulation", "MdSimulation", "spin_simulation", "SpinSimulation", "binary", "BinaryResult", "BinaryTrajectory",
-    "binary_simulation", "BinarySimulation",
+    "binary_simulation", "BinarySimulation", "integrators",
     "Result", "MdResult", "MdTrajectory", "OrderResult", "BestResult", "MapLine",
 ]
 __version__ = "0.1.0"
@@ -171,6 +171,7 @@ from ._commands import best, map_line, bch, md, md_simulation  # noqa: E402
 from ._rotlie import spin, SpinResult, SpinTrajectory  # noqa: E402  (typed in C++: python/src/spin.cpp)
 from ._rotlie import MdSimulation, SpinSimulation, spin_simulation  # noqa: E402  (python/src/*_simulation.cpp)
 from ._rotlie import BinaryResult, BinaryTrajectory, BinarySimulation  # noqa: E402  (python/src/binary*.cpp)
+from ._rotlie import integrators  # noqa: E402  (the method registry: python/src/md.cpp)
 from ._typed import typed as _typed  # noqa: E402
 
 binary = _typed(_rotlie.binary, _rotlie._binary_keywords(), "BinaryResult")

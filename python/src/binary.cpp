@@ -13,6 +13,7 @@
 #include "interruption.hpp"
 #include "rotlie/runs/binary_io.hpp"
 #include "rotlie/runs/binary_run.hpp"
+#include "rotlie/runs/methods.hpp"
 
 namespace rotlie::python {
 namespace {

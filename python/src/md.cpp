@@ -2,12 +2,14 @@
 // water) as the JSON of `rotlie md --json`, its warnings as Python UserWarnings.
 #include <map>
 #include <memory>
+#include <optional>
 
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
 #include "interruption.hpp"
 #include "rotlie/lie/stop_request.hpp"
+#include "rotlie/runs/methods.hpp"
 #include "rotlie/runs/scenes.hpp"
 
 namespace rotlie::python {
@@ -35,12 +37,59 @@ std::map<std::string, std::map<std::string, std::string>> md_scenes() {
   return all;
 }
 
+const char* kind_name(runs::method_kind k) {
+  switch (k) {
+    case runs::method_kind::tv_splitting: return "tv-splitting";
+    case runs::method_kind::kepler_splitting: return "kepler-splitting";
+    case runs::method_kind::rk4: return "rk4";
+    case runs::method_kind::lgvi: return "lgvi";
+    case runs::method_kind::adaptive: return "adaptive";
+  }
+  return "";
+}
+
+// The registry's families (runs/methods.hpp) as dicts, those that step `system` (None: all).
+pybind11::list integrators(const std::optional<std::string>& system) {
+  namespace py = pybind11;
+  std::optional<runs::method_system> only;
+  if (system) {
+    only = runs::system_named(*system);
+    if (!only) throw runs::bad_input("system must be md, spin or binary, got '" + runs::one_line(*system) + "'");
+  }
+  py::list out;
+  for (const auto& f : runs::method_families()) {
+    if (only && !f.steps(*only)) continue;
+    py::dict d;
+    d["name"] = f.name;
+    d["kind"] = kind_name(f.kind);
+    d["order"] = f.order;
+    d["force_evaluations"] = f.kind == runs::method_kind::adaptive ? py::object(py::none()) : py::int_(f.force_evaluations());
+    py::list systems;
+    for (auto s : f.systems) systems.append(runs::system_name(s));
+    d["systems"] = systems;
+    d["forms"] = f.forms();
+    d["tv_table"] = f.tv_table.empty() ? py::object(py::none()) : py::str(f.tv_table);
+    d["rotor"] = f.rotor.empty() ? py::object(py::none()) : py::str(f.rotor);
+    d["takes_rotor"] = f.takes_rotor;
+    d["lammps_style"] = f.lammps_style ? py::object(py::str(runs::lammps_style_of(f))) : py::object(py::none());
+    d["description"] = f.description;
+    out.append(d);
+  }
+  return out;
+}
+
 }  // namespace
 
 void bind_md(pybind11::module_& m) {
   namespace py = pybind11;
   m.def("md", &md, py::arg("scene"), py::arg("integrator"), py::arg("h"), py::arg("options"));
   m.def("md_scenes", &md_scenes);
+  m.def("integrators", &integrators, py::arg("system") = py::none(),
+        R"(integrators(system=None) -> list[dict]
+
+The integrator families rotlie knows (the method registry, runs/methods.hpp), those of one system ("md",
+"spin" or "binary") or all: name, kind, order, force_evaluations (None: adaptive), systems, forms (as typed:
+"SIER2/X", "odeint-rkf78[:TOL]"), tv_table, rotor (the default), takes_rotor, lammps_style, description.)");
 }
 
 }  // namespace rotlie::python

@@ -10,6 +10,7 @@
 #include "arguments.hpp"
 #include "bindings.hpp"
 #include "interruption.hpp"
+#include "rotlie/runs/methods.hpp"
 #include "rotlie/runs/spin_io.hpp"
 #include "rotlie/runs/spin_orbit_run.hpp"
 #include "rotlie/runs/user_input.hpp"
@@ -82,14 +83,14 @@ void bind_spin(py::module_& m) {
       });
   m.def("spin", &spin, py::arg("body"), py::arg("e"), py::arg("integrator"), py::arg("h"), py::arg("T"), py::arg("theta0") = 0,
         py::arg("omega0") = 1, py::arg("obliquity") = 0, py::arg("scalar") = "double", py::arg("every") = py::none(),
-        R"(spin(body, e, integrator, h, T, theta0=0, omega0=1, obliquity=0, scalar="double", every=None) -> SpinResult
+        (R"(spin(body, e, integrator, h, T, theta0=0, omega0=1, obliquity=0, scalar="double", every=None) -> SpinResult
 
 A triaxial body on a fixed Kepler orbit under the quadrupole torque, as ``rotlie spin`` (docs/spin_orbit.md).
 body: "Hyperion", "Moon", "Mercury", "A,B,C", a Body or three moments (A <= B <= C); e: eccentricity in [0, 1);
-integrator: SIER2, SIER4, MRDL, MRDL-reversed, SEJ4, SIER2/X, SIER4/X, odeint-dopri5[:TOL], odeint-rkf78[:TOL];
+integrator: )" + runs::method_names_text(runs::method_system::spin) + R"( (rotlie.integrators("spin"));
 h: the step as a fraction of the orbit (str, Fraction or float), T: orbits, a whole number of steps;
 theta0, obliquity (rad), omega0 (units of n): the start; every: a trajectory sample every K steps
-(SpinResult.trajectory: t, Q, omega_body, energy arrays). An untrusted run (SpinResult.unstable) also raises a UserWarning.)");
+(SpinResult.trajectory: t, Q, omega_body, energy arrays). An untrusted run (SpinResult.unstable) also raises a UserWarning.)").c_str());
 }
 
 }  // namespace rotlie::python

@@ -1,5 +1,7 @@
 #include "rotlie/runs/binary_fields.hpp"
 
+#include "rotlie/runs/methods.hpp"
+
 namespace rotlie::runs {
 
 namespace {
@@ -47,11 +49,7 @@ std::vector<binary_field> all_fields() {
                    "A start from a JSON file (or, in Python and a sweep, the object) with r, v (km, km/s), Q1, Q2 (rows), omega1, omega2 (rad/s, body "
                    "frames): a run's JSON output starts the next",
                    &binary_request::state_file, field_kind::state));
-  f.push_back(text("integrator", "str", "'SIER4'",
-                   "SIER2, SIER4, SIER6, SIER2/X, SIER4/X, SIER6/X (rotor X for both bodies: a listed rotor, a reference scheme, SCHEME:PERM:LABEL "
-                   "solved for each body), KEPLER2, KEPLER4, KEPLER6, KEPLER…/X (Kepler split), RK4, LGVI, odeint-rkf78[:TOL], odeint-dopri5[:TOL] "
-                   "(default TOL 1e-12)",
-                   &binary_request::integrator));
+  f.push_back(text("integrator", "str", "'SIER4'", method_names_text(method_system::binary) + " (X for both bodies)", &binary_request::integrator));
   f.back().cli_required = true;
   f.push_back(text("h", "float | None", "None", "The step in seconds (an adaptive method's first trial step and the spacing of its checks)", &binary_request::h,
                    field_kind::number));

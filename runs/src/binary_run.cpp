@@ -12,7 +12,7 @@
 #include "rotlie/runs/binary_state_file.hpp"
 #include "rotlie/runs/binary_units.hpp"
 #include "rotlie/runs/body_names.hpp"
-#include "rotlie/runs/md_methods.hpp"
+#include "rotlie/runs/methods.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/schemes/message_number.hpp"
@@ -26,65 +26,31 @@ using models::norm;
 using models::vec3;
 using schemes::message_number;
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
-constexpr double tolerance_floor_eps = 5;     // an embedded pair cannot meet less (spin_orbit_run.cpp)
-constexpr const char* sixth_order_tv = "KahanLi6-TV";  // SIER6, KEPLER6
 
-std::string moments_text(const vec3<double>& I) {
-  char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "%.17g,%.17g,%.17g", I[0], I[1], I[2]);
-  return buffer;
-}
-
+// The registry's method for the pair, in the form binary_simulation steps it.
 binary_method method_named(const std::string& name, const vec3<double>& I1, const vec3<double>& I2) {
+  auto r = runs::method_named(name, method_system::binary, std::vector<vec3<double>>{I1, I2});
   binary_method m;
   m.name = name;
-  for (const auto& [prefix, kind] : {std::pair<std::string, models::odeint_method>{"odeint-dopri5", models::odeint_method::dopri5},
-                                     {"odeint-rkf78", models::odeint_method::rkf78}}) {
-    if (name.rfind(prefix, 0) != 0 || (name.size() > prefix.size() && name[prefix.size()] != ':')) continue;
-    m.family = binary_method::kind::odeint;
-    m.ode = kind;
-    if (name.size() > prefix.size()) m.tolerance = positive_number(name.substr(prefix.size() + 1), "--integrator " + one_line(name) + ": the tolerance");
-    const double floor = tolerance_floor_eps * eps;
-    if (m.tolerance > 1e-2 || m.tolerance < floor)
-      throw bad_input("--integrator " + one_line(name) + ": the tolerance must be within " + message_number(floor) + " … 1e-2 (5 ε of double)");
-    return m;
+  switch (r.kind()) {
+    case method_kind::rk4:
+      return m.family = binary_method::kind::rk4, m;
+    case method_kind::lgvi:
+      return m.family = binary_method::kind::lgvi, m;
+    case method_kind::adaptive:
+      m.family = binary_method::kind::odeint;
+      m.ode = r.family->ode;
+      m.tolerance = r.tolerance;
+      return m;
+    case method_kind::tv_splitting:
+    case method_kind::kepler_splitting:
+      break;
   }
-  if (name == "RK4") return m.family = binary_method::kind::rk4, m;
-  if (name == "LGVI") return m.family = binary_method::kind::lgvi, m;
-  std::string splitting = name;
-  if (name.rfind("KEPLER", 0) == 0) {
-    m.kepler = true;
-    splitting = "SIER" + name.substr(6);
-    if (splitting != "SIER2" && splitting != "SIER4" && splitting != "SIER6" && splitting.rfind("SIER2/", 0) != 0 && splitting.rfind("SIER4/", 0) != 0 &&
-        splitting.rfind("SIER6/", 0) != 0)
-      throw bad_input("--integrator: unknown integrator '" + one_line(name) + "' (the Kepler splits are KEPLER2, KEPLER4, KEPLER6, KEPLER2/X, KEPLER4/X, KEPLER6/X)");
-  }
-  // sixth order: Kahan & Li's composition of Strang-TV, with SIER4's rotors
-  const bool sixth = splitting == "SIER6" || splitting.rfind("SIER6/", 0) == 0;
-  if (sixth) splitting = "SIER4" + splitting.substr(5);
-  const vec3<double>* moments[2] = {&I1, &I2};
-  for (int b = 0; b < 2; ++b) {
-    md_method resolved;
-    try {
-      resolved = md_method_named(splitting, numeric_body(moments_text(*moments[b])));
-    } catch (const bad_input& e) {
-      std::string why = e.what();
-      if (why.rfind("--integrator: unknown integrator", 0) == 0 && why.back() == ')')
-        why = why.substr(0, why.size() - 1) + ", SIER6, SIER6/X, KEPLER2, KEPLER4, KEPLER6, KEPLER2/X, KEPLER4/X, KEPLER6/X, RK4, LGVI, odeint-rkf78[:TOL], odeint-dopri5[:TOL])";
-      throw bad_input((b == 1 && why.find("--integrator") == 0 ? "the secondary: " : "") + why);
-    }
-    m.splitting = resolved.spec;
-    m.rotor[b] = std::move(resolved.rotor);
-  }
-  if (sixth) {
-    m.splitting.name = name;
-    m.splitting.tv_table = sixth_order_tv;
-    m.splitting.f = schemes::force_evaluations(*schemes::reference_scheme(sixth_order_tv));
-  }
+  m.kepler = r.kind() == method_kind::kepler_splitting;
+  m.splitting = std::move(r.splitting);
+  for (std::size_t b = 0; b < 2 && b < r.rotors.size(); ++b) m.rotor[b] = std::move(r.rotors[b]);
   return m;
 }
-
 
 // The circular start: r along x, the frames aligned (the secondary's long axis at the primary), the
 // orbit's rate balancing the mutual pull at that configuration, the secondary synchronous.

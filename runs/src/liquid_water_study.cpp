@@ -11,6 +11,7 @@
 #include "rotlie/models/order_fit.hpp"
 #include "rotlie/models/scenes/lammps_water_io.hpp"
 #include "rotlie/models/scenes/water_model.hpp"
+#include "rotlie/runs/methods.hpp"
 #include "rotlie/runs/number_text.hpp"
 #include "rotlie/runs/scheme_names.hpp"
 #include "liquid_water_run.hpp"
@@ -81,7 +82,7 @@ liquid_water_study_result liquid_water_study(const liquid_water_budget& b, bool 
     auto& measured = out.sweeps.emplace_back();
     measured.integrator = sw.integrator;
     for (double h : sw.h) {
-      o.integrator = models::md_integrator_named(sw.integrator);  // the study's own names; X solved above
+      o.integrator = method_named(sw.integrator, method_system::md).splitting;  // the study's own names; X solved above
       o.rotor_table = sw.rotor;
       o.h_fs = h;
       o.T_ps = std::max(b.run_ps, 10 * h / 1000);  // at least 10 steps per run
@@ -126,7 +127,7 @@ liquid_water_study_result liquid_water_study(const liquid_water_budget& b, bool 
     d1.threads = threads;
     const models::liquid_water<double> wt(models::tip3p<double>(), d1);
     say("rotlie DSF, " + std::to_string(threads) + " thread(s)");
-    models::with_md_integrator(models::md_integrator_named("SIER2/ABCBA2:ABC"), nullptr, models::tip3p<double>().mass,
+    models::with_md_integrator(method_named("SIER2/ABCBA2:ABC", method_system::md).splitting, nullptr, models::tip3p<double>().mass,
                                models::tip3p<double>().moments, wt, [&](const auto& m) {
                                  auto x = start;
                                  x.forces_current = false;

@@ -14,7 +14,7 @@
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/models/md_trajectory.hpp"
 #include "rotlie/runs/body_names.hpp"
-#include "rotlie/runs/md_methods.hpp"
+#include "rotlie/runs/methods.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
 #include "rotlie/runs/spin_orbit_stepping.hpp"
 #include "rotlie/runs/user_input.hpp"
@@ -143,22 +143,6 @@ double finite_number(const std::string& text, const std::string& what) {
   return v;
 }
 
-spin_method splitting_named(const std::string& name, const spin_body& body) {
-  spin_method m;
-  m.name = name;
-  try {
-    auto method = md_method_named(name, numeric_body(body.moments));
-    m.splitting = std::move(method.spec);
-    m.rotor = std::move(method.rotor);
-  } catch (const bad_input& e) {
-    std::string why = e.what();
-    const auto odeint = " or odeint-dopri5[:TOL], odeint-rkf78[:TOL])";
-    if (why.rfind("--integrator: unknown integrator", 0) == 0 && why.back() == ')') why = why.substr(0, why.size() - 1) + odeint;
-    throw bad_input(why);
-  }
-  return m;
-}
-
 template <class T>
 spin_result run_in(const spin_setup& s) {
   const auto I = spin_moments_in<T>(s.body);
@@ -233,24 +217,18 @@ spin_body spin_body_named(const std::string& text) {
 models::vec3<double> spin_moments(const spin_body& body) { return to_double(numeric_body(body.moments)); }
 
 spin_method spin_method_named(const std::string& name, const spin_body& body) {
-  for (const auto& [prefix, kind] : {std::pair<std::string, models::odeint_method>{"odeint-dopri5", models::odeint_method::dopri5},
-                                     {"odeint-rkf78", models::odeint_method::rkf78}}) {
-    if (name.rfind(prefix, 0) != 0) continue;
-    spin_method m;
-    m.name = name;
-    m.adaptive = true;
-    m.ode = kind;
-    const std::string rest = name.substr(prefix.size());
-    if (rest.empty()) return m;
-    if (rest[0] != ':') break;
-    m.tolerance = positive_number(rest.substr(1), "--integrator " + one_line(name) + ": the tolerance");
-    const double floor = tolerance_floor_eps * epsilon_of<long double>();  // the widest scalar Odeint runs in
-    if (m.tolerance > 1e-2 || m.tolerance < floor)
-      throw bad_input("--integrator " + one_line(name) + ": the tolerance must be within " + schemes::message_number(floor) +
-                      " … 1e-2 (5 ε of long double; in double the floor is " + schemes::message_number(tolerance_floor_eps * epsilon_of<double>()) + ")");
+  auto r = method_named(name, method_system::spin, {numeric_body(body.moments)});
+  spin_method m;
+  m.name = name;
+  m.adaptive = r.adaptive();
+  if (m.adaptive) {
+    m.ode = r.family->ode;
+    m.tolerance = r.tolerance;
     return m;
   }
-  return splitting_named(name, body);
+  m.splitting = std::move(r.splitting);
+  if (!r.rotors.empty()) m.rotor = std::move(r.rotors.front());
+  return m;
 }
 
 spin_setup spin_setup_of(const spin_request& r) {

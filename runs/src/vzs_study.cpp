@@ -12,6 +12,7 @@
 #include "rotlie/models/cpu_time.hpp"
 #include "rotlie/models/order_fit.hpp"
 #include "rotlie/models/scenes/water.hpp"
+#include "rotlie/runs/methods.hpp"
 #include "rotlie/runs/scheme_names.hpp"
 #include "rotlie/schemes/quad.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
@@ -52,7 +53,7 @@ std::vector<row> all_rows(const dedicated_rotors& d) {
 
 models::md_run_options run_options(const row& r, double h, double T, long runs) {
   models::md_run_options o;
-  o.integrator = models::md_integrator_named(r.shown.name);  // the program's own names; X solved into r.rotor
+  o.integrator = method_named(r.shown.name, method_system::md).splitting;  // the program's own names; X solved into r.rotor
   o.rotor_table = r.rotor;
   o.h_fs = h;
   o.T_ps = T;
@@ -121,7 +122,7 @@ std::vector<double> step_costs(const std::vector<row>& rows, double seconds, int
     for (std::size_t k = 0; k < rows.size(); ++k) {
       progress("cost, " + rows[k].shown.label);
       const auto o = run_options(rows[k], 4.2, 1, 1);
-      const double h = 4.2 * models::md_integrator_named(rows[k].shown.name).f;
+      const double h = 4.2 * method_named(rows[k].shown.name, method_system::md).splitting.f;
       best[k] = std::min(best[k], models::with_scene_integrator<double>(scene, o, [&](const auto& method) {
         models::rigid_bodies_state<double> x;
         for (int n = 0; n < molecules; ++n) x.bodies.push_back(scene.initial(1, static_cast<std::uint64_t>(n)).bodies[0]);
@@ -167,7 +168,7 @@ vzs_study_result vzs_study(const vzs_budget& b, const std::function<void(const s
   const auto rows = all_rows(dedicated);
   for (const auto& r : rows) {
     out.integrators.push_back(r.shown);
-    out.integrators.back().f = models::md_integrator_named(r.shown.name).f;
+    out.integrators.back().f = method_named(r.shown.name, method_system::md).splitting.f;
   }
 
   // V.A: τ at h = 1.66 and 8 fs
@@ -207,7 +208,7 @@ vzs_study_result vzs_study(const vzs_budget& b, const std::function<void(const s
   for (std::size_t k = 0; k < 3; ++k)
     for (const auto& r : table_rows) {
       progress(std::string("Table I, h/f = ") + h_text[k] + " fs, " + r.shown.label);
-      const int f = models::md_integrator_named(r.shown.name).f;
+      const int f = method_named(r.shown.name, method_system::md).splitting.f;
       const auto res = models::run_dipole_field(models::dipole_field<double>{},
                                                 run_options(r, out.table_h_over_f[k] * f, b.table_T_ps, b.table_runs));
       out.table[k].push_back({res.dH, res.dLz});
@@ -220,7 +221,7 @@ vzs_study_result vzs_study(const vzs_budget& b, const std::function<void(const s
   out.grid = {1, 2, 4.2, 8, 11, 16, 21, 32, 45, 64};
   for (const auto& r : rows) {
     progress("accuracy against cost, " + r.shown.label);
-    const int f = models::md_integrator_named(r.shown.name).f;
+    const int f = method_named(r.shown.name, method_system::md).splitting.f;
     auto& s = out.scan.emplace_back();
     bool dipole_ok = true, free_ok = true;
     for (double x : out.grid) {

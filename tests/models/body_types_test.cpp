@@ -15,6 +15,7 @@
 #include "rotlie/models/md_integrators.hpp"
 #include "rotlie/models/scenes/dipole_in_field.hpp"
 #include "rotlie/models/scenes/water.hpp"
+#include "md_splittings.hpp"
 
 BOOST_AUTO_TEST_SUITE(body_types_test)
 
@@ -48,7 +49,7 @@ state bodies_of_types(const std::vector<unsigned>& types) {
 template <class Potential>
 state run(const std::string& integrator, const std::vector<body_kind<double>>& kinds, const Potential& potential,
           const unit_system<double>& units, state x, double h, long steps) {
-  return with_md_integrator<double>(md_integrator_named(integrator), kinds, potential, units, [&](const auto& method) {
+  return with_md_integrator<double>(rotlie::test::splitting(integrator), kinds, potential, units, [&](const auto& method) {
     for (long k = 0; k < steps; ++k) method.step(x, h);
     return x;
   });
@@ -109,7 +110,7 @@ double energy_error(const std::string& integrator, double h, long steps) {
   state x = bodies_of_types({0, 1, 1, 0});
   for (auto& b : x.bodies)
     for (auto& g : b.rot.G) g *= 40;  // rotations as fast as the springs' oscillations
-  return with_md_integrator<double>(md_integrator_named(integrator), kinds, springs, unit_system<double>::natural(),
+  return with_md_integrator<double>(rotlie::test::splitting(integrator), kinds, springs, unit_system<double>::natural(),
                                     [&](const auto& method) {
                                       const auto& sys = method.system();
                                       const double E0 = sys.energy(x);

@@ -13,6 +13,7 @@
 #include "rotlie/models/scenes/liquid_water.hpp"
 #include "rotlie/models/scenes/water_observables.hpp"
 #include "rotlie/models/scenes/water_setup.hpp"
+#include "md_splittings.hpp"
 
 BOOST_AUTO_TEST_SUITE(liquid_water_dynamics_test)
 
@@ -36,7 +37,7 @@ const rigid_bodies_state<double>& small_liquid() {
   if (!s.bodies.empty()) return s;
   s = lattice_water<double>(tip3p<double>(), 64, small_box, 297, 4);
   const auto w = small_water(small_box, 6);
-  with_md_integrator(md_integrator_named("MRDL"), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
+  with_md_integrator(rotlie::test::splitting("MRDL"), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
     equilibrate(m, s, 0.25, 400, 297.0, 10.0, [](long, double, double) {});
     equilibrate(m, s, 1.0, 1000, 297.0, 100.0, [](long, double, double) {});
     return 0;
@@ -49,7 +50,7 @@ const rigid_bodies_state<double>& small_liquid() {
 double fluctuation_ratio(const std::string& integrator, double h, double T) {
   const auto w = small_water(small_box, 6);
   double ratio = 0;
-  with_md_integrator(md_integrator_named(integrator), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
+  with_md_integrator(rotlie::test::splitting(integrator), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
     auto s = small_liquid();
     const auto& sys = m.system();
     const long steps = std::lround(T / h);
@@ -109,7 +110,7 @@ BOOST_AUTO_TEST_CASE(sier4_energy_fluctuation_scales_as_h_to_the_fourth) {
 BOOST_AUTO_TEST_CASE(total_momentum_is_conserved_to_round_off) {
   const auto w = small_water(small_box, 6);
   for (const char* name : {"SIER2", "SIER4", "MRDL", "SEJ4"})
-    with_md_integrator(md_integrator_named(name), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
+    with_md_integrator(rotlie::test::splitting(name), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
       auto s = small_liquid();
       const vec3<double> P0 = total_momentum(s);
       double scale = 0;
@@ -138,7 +139,7 @@ BOOST_AUTO_TEST_CASE(angular_momentum_of_an_isolated_cluster_is_conserved_to_rou
     }
   const auto w = small_water(60, 11);
   for (const char* name : {"SIER2", "SIER4", "MRDL"})
-    with_md_integrator(md_integrator_named(name), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
+    with_md_integrator(rotlie::test::splitting(name), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
       auto x = s;
       const vec3<double> L0 = total_angular_momentum(x);
       double scale = 0;
@@ -156,7 +157,7 @@ BOOST_AUTO_TEST_CASE(the_pair_list_is_rebuilt_before_a_pair_is_missed) {
   // 400 steps of 2 fs: molecules move several skins; the running potential (list rebuilt when a
   // site moved more than skin/2) and a fresh one (list built now) must give the same energy
   const auto w = small_water(small_box, 6);
-  with_md_integrator(md_integrator_named("SIER2"), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
+  with_md_integrator(rotlie::test::splitting("SIER2"), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
     auto s = small_liquid();
     const long before = w.list_builds();
     for (int k = 0; k < 400; ++k) m.step(s, 2.0);

@@ -18,6 +18,7 @@
 #include "rotlie/models/scenes/lammps_water_io.hpp"
 #include "rotlie/models/scenes/liquid_water.hpp"
 #include "rotlie/models/scenes/water_setup.hpp"
+#include "md_splittings.hpp"
 
 BOOST_AUTO_TEST_SUITE(liquid_water_lammps_test)
 
@@ -67,7 +68,7 @@ const rigid_bodies_state<double>& small_liquid(long n, double L) {
   liquid_water_options<double> o;
   o.box = L;
   const liquid_water<double> w(tip3p<double>(), o);
-  with_md_integrator(md_integrator_named("MRDL"), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
+  with_md_integrator(rotlie::test::splitting("MRDL"), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
     equilibrate(m, s, 0.5, 300, 297.0, 20.0, [](long, double, double) {});
     return 0;
   });
@@ -131,7 +132,7 @@ BOOST_AUTO_TEST_CASE(a_hundred_steps_of_no_squish_agree_with_fix_rigid_nve_small
   auto distance_after = [&](const std::string& integrator) {
     auto s = s0;
     s.forces_current = false;  // the cache holds the equilibration potential's forces
-    with_md_integrator(md_integrator_named(integrator), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
+    with_md_integrator(rotlie::test::splitting(integrator), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
       for (int k = 0; k < 100; ++k) m.step(s, 1.0);
       return 0;
     });

@@ -9,6 +9,7 @@
 #include "rotlie/models/md_integrators.hpp"
 #include "rotlie/models/scenes/liquid_water.hpp"
 #include "rotlie/models/scenes/water_setup.hpp"
+#include "md_splittings.hpp"
 
 BOOST_AUTO_TEST_SUITE(liquid_water_roundoff_test)
 
@@ -41,7 +42,7 @@ template <class T>
 double fluctuation_ratio(const rigid_bodies_state<double>& start, double L, double h, double T_fs) {
   const auto w = small_water<T>(T(L));
   double out = 0;
-  with_md_integrator(md_integrator_named("SIER4"), nullptr, tip3p<T>().mass, tip3p<T>().moments, w, [&](const auto& m) {
+  with_md_integrator(rotlie::test::splitting("SIER4"), nullptr, tip3p<T>().mass, tip3p<T>().moments, w, [&](const auto& m) {
     auto s = converted<T>(start);
     const auto& sys = m.system();
     const long n = std::lround(T_fs / h);
@@ -65,7 +66,7 @@ BOOST_AUTO_TEST_CASE(sier4_keeps_its_h4_slope_in_double_down_to_a_thirty_second_
   const double L = cubic_box_side<double>(64, tip3p<double>().mass, 0.9973);
   auto s = lattice_water<double>(tip3p<double>(), 64, L, 297, 4);
   const auto w = small_water<double>(L);
-  with_md_integrator(md_integrator_named("MRDL"), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
+  with_md_integrator(rotlie::test::splitting("MRDL"), nullptr, tip3p<double>().mass, tip3p<double>().moments, w, [&](const auto& m) {
     equilibrate(m, s, 0.25, 400, 297.0, 10.0, [](long, double, double) {});
     equilibrate(m, s, 1.0, 1000, 297.0, 100.0, [](long, double, double) {});
     return 0;

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "md_support.hpp"
+#include "md_splittings.hpp"
 
 BOOST_AUTO_TEST_SUITE(md_conservation_test)
 
@@ -37,7 +38,7 @@ drift lab_momentum_drift(const std::string& name, const Potential& potential, lo
     }
   };
   auto s = s0;
-  models::with_md_integrator<double>(models::md_integrator_named(name), nullptr, test::water_mass<double>(),
+  models::with_md_integrator<double>(rotlie::test::splitting(name), nullptr, test::water_mass<double>(),
                                      test::water_moments_real<double>(), potential, [&](const auto& m) {
                                        models::integrate(m, s, 4.0, steps, watch);
                                        return 0;
@@ -48,7 +49,7 @@ drift lab_momentum_drift(const std::string& name, const Potential& potential, lo
 // Round-off growth allowed: one ε per free flight (each a product of rotations or an exact-flow
 // evaluation, whose error is a few ε relative).
 double allowed(const std::string& name, long steps) {
-  const long flights = models::md_integrator_named(name).tv_table == "PEFRL-TV" ? 4 : 1;
+  const long flights = rotlie::test::splitting(name).tv_table == "PEFRL-TV" ? 4 : 1;
   return static_cast<double>(steps * flights) * DBL_EPSILON;
 }
 

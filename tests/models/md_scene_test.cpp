@@ -10,6 +10,7 @@
 
 #include "rotlie/models/experiments/dipole_field_experiment.hpp"
 #include "rotlie/models/experiments/free_water_experiment.hpp"
+#include "md_splittings.hpp"
 
 BOOST_AUTO_TEST_SUITE(md_scene_test)
 
@@ -125,7 +126,7 @@ BOOST_AUTO_TEST_CASE(tau_fit_recovers_a_linear_error_and_skips_saturated_samples
 namespace {
 md_run_options options(const std::string& integrator, double h, double T, long runs) {
   md_run_options o;
-  o.integrator = md_integrator_named(integrator), o.h_fs = h, o.T_ps = T, o.runs = runs, o.seed = 3;
+  o.integrator = rotlie::test::splitting(integrator), o.h_fs = h, o.T_ps = T, o.runs = runs, o.seed = 3;
   return o;
 }
 }  // namespace

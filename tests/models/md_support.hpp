@@ -11,6 +11,7 @@
 #include "rotlie/models/real_units.hpp"
 #include "rotlie/models/scenes/dipole_in_field.hpp"
 #include "rotlie/models/scenes/zero_potential.hpp"
+#include "md_splittings.hpp"
 
 namespace rotlie::test {
 
@@ -85,7 +86,7 @@ double state_distance(const models::rigid_bodies_state<T>& a, const models::rigi
 template <class T, class Potential>
 models::rigid_bodies_state<T> run(const std::string& name, const Potential& potential, models::rigid_bodies_state<T> s, const T& h,
                                   long steps) {
-  const auto spec = models::md_integrator_named(name);
+  const auto spec = rotlie::test::splitting(name);
   models::with_md_integrator<T>(spec, nullptr, water_mass<T>(), water_moments_real<T>(), potential, [&](const auto& method) {
     models::integrate(method, s, h, steps);
     return 0;

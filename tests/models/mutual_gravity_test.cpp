@@ -14,6 +14,7 @@
 #include "rotlie/models/md_integrators.hpp"
 #include "rotlie/models/scenes/spin_orbit.hpp"
 #include "rotlie/models/scenes/mutual_gravity.hpp"
+#include "md_splittings.hpp"
 
 BOOST_AUTO_TEST_SUITE(mutual_gravity_test)
 
@@ -265,7 +266,7 @@ BOOST_AUTO_TEST_CASE(sier2_keeps_the_total_angular_momentum_and_is_of_order_two)
   for (int refine = 0; refine < 2; ++refine) {
     const long steps_per_orbit = refine == 0 ? 200 : 400, orbits = 20;
     const double h = period / static_cast<double>(steps_per_orbit);
-    with_md_integrator<double>(md_integrator_named("SIER2"), kinds, gravity, unit_system<double>::natural(), [&](const auto& method) {
+    with_md_integrator<double>(rotlie::test::splitting("SIER2"), kinds, gravity, unit_system<double>::natural(), [&](const auto& method) {
       auto x = start();
       const auto& sys = method.system();
       const double E0 = sys.energy(x);
@@ -329,7 +330,7 @@ BOOST_AUTO_TEST_CASE(a_small_body_about_a_point_mass_is_the_spin_orbit_scene) {
   // the spin–orbit scene
   const spin_orbit_tide<double> tide(moments, e);
   mat3<double> scene_Q;
-  with_md_integrator<double>(md_integrator_named("SIER4"), std::vector<body_kind<double>>{{1.0, moments, nullptr}}, tide,
+  with_md_integrator<double>(rotlie::test::splitting("SIER4"), std::vector<body_kind<double>>{{1.0, moments, nullptr}}, tide,
                              unit_system<double>::natural(), [&](const auto& method) {
                                auto x = spin_orbit_state(start);
                                for (long k = 0; k < steps; ++k) method.step(x, h);
@@ -343,7 +344,7 @@ BOOST_AUTO_TEST_CASE(a_small_body_about_a_point_mass_is_the_spin_orbit_scene) {
   const vec3<double> sphere{0.4 * size2, 0.4 * size2, 0.4 * size2};  // a uniform sphere: no second-degree term
   const full_two_body_gravity<double> gravity(1.0, sphere, m, small_moments, 1.0, 2);
   mat3<double> pair_Q;
-  with_md_integrator<double>(md_integrator_named("SIER4"), std::vector<body_kind<double>>{{1.0, sphere, nullptr}, {m, small_moments, nullptr}},
+  with_md_integrator<double>(rotlie::test::splitting("SIER4"), std::vector<body_kind<double>>{{1.0, sphere, nullptr}, {m, small_moments, nullptr}},
                              gravity, unit_system<double>::natural(), [&](const auto& method) {
                                rigid_bodies_state<double> x;
                                x.bodies.resize(2);

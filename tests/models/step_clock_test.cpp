@@ -11,6 +11,7 @@
 
 #include "rotlie/models/md_integrators.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
+#include "md_splittings.hpp"
 
 BOOST_AUTO_TEST_SUITE(step_clock_test)
 
@@ -67,7 +68,7 @@ double ulps_from_grid(double t, long double h, const std::vector<long double>& f
 
 template <class F>
 void with_sier4(std::vector<double>& seen, F&& f) {
-  with_md_integrator<double>(md_integrator_named("SIER4"), std::vector<body_kind<double>>{{1.0, {1, 2, 3}}}, recording_potential{&seen},
+  with_md_integrator<double>(rotlie::test::splitting("SIER4"), std::vector<body_kind<double>>{{1.0, {1, 2, 3}}}, recording_potential{&seen},
                              unit_system<double>::natural(), [&](const auto& method) {
                                f(method);
                                return 0;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "rotlie/models/md_integrators.hpp"
+#include "md_splittings.hpp"
 
 BOOST_AUTO_TEST_SUITE(time_dependent_potential_test)
 
@@ -54,7 +55,7 @@ rigid_bodies_state<double> start() {
 /// The largest distance of the computed state from the closed form at T_end (p, q, L_z and Q).
 double error_at_end(const std::string& integrator, long steps) {
   const double h = T_end / static_cast<double>(steps);
-  return with_md_integrator<double>(md_integrator_named(integrator), std::vector<body_kind<double>>{{mass, I}}, pulsed_drive{},
+  return with_md_integrator<double>(rotlie::test::splitting(integrator), std::vector<body_kind<double>>{{mass, I}}, pulsed_drive{},
                                     unit_system<double>::natural(), [&](const auto& method) {
                                       auto x = start();
                                       for (long k = 0; k < steps; ++k) method.step(x, h);

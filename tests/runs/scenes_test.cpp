@@ -9,6 +9,7 @@
 #include "rotlie/models/exact_free_body.hpp"
 #include "rotlie/models/experiments/dipole_field_experiment.hpp"
 #include "rotlie/models/scenes/free_water.hpp"
+#include "rotlie/runs/methods.hpp"
 #include "rotlie/runs/scenes.hpp"
 #include "rotlie/runs/user_input.hpp"
 
@@ -64,7 +65,7 @@ BOOST_AUTO_TEST_CASE(a_run_through_the_registry_equals_the_models_own_call) {
   runs::scene_request r{"dipole-field", "SIER2", "8", {{"--runs", "3"}, {"--T", "2"}}, {}};
   const auto result = runs::run_scene(r);
   models::md_run_options o;
-  o.integrator = models::md_integrator_named("SIER2");
+  o.integrator = runs::method_named("SIER2", runs::method_system::md).splitting;
   o.h_fs = 8;
   o.T_ps = 2;
   o.runs = 3;

@@ -38,9 +38,9 @@ inline void read_ensemble_run(const scene_request& r, const std::string& body_te
   e.scalar = option(r, "--scalar");
   if (e.scalar != "double" && e.scalar != "long-double" && e.scalar != "float128")
     throw bad_input("--scalar must be double, long-double or float128, got '" + e.scalar + "'");
-  auto method = md_method_named(r.integrator, numeric_body(body_text));
-  e.run.integrator = std::move(method.spec);
-  e.rotor = std::move(method.rotor);
+  auto method = method_named(r.integrator, method_system::md, {numeric_body(body_text)});
+  e.run.integrator = std::move(method.splitting);
+  if (!method.rotors.empty()) e.rotor = std::move(method.rotors.front());
   e.run.rotor_table = e.rotor ? &*e.rotor : nullptr;
   e.run.h_fs = positive_number(r.h, "--h");
   e.run.T_ps = positive_number(option(r, "--T"), "--T");

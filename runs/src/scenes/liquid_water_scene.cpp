@@ -33,8 +33,8 @@ std::string line(const char* format, A... a) {
 
 scene_result liquid_water_scene_run(const scene_request& request) {
   models::liquid_water_run_options o;
-  const auto method = md_method_named(request.integrator, numeric_body(models::tip3p_body_text()));  // a bad name costs nothing
-  o.integrator = method.spec;
+  const auto method = method_named(request.integrator, method_system::md, {numeric_body(models::tip3p_body_text())});  // a bad name costs nothing
+  o.integrator = method.splitting;
   o.h_fs = positive_number(request.h, "--h");
   o.T_ps = positive_number(option(request, "--T"), "--T");
   o.runs = static_cast<int>(integer_in_range(option(request, "--runs"), "--runs", 1, 1000));

@@ -1,6 +1,6 @@
 #pragma once
 // What the scene entries share: reading an option of a request, the shortest decimal of a number,
-// and models' refusals as bad input. The integrator is resolved by runs/md_methods.hpp.
+// and models' refusals as bad input. The integrator is resolved by runs/methods.hpp.
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -9,7 +9,7 @@
 
 #include "rotlie/models/md_trajectory.hpp"
 #include "rotlie/runs/body_names.hpp"
-#include "rotlie/runs/md_methods.hpp"
+#include "rotlie/runs/methods.hpp"
 #include "rotlie/runs/scenes.hpp"
 #include "rotlie/runs/scheme_names.hpp"
 #include "rotlie/runs/user_input.hpp"

@@ -1,13 +1,8 @@
 #pragma once
-// The integrators for rigid bodies under torques, each a TV table and a free rotor:
-//   SIER2        Strang-TV + the exact free rotation              (vZS eq. 7,  f = 1)
-//   SIER4        PEFRL-TV  + the exact free rotation              (vZS eq. 8 with the corrected h5, f = 4)
-//   MRDL         Strang-TV + the table rotor ABCBA2:ABC           (f = 1)
-//   MRDL-reversed  Strang-TV + the table rotor ABCBA2:CBA         (f = 1)
-//   SEJ4         Strang-TV + sej4_rotor (a RECONSTRUCTION, see sej4_rotor.hpp)   (f = 1)
-//   SIER2/X, SIER4/X   the free rotation by X: a rotor of closed_form_rotors.hpp's list by its name
-//                      (SIER2/exact is SIER2, SIER2/sej4 is SEJ4), or scheme table X (a reference name
-//                      with its permutation, or a dedicated SCHEME:PERM:LABEL the caller resolves for the body)
+// The integrators for rigid bodies under torques, each a TV table and a free rotor (a listed
+// closed-form rotor or a table rotor), composed for the scene's bodies. The names users type (SIER2,
+// MRDL, SIER4/X, …) and what each means are the method registry's (runs/methods.hpp); this header takes
+// the parts it resolves them into.
 // MRDL's rotor: the planar rotations of Dullweber, Leimkuhler & McLachlan (1997) in their order,
 // axes 1, 2, 3, 2, 1 with the full step on axis 3 (ABCBA2, permutation ABC); for water
 // (I1 < I2 < I3) the full step falls on the slowest axis. This is the order with which vZS's τ and
@@ -22,7 +17,6 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "rotlie/models/closed_form_rotors.hpp"
@@ -34,8 +28,8 @@
 namespace rotlie::models {
 
 struct md_integrator {
-  std::string name;          ///< SIER2, SIER4, MRDL, MRDL-reversed, SEJ4, SIER2/X, SIER4/X
-  std::string tv_table;      ///< Strang-TV or PEFRL-TV
+  std::string name;          ///< the name it was given by (shown in output only)
+  std::string tv_table;      ///< a reference TV table: Strang-TV, PEFRL-TV, KahanLi6-TV
   std::string rotor = "exact";  ///< a closed-form rotor's name (closed_form_rotors.hpp), or empty: rotor_table
   std::string rotor_table;   ///< the free-rotation table's name (an empty rotor only)
   int f = 1;                 ///< force evaluations per step
@@ -43,38 +37,17 @@ struct md_integrator {
   bool table_rotor() const { return rotor.empty(); }
 };
 
-/// The named integrators (SIER2/X and SIER4/X take any table name X).
-inline const std::vector<std::string>& md_integrator_names() {
-  static const std::vector<std::string> names = {"SIER2", "SIER4", "MRDL", "MRDL-reversed", "SEJ4"};
-  return names;
-}
-
 /// MRDL's free rotor, axes 1-2-3-2-1 (DLM's order and LAMMPS's map), and MRDL-reversed's, 3-2-1-2-3
 /// (see the header comment).
 inline constexpr const char* mrdl_rotor_table = "ABCBA2:ABC";
 inline constexpr const char* mrdl_reversed_rotor_table = "ABCBA2:CBA";
 
-/// An integrator by name; throws std::invalid_argument with a one-line reason for an unknown name.
-inline md_integrator md_integrator_named(std::string_view name) {
-  auto f_of = [](const std::string& tv) { return schemes::force_evaluations(*schemes::reference_scheme(tv)); };
-  const std::string n(name);
-  if (n == "SIER2") return {n, "Strang-TV", "exact", "", f_of("Strang-TV")};
-  if (n == "SIER4") return {n, "PEFRL-TV", "exact", "", f_of("PEFRL-TV")};
-  if (n == "MRDL") return {n, "Strang-TV", "", mrdl_rotor_table, f_of("Strang-TV")};
-  if (n == "MRDL-reversed") return {n, "Strang-TV", "", mrdl_reversed_rotor_table, f_of("Strang-TV")};
-  if (n == "SEJ4") return {n, "Strang-TV", "sej4", "", f_of("Strang-TV")};
-  for (const auto& [prefix, tv] : {std::pair<std::string, std::string>{"SIER2/", "Strang-TV"}, {"SIER4/", "PEFRL-TV"}})
-    if (n.rfind(prefix, 0) == 0) {
-      const std::string table = n.substr(prefix.size());
-      // the table: a reference name, SCHEME:PERM:LABEL or a scheme-table file (a path may hold '/')
-      if (table.empty() || table.find_first_of(" \t\r\n") != std::string::npos)
-        throw std::invalid_argument("integrator '" + schemes::printable_text(n) + "': " + prefix +
-                                    " needs a scheme table name or file, e.g. " + prefix + "RS4-S5-McLachlan:CBA");
-      if (is_closed_form_rotor(table)) return {n, tv, table, "", f_of(tv)};
-      return {n, tv, "", table, f_of(tv)};
-    }
-  throw std::invalid_argument("unknown integrator '" + schemes::printable_text(n) +
-                              "' (SIER2, SIER4, MRDL, MRDL-reversed, SEJ4, SIER2/X, SIER4/X with X a rotor or a scheme table)");
+/// An integrator from its parts, as the method registry (runs/methods.hpp) resolves a name into them:
+/// the TV table and the rotor (a listed rotor's name, else a table's); f from the TV table unless given.
+inline md_integrator md_integrator_of(std::string name, std::string tv_table, const std::string& rotor, int f = 0) {
+  if (f == 0) f = schemes::force_evaluations(*schemes::reference_scheme(tv_table));
+  if (is_closed_form_rotor(rotor)) return {std::move(name), std::move(tv_table), rotor, "", f};
+  return {std::move(name), std::move(tv_table), "", rotor, f};
 }
 
 /// One body type as a scene states it; the rotor comes from the integrator. For a table rotor,

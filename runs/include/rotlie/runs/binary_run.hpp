@@ -3,14 +3,10 @@
 // rotlie.binary): two rigid bodies in mutual gravity (binary_bodies.hpp), an integrator named as md
 // and spin name theirs, the run checked, carried out and judged. Units km, kg, s.
 //
-// Integrators:
-//   SIER2, SIER4, SIER2/X, SIER4/X, MRDL, …   TV splittings of H = T_orbit + T_rot + U (md's names; X a
-//                                            rotor or a scheme table, solved for each body's moments)
-//   SIER6, SIER6/X                            sixth order: Kahan & Li's s9odr6a composition of Strang-TV
-//   KEPLER2, KEPLER4, KEPLER6, KEPLER…/X      the same compositions of H = H_Kepler + T_rot + (U − U₀):
-//                                            the point masses' Kepler orbit drifts exactly (Wisdom–Holman)
-//   RK4, LGVI                                 GUBAS's fixed-step methods (binary_anchors.hpp)
-//   odeint-rkf78[:TOL], odeint-dopri5[:TOL]   Boost.Odeint's adaptive methods (default TOL 1e-12)
+// Integrators: the method registry's binary methods (runs/methods.hpp): TV splittings of
+// H = T_orbit + T_rot + U (X a rotor or a scheme table, solved for each body's moments), the same
+// compositions of H = H_Kepler + T_rot + (U − U₀) (KEPLER…: the Kepler orbit drifts exactly), GUBAS's
+// fixed-step RK4 and LGVI (binary_anchors.hpp), Boost.Odeint's adaptive methods.
 #include <functional>
 #include <map>
 #include <memory>

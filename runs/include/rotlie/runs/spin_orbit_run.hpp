@@ -37,9 +37,9 @@ const std::vector<spin_body>& spin_bodies();
 /// A name of spin_bodies() or "A,B,C" with 0 < A ≤ B ≤ C (eq. 77); throws bad_input naming --body.
 spin_body spin_body_named(const std::string& text);
 
-/// An integrator of the scene: a splitting (SIER2, SIER4, MRDL, MRDL-reversed, SIER2/X, SIER4/X with the
-/// rotor table X resolved for the body) or Boost.Odeint's adaptive odeint-dopri5[:TOL], odeint-rkf78[:TOL]
-/// (TOL within 5 ε of the scalar … 1e-2: spin_method_named takes long double's floor, spin_setup_of the run's).
+/// An integrator of the scene, named as the method registry's spin methods (runs/methods.hpp): a splitting
+/// with its rotor table resolved for the body, or a Boost.Odeint adaptive method (TOL within 5 ε of the
+/// scalar … 1e-2: spin_method_named takes long double's floor, spin_setup_of the run's).
 struct spin_method {
   std::string name;
   bool adaptive = false;                       ///< an Odeint method

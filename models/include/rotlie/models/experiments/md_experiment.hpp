@@ -19,7 +19,7 @@ namespace rotlie::models {
 
 /// A run in the scene's units: h in its time unit (fs for the real-unit scenes), T in a thousand of them.
 struct md_run_options {
-  md_integrator integrator = md_integrator_named("SIER2");  ///< the splitting and the rotor's kind, resolved by the caller
+  md_integrator integrator = md_integrator_of("SIER2", "Strang-TV", "exact");  ///< the splitting and the rotor's kind, resolved by the caller
   const schemes::scheme_table* rotor_table = nullptr;      ///< X resolved for the body (a dedicated table), or null
   double h_fs = 0;                                  ///< the step h itself (not h/f)
   double T_ps = 0;                                  ///< simulated time per run

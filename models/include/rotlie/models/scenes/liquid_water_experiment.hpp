@@ -24,7 +24,7 @@
 namespace rotlie::models {
 
 struct liquid_water_run_options {
-  md_integrator integrator = md_integrator_named("SIER2");  ///< the splitting and the rotor's kind, resolved by the caller
+  md_integrator integrator = md_integrator_of("SIER2", "Strang-TV", "exact");  ///< the splitting and the rotor's kind, resolved by the caller
   /// SIER2/X and SIER4/X with a dedicated X: the table solved for TIP3P (tip3p_body_text); nullptr
   /// looks X up among the reference schemes.
   const schemes::scheme_table* rotor_table = nullptr;
@@ -127,7 +127,7 @@ inline rigid_bodies_state<double> liquid_water_start(const liquid_water_run_opti
   auto s = lattice_water<double>(model, o.molecules, expected.box, o.kelvin, o.seed);
   check_no_overlap(w, s);
   const long steps = std::lround(o.equilibration_ps * 1000 / o.equilibration_h_fs);
-  with_md_integrator(md_integrator_named("MRDL"), nullptr, model.mass, model.moments, w, [&](const auto& method) {
+  with_md_integrator(md_integrator_of("MRDL", "Strang-TV", mrdl_rotor_table), nullptr, model.mass, model.moments, w, [&](const auto& method) {
     // the lattice start is far from equilibrium: a shorter step and a tight coupling first
     equilibrate(method, s, o.equilibration_h_fs / 4, 400, o.kelvin, 10.0, [](long, double, double) {});
     equilibrate(method, s, o.equilibration_h_fs, steps, o.kelvin, o.berendsen_tau_fs, [&](long k, double T, double v) {
@@ -239,7 +239,7 @@ inline std::vector<std::pair<double, double>> sample_oxygen_rdf(const liquid_wat
   const auto model = tip3p<double>();
   const auto w = liquid_water_potential(o.molecules, o.density, o.threads);
   oxygen_rdf rdf(10.0, 0.05);
-  with_md_integrator(md_integrator_named("MRDL"), nullptr, model.mass, model.moments, w, [&](const auto& method) {
+  with_md_integrator(md_integrator_of("MRDL", "Strang-TV", mrdl_rotor_table), nullptr, model.mass, model.moments, w, [&](const auto& method) {
     auto s = start;
     s.forces_current = false;
     std::vector<vec3<double>> x, oxygen(s.bodies.size());
