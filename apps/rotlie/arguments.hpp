@@ -18,6 +18,7 @@ struct usage_error : std::runtime_error {
 /// Exit statuses (also listed in `rotlie --help`).
 inline constexpr int exit_failure = 1;  ///< the run failed: a write error, a numerical failure
 inline constexpr int exit_usage = 2;    ///< bad arguments: nothing was computed
+inline constexpr int exit_runs_not_made = 3;  ///< rotlie sweep: complete, but some of its runs were refused or failed
 
 /// Parses a decimal integer in [lo, hi]; throws runs::bad_input naming `option` otherwise.
 inline long parse_integer_in_range(std::string_view text, std::string_view option, long lo, long hi) {

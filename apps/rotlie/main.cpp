@@ -322,6 +322,9 @@ subcommand add_sweep(CLI::App& app, sweep_options& s) {
   cmd->add_option("--in", s.in, "The runs: a JSON-lines file")->required();
   cmd->add_option("--out", s.out, "The results: a JSON-lines file (a header naming the input, then one line per run)")->required();
   cmd->add_flag("--resume", s.resume, "Continue the results file of the same input after a kill");
+  cmd->footer("The last line counts the runs: computed, contact, refused, failed. Exit status: 0 the sweep is complete and every run "
+              "computed or ended in contact; 3 it is complete, but a run was refused or failed (its line says why); 1 the sweep failed "
+              "(a write error, the results file in use by another sweep); 2 bad arguments or input (nothing run).");
   return {cmd, [&s] { return run_sweep(s); }};
 }
 

@@ -25,6 +25,32 @@ using nlohmann::json;
 
 constexpr int sweep_format_version = 1;
 constexpr std::size_t input_limit = std::size_t(64) << 20;  // 64 MiB of runs
+// A run's options and results nest a few levels (a state's rows of Q1 are three); the JSON library's
+// writer recurses per level, so tens of thousands of them overflow the stack: refused before parsing.
+constexpr int nesting_limit = 64;
+
+// Whether no bracket of `line` lies deeper than `limit` (brackets inside strings are text).
+bool nested_within(const std::string& line, int limit) {
+  int depth = 0;
+  bool in_string = false, escaped = false;
+  for (const char c : line) {
+    if (in_string) {
+      if (escaped)
+        escaped = false;
+      else if (c == '\\')
+        escaped = true;
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limit) return false;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return true;
+}
 
 std::string fnv1a(const std::string& text) {
   std::uint64_t h = 1469598103934665603ull;
@@ -70,6 +96,27 @@ binary_request request_of(const json& j) {
   return r;
 }
 
+// A line as sweep_line writes it: binary's JSON (the fields every run has, of their kinds; a number
+// that is not finite is written as null), or a run not made, with its reason.
+bool is_result(const json& j) {
+  const auto field = [&](const char* key, auto kind) { return j.contains(key) && kind(j[key]); };
+  const auto text = [](const json& v) { return v.is_string(); };
+  const auto number = [](const json& v) { return v.is_number(); };
+  const auto number_or_null = [](const json& v) { return v.is_number() || v.is_null(); };
+  const auto three = [](const json& v) {
+    return v.is_array() && v.size() == 3 && std::all_of(v.begin(), v.end(), [](const json& x) { return x.is_number() || x.is_null(); });
+  };
+  if (j.contains("status")) {
+    if (!field("status", text) || !field("error", text)) return false;
+    const auto status = j["status"].get<std::string>();
+    if (status == "contact") return field("contact_t", number);
+    return status == "refused" || status == "failed";
+  }
+  return field("t", number) && field("r", three) && field("v", three) && field("energy", number_or_null) &&
+         field("energy_start", number_or_null) && field("cpu_s", number) && field("unstable", [](const json& v) { return v.is_boolean(); }) &&
+         field("warnings", [](const json& v) { return v.is_array(); });
+}
+
 int owner_of(std::size_t run, int processes) { return static_cast<int>(run % static_cast<std::size_t>(processes)); }
 
 }  // namespace
@@ -87,8 +134,10 @@ sweep_plan plan_sweep(const std::filesystem::path& input) {
   std::string line;
   for (long number = 1; std::getline(lines, line); ++number) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const auto j = json::parse(line, nullptr, false);
     const std::string where = "--in " + printable_path(input) + ", line " + std::to_string(number);
+    if (!nested_within(line, nesting_limit))
+      throw bad_input(where + ": nested deeper than " + std::to_string(nesting_limit) + " levels (a run's options nest a few)");
+    const auto j = json::parse(line, nullptr, false);
     if (j.is_discarded() || !j.is_object()) throw bad_input(where + ": not a JSON object of binary's options");
     for (const auto& [key, value] : j.items()) {
       if (!known_option(key)) throw bad_input(where + ": '" + one_line(key) + "' is not an option of binary (a sweep takes no --every or --json)");
@@ -119,6 +168,10 @@ resumed_map resume_sweep_file(const std::filesystem::path& path, const sweep_pla
   out.whole_length = text.whole_length;
   const std::string refusal = "--resume: " + printable_path(path) + " ";
   for (std::size_t n = 0; n < text.lines.size(); ++n) {
+    const std::string line_name = "line " + std::to_string(n + 1);
+    if (!nested_within(text.lines[n], nesting_limit))
+      throw bad_input(refusal + line_name + " is nested deeper than " + std::to_string(nesting_limit) +
+                      " levels (not a line a sweep writes); it is left as it is");
     const auto j = json::parse(text.lines[n], nullptr, false);
     if (n == 0) {
       if (text.lines[n] != sweep_header(plan)) {
@@ -132,7 +185,10 @@ resumed_map resume_sweep_file(const std::filesystem::path& path, const sweep_pla
     const std::size_t index = n - 1;
     if (j.is_discarded() || !j.is_object() || !j.contains("index") || !j["index"].is_number_unsigned() || j["index"].get<std::size_t>() != index ||
         index >= plan.inputs.size())
-      throw bad_input(refusal + "line " + std::to_string(n + 1) + " is not run " + std::to_string(index) + " of this sweep; it is left as it is");
+      throw bad_input(refusal + line_name + " is not run " + std::to_string(index) + " of this sweep; it is left as it is");
+    if (!is_result(j))
+      throw bad_input(refusal + line_name + " holds no result of run " + std::to_string(index) +
+                      " (neither binary's JSON nor a status of refused, contact or failed with its error); it is left as it is");
     out.done[index] = 1;
     out.lines.push_back(text.lines[n]);
   }
@@ -157,13 +213,48 @@ std::string sweep_line(const sweep_plan& plan, std::size_t index) {
   return ordered.dump();
 }
 
-std::size_t run_sweep_rank0(const sweep_plan& plan, map_processes& processes, const sweep_output& out) {
+void sweep_counts::count(const std::string& line) {
+  const auto j = json::parse(line, nullptr, false);
+  const bool marked = !j.is_discarded() && j.is_object() && j.contains("status") && j["status"].is_string();
+  const std::string status = marked ? j["status"].get<std::string>() : "";
+  if (status == "refused")
+    ++refused;
+  else if (status == "contact")
+    ++contact;
+  else if (status == "failed")
+    ++failed;
+  else
+    ++computed;
+}
+
+std::string sweep_inputs_text(const sweep_plan& plan) {
+  std::string text;
+  for (const auto& input : plan.inputs) text += input + "\n";  // one line each: a JSON dump escapes its newlines
+  return text;
+}
+
+sweep_plan sweep_plan_of(const std::string& inputs_text, std::vector<char> done) {
+  sweep_plan plan;
+  std::istringstream lines(inputs_text);
+  for (std::string line; std::getline(lines, line);) plan.inputs.push_back(std::move(line));
+  if (done.size() != plan.inputs.size())
+    throw std::runtime_error("rank 0 sent " + std::to_string(plan.inputs.size()) + " runs with " + std::to_string(done.size()) + " marks of runs done");
+  plan.done = std::move(done);
+  return plan;
+}
+
+sweep_counts run_sweep_rank0(const sweep_plan& plan, map_processes& processes, const sweep_output& out) {
   static const resumed_map nothing_yet;
   map_file_writer file(out.path, out.existing ? *out.existing : nothing_yet, sweep_header(plan));
   std::vector<std::size_t> todo;
   for (std::size_t k = 0; k < plan.inputs.size(); ++k)
     if (!plan.done[k]) todo.push_back(k);
-  ordered_lines collected(todo, &file, nullptr, nullptr);
+  sweep_counts counts;
+  if (out.existing)
+    for (const auto& line : out.existing->lines) counts.count(line);
+  counts.now = todo.size();
+  const std::function<void(const std::string&)> tally = [&counts](const std::string& line) { counts.count(line); };
+  ordered_lines collected(todo, &file, &tally, nullptr);
   const auto start = std::chrono::steady_clock::now();
   const auto show = [&] {
     if (!out.progress) return;
@@ -192,7 +283,7 @@ std::size_t run_sweep_rank0(const sweep_plan& plan, map_processes& processes, co
   }
   if (!collected.complete()) throw std::runtime_error("a process of the MPI job did not deliver all its runs");
   file.finish();
-  return todo.size();
+  return counts;
 }
 
 void run_sweep_worker(const sweep_plan& plan, map_processes& processes) {

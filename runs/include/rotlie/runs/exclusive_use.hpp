@@ -11,7 +11,7 @@
 
 namespace rotlie::runs {
 
-/// Another process holds the folder.
+/// Another process holds the folder (or the file, for exclusive_file).
 struct folder_in_use : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -27,6 +27,27 @@ class exclusive_use {
 
  private:
   int fd_ = -1;
+};
+
+/// One run at a time on a results file (`rotlie sweep --out`), whatever name reaches it: the lock is on
+/// the file itself (its device and inode), so a hard link in another folder or a symbolic link is the
+/// same file, and two files of one folder are two. As the folder's lock: released by the kernel when
+/// the process ends, a second run refused at once (folder_in_use, one line naming the file) before it
+/// reads or writes the file. An absent file is created empty first (`created()`), so that it is
+/// locked before anything is written to it; a path that is not a regular file (a folder, a FIFO) is
+/// neither created nor locked (`locked()` false), left to the caller's refusal.
+class exclusive_file {
+ public:
+  exclusive_file(const std::filesystem::path& file, std::string_view option);
+  ~exclusive_file();
+  exclusive_file(const exclusive_file&) = delete;
+  exclusive_file& operator=(const exclusive_file&) = delete;
+  bool created() const { return created_; }
+  bool locked() const { return fd_ >= 0; }
+
+ private:
+  int fd_ = -1;
+  bool created_ = false;
 };
 
 }  // namespace rotlie::runs

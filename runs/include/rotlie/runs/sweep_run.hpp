@@ -7,7 +7,8 @@
 // "error"} for a run that could not be made (a sweep over impact outcomes meets collisions; it goes on).
 // The file is the map's kind (map_file.hpp): a header naming the input (its size and FNV-1a hash),
 // lines appended whole, resumable after a kill; the runs are dealt out to the processes in turn (run k
-// on process k mod size) and collected by rank 0 as the map's bodies are (map_run.hpp's processes).
+// on process k mod size) and collected by rank 0 as the map's bodies are (map_run.hpp's processes);
+// rank 0 alone reads the input and sends its runs to the others.
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -26,7 +27,7 @@ struct sweep_plan {
 };
 
 /// The input file's runs; throws bad_input naming --in and the line for a line that is not a JSON
-/// object of known options (before anything runs).
+/// object of known options, or that nests deeper than any run's options do (before anything runs).
 sweep_plan plan_sweep(const std::filesystem::path& input);
 
 /// {"rotlie_sweep":1,"runs":N,"input":"<hash>"}
@@ -34,7 +35,8 @@ std::string sweep_header(const sweep_plan& plan);
 
 /// What a resume finds in `path`: the runs done (the file's lines must be this sweep's, in order).
 /// Throws bad_input (--resume: …), leaving the file as it is, for another sweep's file or bytes no kill
-/// could leave.
+/// could leave: a line that is not the next run's result as sweep_line writes it (binary's JSON, or a
+/// status of refused, contact or failed with its error) refuses the whole file.
 resumed_map resume_sweep_file(const std::filesystem::path& path, const sweep_plan& plan);
 
 /// Run `index` of the plan: its result line.
@@ -46,8 +48,21 @@ struct sweep_output {
   std::function<void(const std::string&)> progress;  ///< may be empty
 };
 
-/// Rank 0's part (the whole run on one process); returns the runs computed now.
-std::size_t run_sweep_rank0(const sweep_plan& plan, map_processes& processes, const sweep_output& out);
+/// A completed sweep's runs by outcome (the whole file's, a resume's earlier lines too), and how many
+/// of them ran now.
+struct sweep_counts {
+  std::size_t computed = 0, contact = 0, refused = 0, failed = 0;
+  std::size_t now = 0;
+  void count(const std::string& result_line);
+};
+
+/// Rank 0's part (the whole run on one process).
+sweep_counts run_sweep_rank0(const sweep_plan& plan, map_processes& processes, const sweep_output& out);
+
+/// The plan's runs as rank 0 read them, one line each, for the workers (which never read --in: a file
+/// replaced meanwhile would mix two inputs' results under one header); and the workers' plan from it.
+std::string sweep_inputs_text(const sweep_plan& plan);
+sweep_plan sweep_plan_of(const std::string& inputs_text, std::vector<char> done);
 
 /// A worker's part.
 void run_sweep_worker(const sweep_plan& plan, map_processes& processes);
