@@ -57,4 +57,26 @@ binary_cost_plan didymos_cost_plan(double orbits, bool quick) {
   return plan;
 }
 
+std::vector<term_effect> didymos_term_effects(double T) {
+  std::vector<term_effect> out;
+  const auto without = binary_run(didymos_setup(4, "KEPLER4", 60, T, false));
+  for (const auto& term : binary_terms()) {
+    if (term.example.empty()) continue;
+    binary_request r;
+    r.system = "didymos", r.order = "4", r.integrator = "KEPLER4", r.h = "60", r.T = schemes::message_number(T), r.no_error_estimate = true;
+    r.terms[term.name] = term.example;
+    const auto with = binary_run(binary_setup_of(r));
+    term_effect e;
+    e.name = term.name, e.values = term.example;
+    const auto& a = with.end.x.r;
+    const auto& b = without.end.x.r;
+    e.separation_change_km = models::norm(models::vec3<double>{a[0] - b[0], a[1] - b[1], a[2] - b[2]});
+    e.phase_change_deg = (std::atan2(a[1], a[0]) - std::atan2(b[1], b[0])) * 180 / std::acos(-1.0);
+    for (const auto& [name, t] : with.setup.terms)
+      if (name == term.name) e.values_at_end = t->values(with.end.x, with.end.t).dump();
+    out.push_back(e);
+  }
+  return out;
+}
+
 }  // namespace rotlie::runs

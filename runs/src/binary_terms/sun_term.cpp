@@ -100,6 +100,7 @@ binary_term_description sun_term() {
           "The Sun's tide: the barycentre on a heliocentric Kepler orbit (a in AU, angles in degrees, M0 the mean anomaly at t = 0), "
           "Hill's pull on the orbit and the quadrupole torque on each body",
           {{"a", "AU"}, {"e", ""}, {"i", "deg"}, {"Omega", "deg"}, {"omega", "deg"}, {"M0", "deg"}},
+          "1.6444,0.3839,3.408,73.2,319.3,0",  // Didymos's heliocentric orbit (JPL Small-Body Database, rounded), at perihelion
           &make_sun};
 }
 

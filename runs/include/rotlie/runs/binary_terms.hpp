@@ -29,6 +29,7 @@ struct binary_term_description {
   std::string name;                       ///< the request's field
   std::string summary;                    ///< one line for --help and Python's docstring
   std::vector<term_parameter> parameters;  ///< given in this order, comma-separated
+  std::string example;                     ///< values the report runs it with on Didymos (empty: none), and where they come from
   /// The term for these values (as many as parameters, checked here: throws bad_input naming
   /// --NAME), acting on the pair `system`.
   std::shared_ptr<const registered_term> (*make)(const std::vector<double>& values, const models::binary_system<double>& system);

@@ -14,6 +14,16 @@ inline constexpr double didymos_orbit_unit_s = 42240;
 
 /// `--system didymos` at an order, integrator, step h (s) and span T (s). gubas_start: the public GUBAS
 /// example's start (1200 m, 0.175704287113523 m/s, frames aligned) instead of the circular, balanced one.
+/// Each registered force term (binary_terms.hpp) at its example values on the Didymos system: the
+/// relative position's change against the same run without it, and its values at the end.
+struct term_effect {
+  std::string name, values;
+  double separation_change_km = 0;  ///< |r_with − r_without| at the end
+  double phase_change_deg = 0;      ///< the change of the mutual orbit's angle at the end
+  std::string values_at_end;        ///< its JSON values at the end
+};
+std::vector<term_effect> didymos_term_effects(double T);
+
 binary_setup didymos_setup(int order, const std::string& integrator, double h, double T, bool gubas_start);
 
 /// `days` rounded to whole minutes, in seconds: the span of the benchmark and DART runs.
