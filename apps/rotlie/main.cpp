@@ -1,7 +1,7 @@
 // The rotlie command-line interface. This is the only translation unit that includes CLI11.
 //
 // Exit statuses: 0 success; 1 the run failed (a write error such as a full disk, a numerical
-// failure); 2 bad arguments (nothing computed). A closed output pipe (`rotlie … | head`) ends
+// failure); 2 bad arguments (nothing computed); 3 a sweep completed with runs refused or failed. A closed output pipe (`rotlie … | head`) ends
 // rotlie by SIGPIPE, as it does the standard filters: status 141 in the shell, no message.
 #include <CLI/CLI.hpp>
 
@@ -33,7 +33,7 @@ int fail(const std::string& message, int status) {
 
 const char* const exit_status_help =
     "Exit status: 0 success; 1 the run failed (a write error such as a full disk, an output folder in use by another run, a numerical failure); "
-    "2 bad arguments. A closed output pipe ends rotlie by SIGPIPE (status 141), as it does the standard filters.";
+    "2 bad arguments; 3 a sweep completed with runs refused or failed. A closed output pipe ends rotlie by SIGPIPE (status 141), as it does the standard filters.";
 
 // CLI11's wording, said in rotlie's: which option, and what was wrong with it.
 std::string reworded(const CLI::ParseError& e, const CLI::App* sub) {
@@ -366,13 +366,13 @@ const CLI::App* named_subcommand(const CLI::App& app, int argc, char** argv) {
 }
 
 // CLI11 would only say "a subcommand is required" for a mistyped one: name it instead. Empty when
-// argv[1] is a subcommand, --help or absent.
+// argv[1] is a subcommand, --help, --version or absent.
 std::string first_argument_problem(const CLI::App& app, int argc, char** argv) {
   std::string names;
   for (const auto* sub : app.get_subcommands({})) names += (names.empty() ? "" : ", ") + sub->get_name();
   if (argc > 1 && argv[1][0] != '-' && !named_subcommand(app, argc, argv))
     return "unknown subcommand '" + std::string(argv[1]) + "' (expected one of: " + names + ")";
-  if (argc > 1 && argv[1][0] == '-' && std::string(argv[1]) != "-h" && std::string(argv[1]) != "--help")
+  if (argc > 1 && argv[1][0] == '-' && std::string(argv[1]) != "-h" && std::string(argv[1]) != "--help" && std::string(argv[1]) != "--version")
     return "unknown option " + std::string(argv[1]) + " before the subcommand (options follow it; see rotlie --help)";
   return "";
 }
@@ -420,6 +420,7 @@ int main(int argc, char** argv) {
   std::signal(SIGPIPE, SIG_DFL);
   rotlie::app::route_standard_output();
   CLI::App app{"rotlie — dedicated symplectic integrators for rigid-body rotation (Laskar & Vaillant 2018)"};
+  app.set_version_flag("--version", "rotlie " ROTLIE_VERSION_TEXT);
   app.require_subcommand(1);
   app.footer(exit_status_help);
   all_options options;

@@ -372,4 +372,11 @@ BOOST_AUTO_TEST_CASE(bch_prints_the_same_series_on_any_number_of_threads) {
   }
 }
 
+// `rotlie --version` names the project's version (CMake's PROJECT_VERSION), exit 0.
+BOOST_AUTO_TEST_CASE(version_names_the_release) {
+  const auto r = run("--version");
+  BOOST_TEST(r.status == 0, r.err);
+  BOOST_TEST(r.out == "rotlie 0.1.0\n");
+}
+
 BOOST_AUTO_TEST_SUITE_END()  // cli_test
