@@ -19,7 +19,9 @@ namespace py = pybind11;
   throw py::error_already_set();
 }
 
-// A number as the command line reads it: str, int, float or Fraction, as str() writes it.
+// A number as the command line reads it: str, int, float or Fraction, as str() writes it; NumPy's
+// scalars (any numbers.Integral or numbers.Real) as the int or float they hold, so that str() writes
+// them exactly (repr of a float round-trips).
 inline std::string number_argument(const py::handle& value, const char* what) {
   if (py::isinstance<py::bool_>(value) || PyComplex_Check(value.ptr()))
     type_error(std::string(what) + " must be a real number, a Fraction or its text");
@@ -27,14 +29,22 @@ inline std::string number_argument(const py::handle& value, const char* what) {
   if (py::isinstance<py::str>(value) || py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value) ||
       py::isinstance(value, fractions.attr("Fraction")))
     return py::str(value);
+  const auto numbers = py::module_::import("numbers");
+  if (py::isinstance(value, numbers.attr("Integral"))) return py::str(py::int_(py::reinterpret_borrow<py::object>(value)));
+  if (py::isinstance(value, numbers.attr("Real"))) return py::str(py::float_(py::reinterpret_borrow<py::object>(value)));
   type_error(std::string(what) + " must be a real number, a Fraction or its text, got " + std::string(py::str(value.get_type().attr("__name__"))));
+}
+
+// An integer argument: int or any numbers.Integral (NumPy's), never a bool or a float truncated to one.
+inline bool is_integer_argument(const py::handle& value) {
+  return !py::isinstance<py::bool_>(value) && py::isinstance(value, py::module_::import("numbers").attr("Integral"));
 }
 
 // every=K: None (no trajectory) or an integer, never a float truncated to one.
 inline std::string every_argument(const py::handle& every) {
   if (every.is_none()) return "0";
-  if (!py::isinstance<py::int_>(every) || py::isinstance<py::bool_>(every)) type_error("every must be an integer or None");
-  return py::str(every);
+  if (!is_integer_argument(every)) type_error("every must be an integer or None");
+  return py::str(py::int_(py::reinterpret_borrow<py::object>(every)));
 }
 
 // A body as `rotlie spin --body` takes it: a name or "A,B,C" as text, a Body, or three moments.

@@ -23,6 +23,31 @@ inline std::string numbers_argument(const py::handle& value, const char* what) {
   return number_argument(value, what);
 }
 
+// The fields of a start, as a state file holds them.
+inline constexpr const char* state_keys[] = {"r", "v", "Q1", "Q2", "omega1", "omega2"};
+
+// A result or a held simulation: it has every field of a start.
+inline bool has_state_attributes(const py::handle& value) {
+  for (const char* key : state_keys)
+    if (!py::hasattr(value, key)) return false;
+  return true;
+}
+
+// A start given as a dict or as an object with its fields, as JSON text: NumPy arrays and scalars as
+// the lists and numbers they hold (tolist() keeps every double exactly).
+inline std::string state_json(const py::handle& value) {
+  py::dict fields;
+  if (py::isinstance<py::dict>(value))
+    fields = py::reinterpret_borrow<py::dict>(value);
+  else
+    for (const char* key : state_keys) fields[key] = value.attr(key);
+  const auto plain = py::cpp_function([](const py::object& x) -> py::object {
+    if (py::hasattr(x, "tolist")) return x.attr("tolist")();
+    type_error("state: a value of type " + std::string(py::str(x.get_type().attr("__name__"))) + " is not a number or an array");
+  });
+  return py::str(py::module_::import("json").attr("dumps")(fields, py::arg("default") = plain, py::arg("allow_nan") = true));
+}
+
 inline std::string field_argument(const runs::binary_field& f, const py::handle& value) {
   using kind = runs::binary_field::kind;
   const char* name = f.name.c_str();
@@ -32,9 +57,12 @@ inline std::string field_argument(const runs::binary_field& f, const py::handle&
     case kind::numbers:
       return numbers_argument(value, name);
     case kind::integer:
-      if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value)) type_error(f.name + " must be an integer, got " + std::string(py::str(value.get_type().attr("__name__"))));
-      return py::str(value);
+      if (!is_integer_argument(value)) type_error(f.name + " must be an integer, got " + std::string(py::str(value.get_type().attr("__name__"))));
+      return py::str(py::int_(py::reinterpret_borrow<py::object>(value)));
     case kind::state:
+      if (!py::isinstance<py::str>(value) && !py::hasattr(value, "__fspath__"))
+        type_error(f.name + " must be a file's path (str or os.PathLike), a dict of r, v, Q1, Q2, omega1, omega2, or a result or simulation that has them, got " +
+                   std::string(py::str(value.get_type().attr("__name__"))));
       return py::str(py::module_::import("os").attr("fspath")(value));
     case kind::text:
     case kind::flag:
@@ -62,8 +90,8 @@ inline runs::binary_request binary_keywords(const py::kwargs& keywords, const st
     if (f->type == runs::binary_field::kind::flag) {
       if (!py::isinstance<py::bool_>(value)) type_error(name + " must be True or False");
       q.*f->flag = value.cast<bool>();
-    } else if (f->type == runs::binary_field::kind::state && py::isinstance<py::dict>(value)) {
-      q.state_text = py::str(py::module_::import("json").attr("dumps")(value));
+    } else if (f->type == runs::binary_field::kind::state && (py::isinstance<py::dict>(value) || has_state_attributes(value))) {
+      q.state_text = state_json(value);
     } else {
       q.*f->text = field_argument(*f, value);
     }

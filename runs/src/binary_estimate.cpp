@@ -79,4 +79,37 @@ std::optional<binary_error_estimate> estimate_binary_error(const binary_setup& s
   return e;
 }
 
+std::optional<binary_error_estimate> estimate_contact_error(const binary_setup& setup, long step, const models::binary_state<double>& touching,
+                                                            std::string& why, const std::function<bool()>& stop) {
+  const int p = declared_order(setup.method);
+  binary_setup fine = setup;
+  fine.steps = 2 * step, fine.h = setup.h / 2, fine.T = fine.h * static_cast<double>(fine.steps);
+  fine.every = 0, fine.observe = false, fine.error_estimate = false, fine.stops_at_contact = false;
+  binary_error_estimate e;
+  e.order = p, e.step_ratio = 0.5;
+  models::binary_state<double> x;
+  try {
+    binary_simulation companion(fine);
+    companion.advance(fine.steps, {}, {}, stop);
+    if (companion.steps() < fine.steps) throw binary_stopped();
+    x = companion.state();
+    e.cpu_s = companion.result().cpu_s;
+  } catch (const binary_stopped&) {
+    throw;
+  } catch (const std::runtime_error& failure) {
+    why = std::string("failed: ") + failure.what();
+    return std::nullopt;
+  }
+  const double scale = 1 - std::pow(0.5, p);  // x_h − x_{h/2} ≈ (1 − 2^−p) times the error at h
+  e.position_rel = distance(x.r, touching.r) / models::norm(touching.r) / scale;
+  e.velocity_rel = distance(x.v, touching.v) / models::norm(touching.v) / scale;
+  e.attitude1_rad = rotation_angle(x.body[0].Q, touching.body[0].Q) / scale;
+  e.attitude2_rad = rotation_angle(x.body[1].Q, touching.body[1].Q) / scale;
+  if (!(std::isfinite(e.position_rel) && std::isfinite(e.attitude1_rad) && std::isfinite(e.attitude2_rad))) {
+    why = "ends with values that are not finite";
+    return std::nullopt;
+  }
+  return e;
+}
+
 }  // namespace rotlie::runs

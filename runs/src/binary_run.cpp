@@ -2,12 +2,14 @@
 
 #include <cln/rational.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
 #include "rotlie/lie/exact_number.hpp"
 #include "rotlie/models/md_trajectory.hpp"
+#include "rotlie/runs/binary_estimate.hpp"
 #include "rotlie/runs/binary_simulation.hpp"
 #include "rotlie/runs/binary_state_file.hpp"
 #include "rotlie/runs/binary_units.hpp"
@@ -73,6 +75,11 @@ binary_contact::binary_contact(double time, long at_step)
       t(time),
       step(at_step) {}
 
+binary_unconfirmed_contact::binary_unconfirmed_contact(const binary_contact& seen, const std::string& at_half_step)
+    : std::runtime_error("the bodies touch at t = " + message_number(seen.t) + " s (step " + std::to_string(seen.step) + "), but the same run at half the step " +
+                         at_half_step + ": the contact may be the step's error; take a smaller step"),
+      t(seen.t) {}
+
 models::binary_system<double> binary_setup::system_model() const {
   models::binary_system<double> sys{primary.body, secondary.body, G, order};
   for (const auto& term : terms) sys.add_term(term.second);
@@ -82,22 +89,29 @@ models::binary_system<double> binary_setup::system_model() const {
 binary_setup binary_setup_of(const binary_request& given) {
   binary_request r = given;
   binary_setup s;
+  // A preset's numbers stay the doubles they are (never through text): each is taken where the
+  // request leaves its option empty.
+  const binary_system_preset* preset = nullptr;
   if (!r.system.empty()) {
-    const auto& preset = binary_system_named(r.system);
-    s.system = preset.name;
-    if (r.primary.empty()) r.primary = preset.primary;
-    if (r.secondary.empty()) r.secondary = preset.secondary;
-    if (r.density.empty() && r.mass.empty()) r.density = message_number(preset.density1) + "," + message_number(preset.density2);
-    const bool own_start = !r.state_file.empty() || !r.state_text.empty();
-    if (r.separation.empty() && !own_start) r.separation = message_number(preset.separation);
-    if (r.primary_period.empty() && !own_start) r.primary_period = message_number(preset.primary_period);
+    preset = &binary_system_named(r.system);
+    s.system = preset->name;
+    if (r.primary.empty()) r.primary = preset->primary;
+    if (r.secondary.empty()) r.secondary = preset->secondary;
   }
+  const bool own_start = !r.state_file.empty() || !r.state_text.empty();
+  const bool preset_density = preset && r.density.empty() && r.mass.empty();
+  const bool preset_separation = preset && r.separation.empty() && !own_start;
+  const bool preset_period = preset_separation && r.primary_period.empty();
   if (r.primary.empty() || r.secondary.empty()) throw bad_input("--primary and --secondary are required (or --system NAME)");
   s.primary = binary_shape_named(r.primary, "--primary");
   s.secondary = binary_shape_named(r.secondary, "--secondary");
   if (!r.density.empty() && !r.mass.empty()) throw bad_input("--density and --mass exclude each other: give one");
-  if (r.density.empty() && r.mass.empty()) throw bad_input("--density RHO (kg/m3, one or two values) or --mass M1,M2 (kg) is required");
-  if (!r.density.empty()) {
+  if (preset_density) {
+    s.primary = with_density(s.primary, preset->density1);
+    s.secondary = with_density(s.secondary, preset->density2);
+  } else if (r.density.empty() && r.mass.empty()) {
+    throw bad_input("--density RHO (kg/m3, one or two values) or --mass M1,M2 (kg) is required");
+  } else if (!r.density.empty()) {
     const auto rho = positive_numbers(r.density, "--density");
     if (rho.size() > 2) throw bad_input("--density takes one value (both bodies) or two, got '" + one_line(r.density) + "'");
     if (!r.force)
@@ -116,26 +130,28 @@ binary_setup binary_setup_of(const binary_request& given) {
   if (!r.force) check_G_units(s.G, r.G);
   const auto sys = s.system_model();
   if (!r.state_file.empty() && !r.state_text.empty()) throw bad_input("the state is given twice (a file and inline)");
-  if ((!r.state_file.empty() || !r.state_text.empty()) && !r.separation.empty()) throw bad_input("--state and --separation exclude each other: give one");
+  if (own_start && !r.separation.empty()) throw bad_input("--state and --separation exclude each other: give one");
   if (!r.state_text.empty()) {
     s.start = parse_binary_state(r.state_text, "state", sys);
   } else if (!r.state_file.empty()) {
     s.start = read_binary_state(r.state_file, sys);
-  } else if (!r.separation.empty()) {
-    const double R = positive_number(r.separation, "--separation");
-    const double period = r.primary_period.empty() ? 0 : positive_number(r.primary_period, "--primary-period");
+  } else if (!r.separation.empty() || preset_separation) {
+    const double R = preset_separation ? preset->separation : positive_number(r.separation, "--separation");
+    const std::string separation_text = "--separation " + (preset_separation ? message_number(R) : one_line(r.separation)) + " km";
+    const double period = preset_period ? preset->primary_period : r.primary_period.empty() ? 0 : positive_number(r.primary_period, "--primary-period");
     if (!r.force && period > 0) check_period_units(period, "--primary-period");
     const double spin = period > 0 ? 2 * std::acos(-1.0) / (3600 * period) : 0;
-    if (!r.force) check_size_units(s.primary, s.secondary, R, "--separation " + one_line(r.separation) + " km");
+    if (!r.force) check_size_units(s.primary, s.secondary, R, separation_text);
     if (R <= s.primary.inner_radius + s.secondary.inner_radius || bodies_touch(s.primary, models::mat3<double>::identity(), s.secondary, models::mat3<double>::identity(), {R, 0, 0}))
-      throw bad_input("--separation " + one_line(r.separation) + " km: the bodies overlap (their bounding radii are " + message_number(s.primary.bounding_radius) +
+      throw bad_input(separation_text + ": the bodies overlap (their bounding radii are " + message_number(s.primary.bounding_radius) +
                       " and " + message_number(s.secondary.bounding_radius) + " km)");
     s.start = circular_start(sys, R, spin);
   } else {
     throw bad_input("the start is required: --separation R (km) or --state FILE");
   }
-  if (!r.primary_period.empty() && r.separation.empty()) throw bad_input("--primary-period goes with --separation (a --state file gives omega1)");
-  if (!r.force && r.separation.empty()) check_size_units(s.primary, s.secondary, norm(s.start.r), "--state (|r| = " + message_number(norm(s.start.r)) + " km)");
+  const bool circular = !r.separation.empty() || preset_separation;
+  if (!r.primary_period.empty() && !circular) throw bad_input("--primary-period goes with --separation (a --state file gives omega1)");
+  if (!r.force && !circular) check_size_units(s.primary, s.secondary, norm(s.start.r), "--state (|r| = " + message_number(norm(s.start.r)) + " km)");
   if (!r.impulse.empty()) {
     s.impulse = impulse_named(r.impulse, sys, s.start);
     s.start = with_impulse(s.start, *s.impulse);
@@ -157,7 +173,9 @@ binary_setup binary_setup_of(const binary_request& given) {
     const double e = std::sqrt(std::max(0.0, 1 + 2 * energy * p / GM));
     const double pericentre = p / (1 + e);
     const bool reaches = energy < 0 || models::dot(s.start.r, s.start.v) < 0;
-    if (reaches && pericentre < s.primary.inner_radius + s.secondary.inner_radius)
+    const auto T_given = lie::parse_exact_number(r.T);
+    const bool pose_only = T_given && cln::zerop(*T_given);  // --T 0 asks for this pose's values, not its future
+    if (reaches && !pose_only && pericentre < s.primary.inner_radius + s.secondary.inner_radius)
       throw bad_input("the orbit's pericentre (" + message_number(pericentre) + " km, e = " + message_number(e) + ") lies within the bodies' inner radii (" +
                       message_number(s.primary.inner_radius + s.secondary.inner_radius) + " km): they collide");
   }
@@ -211,6 +229,18 @@ void judge_beyond_energy(binary_result& r, const models::binary_system<double>& 
   r.check.warnings.push_back(why + ": the step is beyond the integrator's stable or accurate range; the result cannot be trusted");
 }
 
+// A fixed-step run's contact stands when the state that touched is known to the accuracy asked for:
+// the same run at half the step, stepping through, estimates its error at the contact's time.
+void confirm_contact(const binary_setup& s, const binary_contact& seen, const models::binary_state<double>& touching, const std::function<bool()>& stop) {
+  if (s.method.family == binary_method::kind::odeint) throw seen;  // an adaptive run's error is its tolerance's
+  std::string why;
+  const auto e = estimate_contact_error(s, seen.step, touching, why, stop);
+  if (!e) throw binary_unconfirmed_contact(seen, why);
+  if (e->position_rel <= s.accuracy_rel && e->attitude1_rad <= s.accuracy_rad && e->attitude2_rad <= s.accuracy_rad) throw seen;
+  throw binary_unconfirmed_contact(seen, "puts the pair elsewhere then (estimated error: position " + message_number(e->position_rel) + " relative, attitudes " +
+                                             message_number(e->attitude1_rad) + " and " + message_number(e->attitude2_rad) + " rad)");
+}
+
 }  // namespace
 
 binary_result binary_run(const binary_setup& s, const std::function<void(const binary_sample&)>& sample, const std::function<void(double)>& progress,
@@ -224,10 +254,14 @@ binary_result binary_run(const binary_setup& s, const std::function<void(const b
     observer.add(x.t, x.x);
     if (sample && s.every > 0 && std::llround(x.t / stepped.h) % s.every == 0) sample(x);
   };
-  if (s.observe)
-    simulation.advance(s.steps, observed, progress, stop);
-  else
-    simulation.advance(s.steps, sample, progress, stop);
+  try {
+    if (s.observe)
+      simulation.advance(s.steps, observed, progress, stop);
+    else
+      simulation.advance(s.steps, sample, progress, stop);
+  } catch (const binary_contact& seen) {
+    confirm_contact(stepped, seen, simulation.state(), stop);
+  }
   if (simulation.steps() < s.steps) throw binary_stopped();
   auto r = simulation.result();
   if (s.observe) r.observables = observer.result(simulation.system(), r.end.x);

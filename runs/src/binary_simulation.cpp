@@ -258,7 +258,7 @@ void binary_simulation::advance(long count, const std::function<void(const binar
     if (stop && k % stop_poll_steps == 0 && stop()) break;
     stepper_->step(x_, k - 1, s.h);
     steps_ = k;
-    if (bodies_touch(s.primary, x_.body[0].Q, s.secondary, x_.body[1].Q, x_.r)) throw binary_contact(static_cast<double>(k) * s.h, k);
+    if (s.stops_at_contact && bodies_touch(s.primary, x_.body[0].Q, s.secondary, x_.body[1].Q, x_.r)) throw binary_contact(static_cast<double>(k) * s.h, k);
     if (k % check_every_ == 0 || k == end) watch_->sample(system_, x_, static_cast<double>(k) * s.h);
     if (progress && (k - (end - count)) % progress_every == 0) progress(static_cast<double>(k - (end - count)) / static_cast<double>(count));
     if (sample && s.every > 0 && k % s.every == 0) {

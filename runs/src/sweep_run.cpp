@@ -205,6 +205,8 @@ std::string sweep_line(const sweep_plan& plan, std::size_t index) {
     line = {{"status", "refused"}, {"error", one_line(e.what())}};
   } catch (const binary_contact& e) {
     line = {{"status", "contact"}, {"error", one_line(e.what())}, {"contact_t", e.t}};
+  } catch (const binary_unconfirmed_contact& e) {  // the step's error, not a physical outcome
+    line = {{"status", "failed"}, {"error", one_line(e.what())}, {"inaccurate", true}};
   } catch (const std::exception& e) {
     line = {{"status", "failed"}, {"error", one_line(e.what())}};
   }

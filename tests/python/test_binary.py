@@ -63,3 +63,25 @@ def test_refusals_are_the_command_lines_and_contact_raises():
     with pytest.raises(RuntimeError, match="the bodies touch at t = "):
         rotlie.binary(primary="ellipsoid:0.4,0.3,0.2", secondary="ellipsoid:0.05,0.05,0.05", density=2000, state=graze, integrator="SIER2",
                       h=10, T=20000)
+
+
+def test_numpy_scalars_paths_results_and_arrays_mean_what_they_obviously_mean(tmp_path):
+    """Issue 46: order=np.int64(2), h=np.float32(60), every=np.int32(5) are the numbers they hold; state= takes a
+    pathlib.Path, a dict of NumPy arrays, and the result or simulation whose end it is; a float for an integer,
+    a bool, or an unrelated object is one line of TypeError."""
+    a = rotlie.binary(system="didymos", integrator="SIER4", h=60, T=600, order=2, every=5)
+    b = rotlie.binary(system="didymos", integrator="SIER4", h=np.float32(60), T=np.int64(600), order=np.int64(2), every=np.int32(5))
+    assert np.array_equal(a.r, b.r) and np.array_equal(a.trajectory.t, b.trajectory.t)
+    path = tmp_path / "start.json"
+    path.write_text(json.dumps(cli("binary", "--system", "didymos", "--integrator", "SIER4", "--h", "60", "--T", "600", "--order", "2", "--json")))
+    sim = rotlie.binary_simulation(system="didymos", integrator="SIER4", h=60)
+    sim.integrate(600)
+    arrays = {k: getattr(a, k) for k in ("r", "v", "Q1", "Q2", "omega1", "omega2")}
+    ends = [rotlie.binary(system="didymos", integrator="SIER4", h=60, T=600, order=2, state=s) for s in (path, a, arrays, sim)]
+    for e in ends[1:]:
+        assert np.array_equal(e.r, ends[0].r) and np.array_equal(e.Q2, ends[0].Q2)
+    for bad, words in ((dict(order=2.0), "order must be an integer, got float"), (dict(order=True), "order must be an integer, got bool"),
+                       (dict(state=3), "state must be a file's path")):
+        with pytest.raises(TypeError, match=words) as e:
+            rotlie.binary(system="didymos", integrator="SIER4", h=60, T=600, **bad)
+        assert "\n" not in str(e.value)

@@ -27,6 +27,12 @@ struct binary_error_estimate {
 std::optional<binary_error_estimate> estimate_binary_error(const binary_setup& setup, const models::binary_state<double>& end, std::string& why,
                                                            const std::function<bool()>& stop = {});
 
+/// The estimated error of the state `touching` that a run of `setup` reached at step `step` (where the
+/// bodies touched), from the same method at half the step stepping through the contact to the same
+/// time; nothing for fewer than 1 step or a companion that failed (`why` says so).
+std::optional<binary_error_estimate> estimate_contact_error(const binary_setup& setup, long step, const models::binary_state<double>& touching,
+                                                            std::string& why, const std::function<bool()>& stop = {});
+
 /// The angle of the rotation Aᵀ B, rad.
 double rotation_angle(const models::mat3<double>& A, const models::mat3<double>& B);
 

@@ -75,6 +75,7 @@ struct binary_setup {
   bool observe = false;
   bool error_estimate = true;            ///< a fixed-step run's estimate at twice the step (binary_estimate.hpp)
   double accuracy_rel = 1e-3, accuracy_rad = 1e-2;
+  bool stops_at_contact = true;          ///< false only for a companion run that checks a contact (it steps through)
 
   /// The pair with its added terms.
   models::binary_system<double> system_model() const;
@@ -123,9 +124,18 @@ struct binary_contact : std::runtime_error {
   long step;
 };
 
+/// A fixed-step run touched, but the state that touched is not known to the accuracy asked for: the
+/// same run at half the step puts it elsewhere (binary_estimate.hpp). The contact may be the step's
+/// error rather than a physical outcome (the CLI exits 1 saying so).
+struct binary_unconfirmed_contact : std::runtime_error {
+  binary_unconfirmed_contact(const binary_contact& seen, const std::string& at_half_step);
+  double t;
+};
+
 /// Runs the setup; `sample` (if given) receives the state at steps 0, every, 2·every, …, and `progress`
-/// (if given) the fraction done about every 1 % of the steps. Throws binary_contact, or
-/// std::runtime_error when an adaptive run exhausts its step budget.
+/// (if given) the fraction done about every 1 % of the steps. Throws binary_contact (for a fixed-step
+/// method, only once the touching state is confirmed to the accuracy asked for at half the step),
+/// binary_unconfirmed_contact, or std::runtime_error when an adaptive run exhausts its step budget.
 /// `stop` (if given) is asked every 64 steps; when it says so the run throws binary_stopped.
 binary_result binary_run(const binary_setup& setup, const std::function<void(const binary_sample&)>& sample = {},
                          const std::function<void(double)>& progress = {}, const std::function<bool()>& stop = {});
