@@ -134,7 +134,7 @@ json binary_json(const binary_result& r) {
   if (r.error_estimate) {
     const auto& e = *r.error_estimate;
     j["error_estimate"] = {{"position_rel", e.position_rel}, {"velocity_rel", e.velocity_rel}, {"attitude1_rad", e.attitude1_rad},
-                           {"attitude2_rad", e.attitude2_rad}, {"order", e.order}, {"step_ratio", e.step_ratio}, {"cpu_s", e.cpu_s}};
+                           {"attitude2_rad", e.attitude2_rad}, {"order", e.order}, {"observed_order", e.observed_order}, {"step_ratio", e.step_ratio}, {"cpu_s", e.cpu_s}};
   } else {
     j["error_estimate"] = nullptr;
   }

@@ -270,6 +270,10 @@ binary_result binary_run(const binary_setup& s, const std::function<void(const b
     std::string why;
     r.error_estimate = estimate_binary_error(s, r.end.x, why, stop);
     const auto& e = r.error_estimate;
+    if (!e && s.steps > 0 && s.method.family != binary_method::kind::odeint) {  // the companions failed: the step is near the method's limit
+      r.check.inaccurate = true;
+      r.check.warnings.push_back("the error of the final state could not be estimated: " + why + "; take a smaller step");
+    }
     if (e && (e->position_rel > s.accuracy_rel || e->velocity_rel > s.accuracy_rel || e->attitude1_rad > s.accuracy_rad || e->attitude2_rad > s.accuracy_rad)) {
       r.check.inaccurate = true;
       r.check.warnings.push_back("the estimated error of the final state (position " + message_number(e->position_rel) + ", velocity " +
