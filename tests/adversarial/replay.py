@@ -32,6 +32,7 @@ import tempfile
 import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from binary_surface import binary_surface, python_binary, sweep_surface  # noqa: E402
 from binary_trust import binary_trust  # noqa: E402
 
 NON_FINITE = re.compile(r"(?<![A-Za-z_])(nan|inf|infinity)(?![A-Za-z_])", re.IGNORECASE)
@@ -657,7 +658,7 @@ def main():
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--quick", action="store_true", help="fewer kill trials")
     parser.add_argument("--verbose", action="store_true")
-    parser.add_argument("--classes", default="extreme,kills,concurrent,state,spin,files,python,lammps,trust")
+    parser.add_argument("--classes", default="extreme,kills,concurrent,state,spin,files,python,lammps,trust,binary,sweep,python-binary")
     a = parser.parse_args()
     binary = str(pathlib.Path(a.binary).resolve())
     with tempfile.TemporaryDirectory(prefix="rotlie-replay-") as work:
@@ -665,7 +666,7 @@ def main():
         begin = time.monotonic()
         steps = {"extreme": extreme_values, "kills": kills, "concurrent": concurrent, "state": state_files,
                  "spin": spin_surface, "files": files_surface, "python": python_surface, "lammps": lammps_surface,
-                 "trust": binary_trust}
+                 "trust": binary_trust, "binary": binary_surface, "sweep": sweep_surface, "python-binary": python_binary}
         for name in a.classes.split(","):
             steps[name](R, a.quick)
         for cls, (n, failed, silent) in R.by_class.items():
