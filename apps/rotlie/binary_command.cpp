@@ -1,14 +1,85 @@
 // binary: two rigid bodies in mutual gravity (the full two-body problem of binary asteroids), any of
 // its integrators: the final state, the mutual gravity there, the conserved quantities' errors.
+// --every K's trajectory goes to --out FILE (written whole at the end) or, with --json and no --out,
+// to standard output as JSON lines before the summary's line; never beside the text summary.
+#include <array>
+#include <cmath>
 #include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
 
+#include "arguments.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
 #include "rotlie/runs/binary_fields.hpp"
 #include "rotlie/runs/binary_io.hpp"
 #include "rotlie/runs/binary_run.hpp"
+#include "rotlie/runs/output_file.hpp"
 
 namespace rotlie::app {
+
+namespace {
+
+// A sample's fields in the order of its JSON line and of the CSV's columns.
+constexpr std::array<const char*, 8> sample_fields = {"t", "r", "v", "Q1", "Q2", "omega1", "omega2", "energy"};
+
+// A number as the JSON lines write it (shortest round trip); nan, inf, -inf where JSON has null.
+std::string csv_number(const nlohmann::json& x) {
+  const double v = x.is_number() ? x.get<double>() : std::nan("");
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  return nlohmann::json(v).dump();
+}
+
+// One CSV row of a sample, or with `header` its column names: a vector's components r_x, r_y, r_z, a
+// matrix's entries by row Q1_11, Q1_12, … Q1_33.
+std::string csv_row(const nlohmann::json& sample, bool header) {
+  static const char* const axes[] = {"x", "y", "z"};
+  std::string row;
+  const auto cell = [&](const std::string& text) { row += (row.empty() ? "" : ",") + text; };
+  for (const char* name : sample_fields) {
+    const auto& value = sample.at(name);
+    if (!value.is_array()) {
+      cell(header ? std::string(name) : csv_number(value));
+      continue;
+    }
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      if (!value[i].is_array()) {
+        cell(header ? std::string(name) + "_" + (i < 3 ? axes[i] : std::to_string(i + 1)) : csv_number(value[i]));
+        continue;
+      }
+      for (std::size_t k = 0; k < value[i].size(); ++k)
+        cell(header ? std::string(name) + "_" + std::to_string(i + 1) + std::to_string(k + 1) : csv_number(value[i][k]));
+    }
+  }
+  return row + "\n";
+}
+
+// The --out file: JSON lines, or CSV with a header line when its name ends in .csv. Nothing is in
+// place until commit(): a run that fails leaves the file as it was.
+class trajectory_file {
+ public:
+  explicit trajectory_file(const std::string& path) : csv_(path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0) {
+    try {
+      file_ = std::make_unique<runs::output_file_stream>(path);
+    } catch (const std::runtime_error& e) {  // a folder, a FIFO, a missing folder: nothing computed
+      throw usage_error("--out: " + std::string(e.what()));
+    }
+  }
+  void add(const nlohmann::json& sample) {
+    if (csv_ && first_) file_->write(csv_row(sample, true));
+    first_ = false;
+    file_->write(csv_ ? csv_row(sample, false) : sample.dump() + "\n");
+  }
+  void commit() { file_->commit(); }
+
+ private:
+  bool csv_, first_ = true;
+  std::unique_ptr<runs::output_file_stream> file_;
+};
+
+}  // namespace
 
 int run_binary(const binary_options& o) {
   runs::binary_request request;
@@ -21,14 +92,30 @@ int run_binary(const binary_options& o) {
   for (const auto& [name, text] : o.terms)
     if (!text.empty()) request.terms[name] = text;
   const auto setup = runs::binary_setup_of(request);
+  if (setup.every > 0 && o.out.empty() && !o.json)
+    throw usage_error("--every writes a trajectory, which does not go beside the text summary: add --out FILE (or --json, for "
+                      "JSON lines on stdout before the summary's line)");
+  if (setup.every == 0 && !o.out.empty()) throw usage_error("--out FILE is --every's trajectory file: add --every K");
+  std::unique_ptr<trajectory_file> trajectory;
+  if (!o.out.empty()) trajectory = std::make_unique<trajectory_file>(o.out);
+  const bool lines_on_stdout = setup.every > 0 && !trajectory;
+
   const auto sys = setup.system_model();
   progress_line progress;  // on a terminal only
   const auto r = runs::binary_run(
-      setup, [&](const runs::binary_sample& s) { std::cout << runs::binary_sample_json(s, sys).dump() << "\n"; },
+      setup,
+      [&](const runs::binary_sample& s) {
+        const auto sample = runs::binary_sample_json(s, sys);
+        if (trajectory)
+          trajectory->add(sample);
+        else
+          std::cout << sample.dump() << "\n";
+      },
       [&](double done) { progress.show("binary: " + std::to_string(static_cast<int>(100 * done)) + " % of " + std::to_string(setup.steps) + " steps"); });
+  if (trajectory) trajectory->commit();
   for (const auto& w : r.check.warnings) std::cerr << "rotlie: warning: " << w << "\n";
   if (o.json)
-    std::cout << (setup.every > 0 ? runs::binary_json(r).dump() : runs::binary_json(r).dump(2)) << "\n";
+    std::cout << (lines_on_stdout ? runs::binary_json(r).dump() : runs::binary_json(r).dump(2)) << "\n";
   else
     std::cout << runs::binary_text(r);
   return 0;

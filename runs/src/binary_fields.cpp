@@ -8,8 +8,10 @@ namespace {
 
 using field_kind = binary_field::kind;
 
-binary_field text(std::string name, std::string type, std::string python_default, std::string help, std::string binary_request::*member, field_kind kind = field_kind::text) {
+binary_field text(std::string name, std::string cli_type, std::string type, std::string python_default, std::string help, std::string binary_request::*member,
+                  field_kind kind = field_kind::text) {
   binary_field f;
+  f.cli_type = std::move(cli_type);
   f.name = name;
   f.option = "--" + name;
   for (auto& c : f.option)
@@ -29,36 +31,36 @@ binary_field flag(std::string name, std::string help, bool binary_request::*memb
 
 std::vector<binary_field> all_fields() {
   std::vector<binary_field> f;
-  f.push_back(text("system", "str | None", "None", "A named system (didymos): its bodies, densities and start; the options below override it", &binary_request::system));
-  f.push_back(text("primary", "str | None", "None",
+  f.push_back(text("system", "NAME", "str | None", "None", "A named system (didymos): its bodies, densities and start; the options below override it", &binary_request::system));
+  f.push_back(text("primary", "SHAPE", "str | None", "None",
                    "ellipsoid:a,b,c (semi-axes in km, a >= b >= c along x, y, z) or polyhedron:FILE (a shape model in km: Wavefront OBJ, or "
                    "'N_vertices N_facets' then vertices and 1-based facets)",
                    &binary_request::primary));
-  f.push_back(text("secondary", "str | None", "None", "As primary", &binary_request::secondary));
-  f.push_back(text("density", "float | tuple[float, float] | None", "None", "kg/m3: one value for both bodies, or RHO1,RHO2", &binary_request::density, field_kind::numbers));
-  f.push_back(text("mass", "tuple[float, float] | None", "None", "M1,M2 in kg (instead of the density)", &binary_request::mass, field_kind::numbers));
-  f.push_back(text("order", "int", "2", "Truncation of the mutual potential in the inertia integrals: 0, 2 or 4 (default 2)", &binary_request::order, field_kind::integer));
-  f.push_back(text("G", "float | str", "'6.67430e-20'", "Gravitational constant in km3 kg-1 s-2 (default 6.67430e-20)", &binary_request::G, field_kind::number));
-  f.push_back(text("separation", "float | None", "None",
+  f.push_back(text("secondary", "SHAPE", "str | None", "None", "As primary", &binary_request::secondary));
+  f.push_back(text("density", "RHO|RHO1,RHO2", "float | tuple[float, float] | None", "None", "kg/m3: one value for both bodies, or RHO1,RHO2", &binary_request::density, field_kind::numbers));
+  f.push_back(text("mass", "M1,M2", "tuple[float, float] | None", "None", "M1,M2 in kg (instead of the density)", &binary_request::mass, field_kind::numbers));
+  f.push_back(text("order", "ORDER", "int", "2", "Truncation of the mutual potential in the inertia integrals: 0, 2 or 4", &binary_request::order, field_kind::integer));
+  f.push_back(text("G", "NUMBER", "float | str", "'6.67430e-20'", "Gravitational constant in km3 kg-1 s-2", &binary_request::G, field_kind::number));
+  f.push_back(text("separation", "KM", "float | None", "None",
                    "km: a circular mutual orbit in the primary's equatorial plane, frames aligned, the secondary synchronous (its long axis at the "
                    "primary), the rate balancing the mutual pull",
                    &binary_request::separation, field_kind::number));
-  f.push_back(text("primary_period", "float | None", "None", "Hours: the primary's spin with the separation (default: synchronous)", &binary_request::primary_period,
+  f.push_back(text("primary_period", "HOURS", "float | None", "None", "Hours: the primary's spin with the separation (default: synchronous)", &binary_request::primary_period,
                    field_kind::number));
-  f.push_back(text("state", "str | os.PathLike | dict | None", "None",
+  f.push_back(text("state", "FILE", "str | os.PathLike | dict | None", "None",
                    "A start from a JSON file (or, in Python and a sweep, the object) with r, v (km, km/s), Q1, Q2 (rows), omega1, omega2 (rad/s, body "
                    "frames): a run's JSON output starts the next",
                    &binary_request::state_file, field_kind::state));
-  f.push_back(text("integrator", "str", "'SIER4'", method_names_text(method_system::binary) + " (X for both bodies)", &binary_request::integrator));
+  f.push_back(text("integrator", "NAME", "str", "'SIER4'", method_names_text(method_system::binary) + " (X for both bodies)", &binary_request::integrator));
   f.back().cli_required = true;
-  f.push_back(text("h", "float | None", "None", "The step in seconds (an adaptive method's first trial step and the spacing of its checks)", &binary_request::h,
+  f.push_back(text("h", "SECONDS", "float | None", "None", "The step in seconds (an adaptive method's first trial step and the spacing of its checks)", &binary_request::h,
                    field_kind::number));
-  f.push_back(text("T", "float", "", "Length of the run in seconds, a whole number of steps h; 0 gives the start's values", &binary_request::T, field_kind::number));
+  f.push_back(text("T", "SECONDS", "float", "", "Length of the run in seconds, a whole number of steps h; 0 gives the start's values", &binary_request::T, field_kind::number));
   f.back().cli_required = true, f.back().run_only = true;
-  f.push_back(text("every", "int | None", "None", "The trajectory every K steps from the start, one JSON line each (t, r, v, Q1, Q2, omega1, omega2, energy)",
+  f.push_back(text("every", "K", "int | None", "None", "The trajectory every K steps from the start, one sample each (t, r, v, Q1, Q2, omega1, omega2, energy); 0 for none",
                    &binary_request::every, field_kind::integer));
   f.back().run_only = true, f.back().sweep = false;
-  f.push_back(text("impulse", "str | None", "None",
+  f.push_back(text("impulse", "BODY:VALUES", "str | None", "None",
                    "An impulse on one body at the start: BODY:dx,dy,dz (mm/s, inertial) or BODY:beta=B,m=KG,U=KM_S (DART's form: beta m U / M "
                    "against the body's orbital motion); BODY primary or secondary",
                    &binary_request::impulse));
@@ -67,8 +69,8 @@ std::vector<binary_field> all_fields() {
                    "osculating elements at the end (the JSON's observables)",
                    &binary_request::observe));
   f.back().run_only = true;
-  f.push_back(text("accuracy", "float | tuple[float, float]", "'1e-3,1e-2'",
-                   "The error estimate's bounds: REL (position and velocity, relative) or REL,RAD (RAD the attitudes' angle; default 1e-3,1e-2): "
+  f.push_back(text("accuracy", "REL[,RAD]", "float | tuple[float, float]", "'1e-3,1e-2'",
+                   "The error estimate's bounds: REL (position and velocity, relative) or REL,RAD (RAD the attitudes' angle): "
                    "beyond them the run is marked inaccurate",
                    &binary_request::accuracy, field_kind::numbers));
   f.back().run_only = true;

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -59,6 +60,10 @@ class file_descriptor {
   file_descriptor& operator=(const file_descriptor&) = delete;
   int get() const { return fd_; }
   int release() { return std::exchange(fd_, -1); }
+  void reset(int fd) {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = fd;
+  }
 
  private:
   int fd_;
@@ -71,19 +76,33 @@ class file_descriptor {
 // fsync where the file system supports it (EINVAL: it does not, nothing to flush).
 bool flushed(int fd) { return ::fsync(fd) == 0 || errno == EINVAL || errno == ENOTSUP; }
 
-// Writes everything and flushes it to disk; returns 0 or the errno of the failure.
-int write_and_flush(int fd, std::string_view content) {
+// Writes everything; returns 0 or the errno of the failure.
+int write_all(int fd, std::string_view content) {
   while (!content.empty()) {
     const ssize_t n = ::write(fd, content.data(), content.size());
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) return errno;
     content.remove_prefix(static_cast<std::size_t>(n));
   }
+  return 0;
+}
+
+// Writes everything and flushes it to disk; returns 0 or the errno of the failure.
+int write_and_flush(int fd, std::string_view content) {
+  if (const int e = write_all(fd, content)) return e;
   return flushed(fd) ? 0 : errno;
 }
 
 std::string next_temporary_name() {
   return std::string(temporary_prefix) + std::to_string(::getpid()) + "-" + std::to_string(++temporary_counter);
+}
+
+// Gives the unnamed file `fd` the name `temporary` in `dirfd`; returns 0 or the errno of the failure.
+int link_unnamed(int fd, int dirfd, const std::string& temporary) {
+  if (::linkat(fd, "", dirfd, temporary.c_str(), AT_EMPTY_PATH) == 0) return 0;
+  const std::string proc = "/proc/self/fd/" + std::to_string(fd);  // without CAP_DAC_READ_SEARCH
+  if (::linkat(AT_FDCWD, proc.c_str(), dirfd, temporary.c_str(), AT_SYMLINK_FOLLOW) == 0) return 0;
+  return errno;
 }
 
 // An unnamed file (O_TMPFILE) holding the content, then linked under a temporary name: a kill
@@ -95,10 +114,9 @@ bool write_unnamed(int dirfd, const std::string& temporary, std::string_view con
     fail(path, errno);
   }
   if (const int e = write_and_flush(fd.get(), content)) fail(path, e);
-  if (::linkat(fd.get(), "", dirfd, temporary.c_str(), AT_EMPTY_PATH) == 0) return true;
-  const std::string proc = "/proc/self/fd/" + std::to_string(fd.get());  // without CAP_DAC_READ_SEARCH
-  if (::linkat(AT_FDCWD, proc.c_str(), dirfd, temporary.c_str(), AT_SYMLINK_FOLLOW) == 0) return true;
-  if (errno == ENOSPC || errno == EDQUOT || errno == EROFS || errno == EIO) fail(path, errno);
+  const int e = link_unnamed(fd.get(), dirfd, temporary);
+  if (e == 0) return true;
+  if (e == ENOSPC || e == EDQUOT || e == EROFS || e == EIO) fail(path, e);
   return false;
 }
 
@@ -148,6 +166,17 @@ bool valid_utf8_at(const std::string& s, std::size_t i, std::size_t& length) {
   return true;
 }
 
+// The folder and name of a file to be replaced, the target checked (writable_target, check_replaceable).
+struct replaced_file {
+  std::filesystem::path path;  ///< the regular file replaced (a link's target)
+  std::string name;            ///< its name in its folder
+  file_descriptor dir;
+  explicit replaced_file(const std::filesystem::path& typed);
+  // Renames `temporary` over the target after checking it again (it may have been replaced
+  // meanwhile), then flushes the folder; removes the temporary on failure.
+  void replace_with(const std::string& temporary) const;
+};
+
 }  // namespace
 
 std::filesystem::path writable_target(const std::filesystem::path& path) {
@@ -171,18 +200,16 @@ std::filesystem::path writable_target(const std::filesystem::path& path) {
   }
 }
 
-void write_file_atomically(const std::filesystem::path& typed, std::string_view content) {
-  const auto path = writable_target(typed);
+replaced_file::replaced_file(const std::filesystem::path& typed) : path(writable_target(typed)), dir(-1) {
   const auto parent = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
-  const std::string name = path.filename().string();
+  name = path.filename().string();
   if (name.empty() || name == "." || name == "..") fail(path, EISDIR);
-  file_descriptor dir(::open(parent.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+  dir.reset(::open(parent.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
   if (dir.get() < 0) fail(path, errno);
-
-  const std::string temporary = next_temporary_name();
-  pending_guard guard(dir.get(), temporary);
   check_replaceable(dir.get(), name, path);
-  if (!write_unnamed(dir.get(), temporary, content, path)) write_named(dir.get(), temporary, content, path);
+}
+
+void replaced_file::replace_with(const std::string& temporary) const {
   try {
     check_replaceable(dir.get(), name, path);  // again: it may have been replaced while the content was written
   } catch (...) {
@@ -195,6 +222,66 @@ void write_file_atomically(const std::filesystem::path& typed, std::string_view 
     fail(path, e);
   }
   if (!flushed(dir.get())) fail(path, errno);  // the rename itself reaches the disk
+}
+
+void write_file_atomically(const std::filesystem::path& typed, std::string_view content) {
+  const replaced_file target(typed);
+  const std::string temporary = next_temporary_name();
+  pending_guard guard(target.dir.get(), temporary);
+  if (!write_unnamed(target.dir.get(), temporary, content, target.path)) write_named(target.dir.get(), temporary, content, target.path);
+  target.replace_with(temporary);
+}
+
+// The temporary of an output_file_stream: unnamed until commit() where the file system allows it,
+// else named (and then removed by a signal handler calling remove_pending_temporaries, or here).
+struct output_file_stream::state {
+  replaced_file target;
+  std::string temporary = next_temporary_name();
+  std::optional<pending_guard> guard;  ///< while a named temporary exists
+  file_descriptor fd{-1};
+  bool unnamed = true, committed = false;
+  std::string buffer;
+
+  explicit state(const std::filesystem::path& typed) : target(typed) {
+    fd.reset(::openat(target.dir.get(), ".", O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666));
+    if (fd.get() >= 0) return;
+    if (errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL) fail(target.path, errno);
+    unnamed = false;
+    guard.emplace(target.dir.get(), temporary);
+    fd.reset(::openat(target.dir.get(), temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666));
+    if (fd.get() < 0) fail(target.path, errno);
+  }
+  void drain() {
+    if (const int e = write_all(fd.get(), buffer)) fail(target.path, e);
+    buffer.clear();
+  }
+};
+
+output_file_stream::output_file_stream(const std::filesystem::path& path) : state_(std::make_unique<state>(path)) {}
+
+output_file_stream::~output_file_stream() {
+  if (!state_->committed && !state_->unnamed) ::unlinkat(state_->target.dir.get(), state_->temporary.c_str(), 0);
+}
+
+void output_file_stream::write(std::string_view text) {
+  if (state_->committed) throw std::logic_error("output_file_stream: write after commit");
+  state_->buffer += text;
+  if (state_->buffer.size() >= (std::size_t(1) << 20)) state_->drain();
+}
+
+void output_file_stream::commit() {
+  auto& s = *state_;
+  if (s.committed) return;
+  s.drain();
+  if (!flushed(s.fd.get())) fail(s.target.path, errno);
+  if (s.unnamed) {
+    s.guard.emplace(s.target.dir.get(), s.temporary);
+    if (const int e = link_unnamed(s.fd.get(), s.target.dir.get(), s.temporary)) fail(s.target.path, e);
+    s.unnamed = false;  // named from here: removed by the destructor if the rename fails
+  }
+  if (::close(s.fd.release()) != 0) fail(s.target.path, errno);
+  s.target.replace_with(s.temporary);
+  s.committed = true;
 }
 
 std::size_t remove_stale_temporaries(const std::filesystem::path& dir) {

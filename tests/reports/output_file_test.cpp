@@ -168,6 +168,36 @@ BOOST_AUTO_TEST_CASE(a_fifo_a_device_or_a_folder_is_refused_and_kept) {
   fs::remove_all(dir);
 }
 
+BOOST_AUTO_TEST_CASE(a_stream_is_in_place_only_after_commit) {
+  const fs::path dir = scratch("output-stream");
+  std::ofstream(dir / "a.txt") << "old";
+  {
+    rotlie::runs::output_file_stream out(dir / "a.txt");
+    const std::string piece(700'000, 'y');  // past the buffer: written to the temporary before commit
+    out.write(piece);
+    out.write(piece);
+    BOOST_TEST(slurp(dir / "a.txt") == "old");
+    out.commit();
+  }
+  BOOST_TEST(fs::file_size(dir / "a.txt") == 1'400'000u);
+  {
+    rotlie::runs::output_file_stream abandoned(dir / "a.txt");  // destroyed without commit: nothing changes
+    abandoned.write(std::string(2'000'000, 'z'));
+  }
+  BOOST_TEST(fs::file_size(dir / "a.txt") == 1'400'000u);
+  {
+    rotlie::runs::output_file_stream fresh(dir / "b.txt");
+    fresh.write("new\n");
+    fresh.commit();
+  }
+  BOOST_TEST(slurp(dir / "b.txt") == "new\n");
+  BOOST_TEST(entries(dir) == (std::set<std::string>{"a.txt", "b.txt"}));  // no temporary left
+  fs::create_directory(dir / "folder");
+  BOOST_CHECK_THROW(rotlie::runs::output_file_stream(dir / "folder"), std::runtime_error);
+  BOOST_CHECK_THROW(rotlie::runs::output_file_stream(dir / "missing" / "c.txt"), std::runtime_error);
+  fs::remove_all(dir);
+}
+
 BOOST_AUTO_TEST_CASE(the_bounded_reader_refuses_what_it_cannot_read_without_waiting) {
   const fs::path dir = scratch("reader-special");
   BOOST_TEST_REQUIRE(::mkfifo((dir / "fifo").c_str(), 0644) == 0);

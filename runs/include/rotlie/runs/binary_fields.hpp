@@ -19,6 +19,7 @@ struct binary_field {
   std::string python_type;     ///< the annotation help() shows
   std::string python_default;  ///< as Python writes it; empty: required
   std::string help;
+  std::string cli_type;        ///< the value's form in the command line's --help (KM, SECONDS, REL[,RAD]); none for a flag
   std::string binary_request::*text = nullptr;  ///< where a text, number, integer or state (its file) goes
   bool binary_request::*flag = nullptr;         ///< where a flag goes
   bool cli_required = false;

@@ -9,6 +9,7 @@
 // (renaming over it would replace it). A symbolic link is written through: its final target, which
 // must be an existing regular file, gets the content and the link stays a link.
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -19,6 +20,28 @@ inline constexpr std::string_view temporary_prefix = ".rotlie-tmp-";
 
 /// Throws std::runtime_error with the path and the system's reason when the file cannot be written.
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+/// A file written piece by piece and put in place whole, by the rule above: the pieces go to a
+/// temporary in the target's folder (unnamed where the file system allows it), and commit() flushes it
+/// to disk and renames it over the target. Until commit() the target is as it was; an object destroyed
+/// without commit() (an exception, a refused run) removes its temporary and leaves the target alone.
+/// For output too large to hold in memory (a long trajectory).
+class output_file_stream {
+ public:
+  /// Refuses the target at once (as writable_target) and opens the temporary. Throws std::runtime_error.
+  explicit output_file_stream(const std::filesystem::path& path);
+  ~output_file_stream();
+  output_file_stream(const output_file_stream&) = delete;
+  output_file_stream& operator=(const output_file_stream&) = delete;
+  /// Appends text (buffered). Throws std::runtime_error naming the file on a write error.
+  void write(std::string_view text);
+  /// Puts the file in place. Throws std::runtime_error naming the file, and then the target is as it was.
+  void commit();
+
+ private:
+  struct state;
+  std::unique_ptr<state> state_;
+};
 
 /// The file write_file_atomically(path, …) would replace: `path` itself when it is absent or a regular
 /// file, a link's final regular target. Throws std::runtime_error for anything else.
