@@ -47,9 +47,9 @@ std::vector<binary_field> all_fields() {
                    &binary_request::separation, field_kind::number));
   f.push_back(text("primary_period", "HOURS", "float | None", "None", "Hours: the primary's spin with the separation (default: synchronous)", &binary_request::primary_period,
                    field_kind::number));
-  f.push_back(text("state", "FILE", "str | os.PathLike | dict | None", "None",
-                   "A start from a JSON file (or, in Python and a sweep, the object) with r, v (km, km/s), Q1, Q2 (rows), omega1, omega2 (rad/s, body "
-                   "frames): a run's JSON output starts the next",
+  f.push_back(text("state", "FILE", "str | os.PathLike | dict | BinaryResult | BinarySimulation | None", "None",
+                   "A start from a JSON file (or, in Python and a sweep, the object; in Python also a result or simulation whose end it is) with r, v "
+                   "(km, km/s), Q1, Q2 (rows), omega1, omega2 (rad/s, body frames): a run's JSON output starts the next",
                    &binary_request::state_file, field_kind::state));
   f.push_back(text("integrator", "NAME", "str", "'SIER4'", method_names_text(method_system::binary) + " (X for both bodies)", &binary_request::integrator));
   f.back().cli_required = true;
@@ -75,8 +75,8 @@ std::vector<binary_field> all_fields() {
                    &binary_request::accuracy, field_kind::numbers));
   f.back().run_only = true;
   f.push_back(flag("no_error_estimate",
-                   "Skip the error estimate (a fixed-step run is otherwise repeated at twice the step alongside, about 50 % more CPU, to see phase "
-                   "errors the energy cannot)",
+                   "Skip the error estimate (a fixed-step run is otherwise repeated at twice and four times the step alongside, about 75 % more "
+                   "CPU, to see phase errors the energy cannot)",
                    &binary_request::no_error_estimate));
   f.back().run_only = true;
   f.push_back(flag("force", "Run values that look like unit mistakes (G in SI, a density in g/cm3, sizes in metres, a period in seconds)", &binary_request::force));

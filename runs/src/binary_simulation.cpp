@@ -148,8 +148,8 @@ std::unique_ptr<binary_stepper> stepper_for(const binary_setup& s, const models:
 
 }  // namespace
 
-// The conserved quantities, sampled; CPU spent here is not the method's. With a time-dependent term
-// the energy is not conserved: only a value that is no longer finite marks the run unstable.
+// The conserved quantities, sampled; CPU spent here is not the method's. With a time-dependent or a
+// dissipative term the energy is not conserved: its change alone does not mark the run unstable.
 class binary_watch {
  public:
   binary_watch(const models::binary_system<double>& sys, const models::binary_state<double>& start) {
@@ -184,7 +184,7 @@ class binary_watch {
       c.warnings.push_back("one step moves the pair by " + message_number(fastest * s.h / eps) + " ε only: the step's change is lost in round-off (take a larger step)");
     const double reach = std::max(1000.0, round_off_per_step * static_cast<double>(s.steps)) * eps * scale_;
     const bool finite = std::isfinite(max_dE_) && std::isfinite(max_dL_);
-    const bool conserved = !sys.time_dependent();
+    const bool conserved = sys.conserves_energy();
     c.unstable = !finite || (conserved && !c.round_off_floor && max_dE_ > reach && max_dE_ >= c.potential_fluctuation && s.steps > 0);
     if (c.unstable)
       c.warnings.push_back(finite ? "the energy changed by " + message_number(max_dE_) + " kg km2 s-2, as much as the mutual potential's own fluctuation (" +

@@ -70,6 +70,11 @@ class binary_system {
       if (term->time_dependent()) return true;
     return false;
   }
+  bool conserves_energy() const {
+    for (const auto& term : terms_)
+      if (!term->conserves_energy()) return false;
+    return true;
+  }
 
   /// The mutual gravity and every added term at time t (point_masses false: without −G M₁M₂/r's share).
   mutual_gravity<T> forces(const binary_state<T>& x, const T& t, bool point_masses = true) const {

@@ -21,6 +21,10 @@ class binary_term {
 
   /// Whether the term depends on time (the energy is then not conserved).
   virtual bool time_dependent() const = 0;
+
+  /// Whether the energy is conserved with the term (a dissipative term, such as a lagging tide, keeps
+  /// the total angular momentum while the energy falls).
+  virtual bool conserves_energy() const { return !time_dependent(); }
 };
 
 }  // namespace rotlie::models
