@@ -291,6 +291,11 @@ subcommand add_spin(CLI::App& app, spin_options& spin) {
   spin_cmd->add_option("--obliquity", spin.obliquity, "Initial tilt of the C axis about x, radians (default 0)");
   spin_cmd->add_option("--scalar", spin.scalar, "double, long-double or float128 (default double)");
   spin_cmd->add_option("--every", spin.every, "With --json: the trajectory every K steps from the start (time, Q, omega_body, energy)");
+  spin_cmd->add_option("--accuracy", spin.accuracy, "The error estimate's bounds: REL (the spin rate, relative) or REL,RAD (RAD the "
+                                                    "attitude's angle; default 1e-3,1e-2): beyond them the run is marked inaccurate");
+  spin_cmd->add_flag("--no-error-estimate", spin.no_error_estimate, "Skip the error estimate (a fixed-step run is otherwise repeated at twice "
+                                                                    "the step alongside, about 50 % more CPU, to see phase errors the "
+                                                                    "conserved quantity cannot)");
   spin_cmd->add_flag("--json", spin.json, "Machine-readable output on stdout");
   return {spin_cmd, [&spin] { return run_spin(spin); }};
 }
