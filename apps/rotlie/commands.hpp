@@ -126,6 +126,8 @@ namespace rotlie::app {
 /// `rotlie spin`: a body on a fixed Kepler orbit under the quadrupole torque (the option strings as typed).
 struct spin_options {
   std::string body, e, integrator, h, T, theta0 = "0", omega0 = "1", obliquity = "0", scalar = "double", every = "0";
+  std::string accuracy = "1e-3,1e-2";
+  bool no_error_estimate = false;
   bool json = false;
 };
 int run_spin(const spin_options& options);

@@ -340,6 +340,12 @@ subcommand add_spin(CLI::App& app, spin_options& spin) {
   with_default(spin_cmd->add_option("--scalar", spin.scalar, "double, long-double or float128"), "SCALAR");
   with_default(spin_cmd->add_option("--every", spin.every, "With --json: the trajectory every K steps from the start (time, Q, omega_body, energy); 0 for none"),
                "K");
+  with_default(spin_cmd->add_option("--accuracy", spin.accuracy, "The error estimate's bounds: REL (the spin rate, relative) or REL,RAD (RAD the "
+                                                                 "attitude's angle): beyond them the run is marked inaccurate"),
+               "REL[,RAD]");
+  spin_cmd->add_flag("--no-error-estimate", spin.no_error_estimate, "Skip the error estimate (a fixed-step run is otherwise repeated at twice "
+                                                                    "the step alongside, about 50 % more CPU, to see phase errors the "
+                                                                    "conserved quantity cannot)");
   spin_cmd->add_flag("--json", spin.json, "Machine-readable output on stdout");
   spin_cmd->footer(example("spin --body Hyperion --e 0.1 --integrator SIER4 --h 1/1000 --T 10"));
   return {spin_cmd, [&spin] { return run_spin(spin); }};

@@ -9,7 +9,8 @@
 namespace rotlie::app {
 
 int run_spin(const spin_options& o) {
-  const auto setup = runs::spin_setup_of({o.body, o.e, o.integrator, o.h, o.T, o.theta0, o.omega0, o.obliquity, o.scalar, o.every});
+  const auto setup = runs::spin_setup_of({o.body, o.e, o.integrator, o.h, o.T, o.theta0, o.omega0, o.obliquity, o.scalar, o.every,
+                                            o.accuracy, o.no_error_estimate});
   const auto r = runs::spin_run(setup);
   for (const auto& w : r.check.warnings) std::cerr << "rotlie: warning: " << w << "\n";
   std::cout << (o.json ? runs::spin_json(r).dump(2) + "\n" : runs::spin_text(r));

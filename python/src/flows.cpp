@@ -181,7 +181,7 @@ py::tuple exact_flow(const std::string& body, const rows& G0, const rows& Q0, co
         }
       } else {
         for (py::ssize_t row = 0; row < in.n; ++row) {
-          if (row % poll_every == 0 && cancel.requested()) return;
+          if (cancel.requested()) return;  // every row: one costs up to 0.2 ms in float128 (4096 of them 0.8 s)
           auto s = state_of<T>(in, row);
           e[row] = static_cast<double>(rotor.advance(s, T(times[row])));
           store(s, row, g, q);

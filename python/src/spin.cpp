@@ -8,6 +8,7 @@
 #include <string>
 
 #include "arguments.hpp"
+#include "binary_keywords.hpp"
 #include "bindings.hpp"
 #include "interruption.hpp"
 #include "rotlie/runs/methods.hpp"
@@ -32,13 +33,16 @@ struct trajectory_object {
 
 spin_object spin(const py::object& body, const py::object& e, const std::string& integrator, const py::object& h, const py::object& T,
                  const py::object& theta0, const py::object& omega0, const py::object& obliquity, const std::string& scalar,
-                 const py::object& every) {
+                 const py::object& every, const py::object& accuracy, bool no_error_estimate) {
   runs::spin_request q{spin_body_argument(body), number_argument(e, "e"), integrator, number_argument(h, "h"), number_argument(T, "T"),
                        number_argument(theta0, "theta0"), number_argument(omega0, "omega0"), number_argument(obliquity, "obliquity"),
-                       scalar, every_argument(every)};
+                       scalar, every_argument(every), numbers_argument(accuracy, "accuracy"), no_error_estimate};
   auto out = std::make_shared<spin_object>();
-  run_symbolic([q, out] {  // a rotor SCHEME:PERM:LABEL is solved symbolically
-    out->result = runs::spin_run(runs::spin_setup_of(q));
+  auto setup = std::make_shared<runs::spin_setup>();
+  run_symbolic([q, setup] { *setup = runs::spin_setup_of(q); });  // a rotor SCHEME:PERM:LABEL is solved symbolically
+  // the run itself stops on Ctrl-C within 64 steps, and holds no lock meanwhile
+  run_cancellable([&](const cancellation& cancel) {
+    out->result = runs::spin_run(*setup, [&cancel] { return cancel.requested(); });
     out->json = runs::spin_json(out->result).dump();
   });
   for (const auto& w : out->result.check.warnings)
@@ -73,6 +77,12 @@ void bind_spin(py::module_& m) {
         const py::dict all = py::module_::import("json").attr("loads")(s.json);
         return all["conserved"];
       })
+      .def_property_readonly("inaccurate", [](const spin_object& s) { return s.result.check.inaccurate; },
+                             "the error estimate beyond the accuracy asked for")
+      .def_property_readonly("error_estimate", [](const spin_object& s) -> py::object {
+        const py::dict all = py::module_::import("json").attr("loads")(s.json);
+        return all["error_estimate"];
+      }, "{attitude_rad, spin_rate_rel, order, step_ratio, cpu_s}: the same method at twice the step alongside, or None")
       .def_property_readonly("trajectory", [](const spin_object& s) -> py::object {
         if (s.result.setup.every <= 0) return py::none();
         return py::cast(trajectory_object{s.result.trajectory, s.result.setup.every});
@@ -83,14 +93,18 @@ void bind_spin(py::module_& m) {
       });
   m.def("spin", &spin, py::arg("body"), py::arg("e"), py::arg("integrator"), py::arg("h"), py::arg("T"), py::arg("theta0") = 0,
         py::arg("omega0") = 1, py::arg("obliquity") = 0, py::arg("scalar") = "double", py::arg("every") = py::none(),
-        (R"(spin(body, e, integrator, h, T, theta0=0, omega0=1, obliquity=0, scalar="double", every=None) -> SpinResult
+        py::arg("accuracy") = "1e-3,1e-2", py::arg("no_error_estimate") = false,
+        (R"(spin(body, e, integrator, h, T, theta0=0, omega0=1, obliquity=0, scalar="double", every=None, accuracy="1e-3,1e-2", no_error_estimate=False) -> SpinResult
 
 A triaxial body on a fixed Kepler orbit under the quadrupole torque, as ``rotlie spin`` (docs/spin_orbit.md).
 body: "Hyperion", "Moon", "Mercury", "A,B,C", a Body or three moments (A <= B <= C); e: eccentricity in [0, 1);
 integrator: )" + runs::method_names_text(runs::method_system::spin) + R"( (rotlie.integrators("spin"));
 h: the step as a fraction of the orbit (str, Fraction or float), T: orbits, a whole number of steps;
 theta0, obliquity (rad), omega0 (units of n): the start; every: a trajectory sample every K steps
-(SpinResult.trajectory: t, Q, omega_body, energy arrays). An untrusted run (SpinResult.unstable) also raises a UserWarning.)").c_str());
+(SpinResult.trajectory: t, Q, omega_body, energy arrays). A fixed-step run is repeated at twice the step alongside
+(SpinResult.error_estimate: attitude_rad, spin_rate_rel); beyond accuracy, REL or (REL, RAD) with REL the spin rate's
+relative error and RAD the attitude's angle, it is marked inaccurate; no_error_estimate=True skips it. An untrusted
+run (SpinResult.unstable) or an inaccurate one also raises a UserWarning.)").c_str());
 }
 
 }  // namespace rotlie::python

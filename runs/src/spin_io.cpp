@@ -36,6 +36,15 @@ nlohmann::json spin_json(const runs::spin_result& r) {
             {"change_percent", finite_or_null(r.check.change_percent)}}},
           {"unstable", r.check.unstable},
           {"round_off_floor", r.check.round_off_floor}};
+  j["inaccurate"] = r.check.inaccurate;
+  j["accuracy"] = {{"relative", s.accuracy_rel}, {"angle_rad", s.accuracy_rad}};
+  if (r.error_estimate) {
+    const auto& e = *r.error_estimate;
+    j["error_estimate"] = {{"attitude_rad", e.attitude_rad}, {"spin_rate_rel", e.spin_rate_rel}, {"order", e.order},
+                           {"step_ratio", e.step_ratio}, {"cpu_s", e.cpu_s}};
+  } else {
+    j["error_estimate"] = nullptr;
+  }
   j.update(stepping_fields(s, r.evaluations));
   if (s.every > 0) {
     const auto& tr = r.trajectory;
@@ -59,6 +68,9 @@ std::string spin_text(const runs::spin_result& r) {
       << " rad\n  energy " << r.energy_start << " -> " << r.energy_end << "\n  " << r.check.quantity << " changed by at most "
       << r.check.max_change << " (" << r.check.change_percent << " % of the potential's fluctuation)" << (r.check.unstable ? ": UNSTABLE" : "")
       << "\n  CPU " << r.cpu_s << " s, " << r.evaluations << " torque evaluations\n";
+  if (r.error_estimate)
+    out << "  estimated error at the end: attitude " << r.error_estimate->attitude_rad << " rad, spin rate " << r.error_estimate->spin_rate_rel
+        << " relative" << (r.check.inaccurate ? ": INACCURATE" : "") << "\n";
   return out.str();
 }
 

@@ -32,6 +32,8 @@ constexpr double tolerance_floor_eps = 5;
 constexpr double unstable_percent = 100;    // the conserved quantity moves as much as the potential does
 constexpr double round_off_turn_eps = 1000;  // a step that turns the body by less is lost in round-off
 constexpr double round_off_per_step = 10;    // what a step's roundings can add to a sum, in ε
+constexpr double rotation_gap_unstable = 1e-3;  // |QᵀQ − 1| beyond which the attitude is no longer a rotation
+constexpr long stop_poll_steps = 64;            // how often a fixed-step run asks whether to stop (an Odeint run: every h)
 
 template <class T>
 double epsilon_of() {
@@ -143,8 +145,41 @@ double finite_number(const std::string& text, const std::string& what) {
   return v;
 }
 
+// What the conserved quantity cannot see: a spin or an energy no longer finite (a NaN in the sum is
+// missed when the step is lost in round-off), an attitude off the rotations.
+void judge_beyond_conservation(spin_result& r) {
+  if (r.check.unstable) return;
+  double gap = 0;
+  const auto P = transpose(r.Q) * r.Q;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) gap = std::max(gap, std::abs(P(i, k) - (i == k ? 1.0 : 0.0)));
+  std::string why;
+  if (!std::isfinite(r.omega_body[0] + r.omega_body[1] + r.omega_body[2]) || !std::isfinite(r.energy_end))
+    why = "the final spin or energy is no longer finite: the run diverged";
+  else if (!(gap <= rotation_gap_unstable))
+    why = "the attitude is no longer a rotation (|QᵀQ − 1| = " + schemes::message_number(gap) + ")";
+  if (why.empty()) return;
+  r.check.unstable = true;
+  r.check.warnings.push_back(why + ": the step is beyond the integrator's stable or accurate range; the result cannot be trusted");
+}
+
+// The error estimate at twice the step (spin_estimate.hpp) and its verdict.
+void judge_accuracy(spin_result& r, const std::function<bool()>& stop) {
+  const auto& s = r.setup;
+  if (!s.error_estimate || r.check.unstable) return;
+  std::string why;
+  r.error_estimate = estimate_spin_error(s, r.Q, r.omega_body, why, stop);
+  const auto& e = r.error_estimate;
+  if (!e || (e->attitude_rad <= s.accuracy_rad && e->spin_rate_rel <= s.accuracy_rel)) return;
+  r.check.inaccurate = true;
+  r.check.warnings.push_back("the estimated error of the final state (attitude " + schemes::message_number(e->attitude_rad) + " rad, spin rate " +
+                             schemes::message_number(e->spin_rate_rel) + " relative, from the same method at " +
+                             schemes::message_number(e->step_ratio) + "x the step) is beyond the accuracy asked for (" +
+                             schemes::message_number(s.accuracy_rel) + ", " + schemes::message_number(s.accuracy_rad) + " rad): take a smaller step");
+}
+
 template <class T>
-spin_result run_in(const spin_setup& s) {
+spin_result run_in(const spin_setup& s, const std::function<bool()>& stop) {
   const auto I = spin_moments_in<T>(s.body);
   const T e = T(s.e);
   const auto start = models::spin_orbit_start<T>(I, T(s.theta0), T(s.omega0), T(s.obliquity));
@@ -164,7 +199,9 @@ spin_result run_in(const spin_setup& s) {
     tr.energy.push_back(static_cast<double>(models::spin_orbit_energy(tide, x, t)));
   };
   if (s.every > 0) sample(0, T(0), start);
+  const long poll = s.method.adaptive ? 1 : stop_poll_steps;
   const auto out = step_spin_orbit<T>(s.method, I, e, start, h, s.steps, [&](long k, const T& t, const models::body_state<T>& x) {
+    if (stop && k % poll == 0 && stop()) throw spin_stopped();
     watch(k, t, x);
     if (s.every > 0 && k % s.every == 0) sample(k, t, x);
   });
@@ -221,6 +258,7 @@ spin_method spin_method_named(const std::string& name, const spin_body& body) {
   spin_method m;
   m.name = name;
   m.adaptive = r.adaptive();
+  m.order = r.family->order;
   if (m.adaptive) {
     m.ode = r.family->ode;
     m.tolerance = r.tolerance;
@@ -228,6 +266,7 @@ spin_method spin_method_named(const std::string& name, const spin_body& body) {
   }
   m.splitting = std::move(r.splitting);
   if (!r.rotors.empty()) m.rotor = std::move(r.rotors.front());
+  if (m.rotor) m.order = std::min(m.order, m.rotor->order);
   return m;
 }
 
@@ -250,6 +289,12 @@ spin_setup spin_setup_of(const spin_request& r) {
   if (s.every > 0 && static_cast<double>(s.steps / s.every) > models::max_trajectory_samples)
     throw bad_input("--every " + one_line(r.every) + " keeps " + schemes::message_number(static_cast<double>(s.steps / s.every)) +
                     " samples of the trajectory, over the limit of 1e7: take a larger --every");
+  s.error_estimate = !r.no_error_estimate;
+  {
+    const auto bounds = positive_numbers(r.accuracy, "--accuracy");
+    if (bounds.size() > 2) throw bad_input("--accuracy takes REL or REL,RAD, got '" + one_line(r.accuracy) + "'");
+    s.accuracy_rel = bounds[0], s.accuracy_rad = bounds.size() == 2 ? bounds[1] : 10 * bounds[0];
+  }
   s.method = spin_method_named(r.integrator, s.body);
   if (s.method.adaptive && s.scalar == "float128")
     throw bad_input("--integrator " + one_line(r.integrator) + " runs in double or long double, not in float128");
@@ -260,10 +305,11 @@ spin_setup spin_setup_of(const spin_request& r) {
   return s;
 }
 
-spin_result spin_run(const spin_setup& s) {
-  if (s.scalar == "long-double") return run_in<long double>(s);
-  if (s.scalar == "float128") return run_in<quad>(s);
-  return run_in<double>(s);
+spin_result spin_run(const spin_setup& s, const std::function<bool()>& stop) {
+  spin_result r = s.scalar == "long-double" ? run_in<long double>(s, stop) : s.scalar == "float128" ? run_in<quad>(s, stop) : run_in<double>(s, stop);
+  judge_beyond_conservation(r);
+  judge_accuracy(r, stop);
+  return r;
 }
 
 }  // namespace rotlie::runs

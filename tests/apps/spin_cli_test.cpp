@@ -129,6 +129,40 @@ BOOST_AUTO_TEST_CASE(a_run_that_cannot_be_trusted_says_so) {
   }
 }
 
+BOOST_AUTO_TEST_CASE(a_phase_error_the_conserved_quantity_cannot_see_is_flagged) {
+  // issue 46: three steps an orbit give theta = 1.757 against the converged 0.432, the Jacobi integral
+  // bounded; the same method at twice the step alongside sees it
+  const char* hyperion = "--body Hyperion --e 0 --integrator SIER4 --h 1/3 --T 30 --omega0 2";
+  auto r = run(std::string("spin --json ") + hyperion);
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(!j["unstable"].get<bool>());
+  BOOST_TEST(j["inaccurate"].get<bool>());
+  BOOST_TEST(j["error_estimate"]["attitude_rad"].get<double>() > 1e-2);
+  BOOST_TEST(j["error_estimate"]["order"].get<int>() == 4);
+  BOOST_TEST(j["accuracy"]["relative"].get<double>() == 1e-3);
+  BOOST_TEST(j["accuracy"]["angle_rad"].get<double>() == 1e-2);
+  BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, r.err);
+  BOOST_TEST(r.err.find("rotlie: warning: the estimated error") == 0u, r.err);
+  // converged: not flagged, nothing said
+  r = run("spin --json --body Hyperion --e 0 --integrator SIER4 --h 1/200 --T 30 --omega0 2");
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  j = nlohmann::json::parse(r.out);
+  BOOST_TEST(!j["inaccurate"].get<bool>());
+  BOOST_TEST(j["error_estimate"]["attitude_rad"].get<double>() < 1e-6);
+  BOOST_TEST(r.err.empty(), r.err);
+  // skipped on request; a looser bound; a bound that is not one
+  r = run(std::string("spin --json --no-error-estimate ") + hyperion);
+  j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j["error_estimate"].is_null());
+  BOOST_TEST(!j["inaccurate"].get<bool>());
+  BOOST_TEST(r.err.empty(), r.err);
+  BOOST_TEST(!spin_json(std::string("--accuracy 10,10 ") + hyperion)["inaccurate"].get<bool>());
+  r = run(std::string("spin --accuracy 1,2,3 ") + hyperion);
+  BOOST_TEST(r.status == 2, r.err);
+  BOOST_TEST(r.err.find("--accuracy") != std::string::npos, r.err);
+}
+
 BOOST_AUTO_TEST_CASE(an_adaptive_tolerance_beyond_the_scalar_is_refused) {
   // 1e-30 would take about 66 days an orbit in double; 5 ε is the floor (1.1e-15 double, 5.4e-19 long double)
   for (const char* args : {"--integrator odeint-rkf78:1e-30", "--integrator odeint-rkf78:1e-16", "--integrator odeint-dopri5:1e-19 --scalar long-double"}) {

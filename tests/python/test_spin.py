@@ -30,6 +30,7 @@ def test_spin_equals_the_command_line_with_its_trajectory():
     assert tr.t[0] == 0 and tr.t[-1] == 2 and np.array_equal(tr.Q[-1], r.Q)
     d = r.to_dict()
     d.pop("cpu_s"), j.pop("cpu_s")
+    d["error_estimate"].pop("cpu_s"), j["error_estimate"].pop("cpu_s")
     assert d == j
     assert r.trajectory is not None and rotlie.spin("Hyperion", 0.1, "SIER2", "1/100", 1).trajectory is None
 
@@ -62,6 +63,29 @@ def test_refusals_and_flags_are_the_command_lines():
     with pytest.warns(UserWarning, match="Jacobi integral"):
         r = rotlie.spin("Hyperion", 0, "SIER2", 1, 50)
     assert r.unstable and r.conserved["quantity"] == "jacobi"
+
+
+def test_a_phase_error_is_flagged_by_the_estimate_at_twice_the_step():
+    """Issue 46: three SIER4 steps an orbit end Hyperion's spin at 1.757 rad against the converged 0.432,
+    the Jacobi integral bounded; the run at twice the step alongside flags it, as `rotlie spin` does."""
+    with pytest.warns(UserWarning, match="estimated error"):
+        r = rotlie.spin("Hyperion", 0, "SIER4", "1/3", 30, omega0=2)
+    assert r.inaccurate and not r.unstable
+    e = r.error_estimate
+    assert e["order"] == 4 and e["step_ratio"] == 2 and e["attitude_rad"] > 1e-2 and e == r.to_dict()["error_estimate"]
+    j = cli("spin", "--body", "Hyperion", "--e", "0", "--integrator", "SIER4", "--h", "1/3", "--T", "30", "--omega0", "2", "--json")
+    assert (j["inaccurate"], j["error_estimate"]["attitude_rad"]) == (True, e["attitude_rad"])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        converged = rotlie.spin("Hyperion", 0, "SIER4", "1/200", 30, omega0=2)
+        skipped = rotlie.spin("Hyperion", 0, "SIER4", "1/3", 30, omega0=2, no_error_estimate=True)
+        loose = rotlie.spin("Hyperion", 0, "SIER4", "1/3", 30, omega0=2, accuracy=(10, 10))
+    assert not converged.inaccurate and converged.error_estimate["attitude_rad"] < 1e-6
+    assert skipped.error_estimate is None and not skipped.inaccurate and skipped.theta == r.theta
+    assert not loose.inaccurate and loose.to_dict()["accuracy"] == {"relative": 10, "angle_rad": 10}
+    assert rotlie.spin("Hyperion", 0, "SIER4", "1/3", 30, omega0=2, accuracy="1e-3", no_error_estimate=True).to_dict()["accuracy"]["angle_rad"] == 1e-2
+    with pytest.raises(ValueError, match="accuracy takes REL or REL,RAD"):
+        rotlie.spin("Hyperion", 0, "SIER4", "1/3", 30, accuracy=(1, 2, 3))
 
 
 def test_conserved_is_an_owned_dictionary():

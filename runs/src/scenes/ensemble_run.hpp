@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "rotlie/lie/stop_request.hpp"
 #include "rotlie/models/experiments/md_experiment.hpp"
 #include "rotlie/runs/md_json.hpp"
 #include "rotlie/runs/md_simulation.hpp"
@@ -53,6 +54,7 @@ inline void read_ensemble_run(const scene_request& r, const std::string& body_te
     throw bad_input("--runs × --T/--h = " + shortest(steps * static_cast<double>(e.run.runs)) + " steps is over the limit of " +
                     shortest(max_total_steps));
   e.run.every = trajectory_every(r, steps);
+  e.run.poll = [] { lie::stop_point(); };  // a caller's stop request (Python's Ctrl-C) ends the ensemble within 64 steps
   if (r.progress)
     e.run.progress = [&p = r.progress](long done, long runs) { p("run " + std::to_string(done) + " of " + std::to_string(runs)); };
 }

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "rotlie/lie/stop_request.hpp"
 #include "rotlie/models/scenes/liquid_water_experiment.hpp"
 #include "rotlie/models/scenes/water_model.hpp"
 #include "rotlie/runs/exclusive_use.hpp"
@@ -74,6 +75,7 @@ scene_result liquid_water_scene_run(const scene_request& request) {
     o.write_file = [](const std::string& path, const std::string& text) { write_file_atomically(path, text); };
   }
   o.rotor_table = method.rotor_table();
+  o.poll = [] { lie::stop_point(); };  // a caller's stop request (Python's Ctrl-C) ends the run within a step
   auto show = [&request](const std::string& text) {
     if (request.progress) request.progress(text);
   };

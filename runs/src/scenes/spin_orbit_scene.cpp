@@ -1,5 +1,6 @@
 // spin-orbit: a triaxial body on a fixed Kepler orbit under the quadrupole torque (docs/spin_orbit.md),
 // the run of `rotlie spin` as a scene: --h a fraction of the orbital period, --T in orbits.
+#include "rotlie/lie/stop_request.hpp"
 #include "rotlie/runs/spin_io.hpp"
 #include "rotlie/runs/spin_orbit_run.hpp"
 #include "scene_support.hpp"
@@ -14,7 +15,11 @@ scene_result spin_orbit_scene_run(const scene_request& r) {
     if (option(r, needed).empty()) throw bad_input(std::string(needed) + " is required by the spin-orbit scene");
   const auto result = spin_run(spin_setup_of({option(r, "--body"), option(r, "--e"), r.integrator, r.h, option(r, "--T"),
                                               option(r, "--theta0"), option(r, "--omega0"), option(r, "--obliquity"),
-                                              option(r, "--scalar"), option(r, "--every")}));
+                                              option(r, "--scalar"), option(r, "--every")}),
+                             [] {  // a caller's stop request (Python's Ctrl-C) ends the run within 64 steps
+                               lie::stop_point();
+                               return false;
+                             });
   auto json = spin_json(result);
   json["scene"] = "spin-orbit";
   return {json, spin_text(result), result.check.warnings};

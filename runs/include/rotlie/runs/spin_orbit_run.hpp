@@ -11,7 +11,9 @@
 //   Mercury   C/MR² = 0.346 (Margot et al. 2012), J₂ = 5.031e-5 and C₂₂ = 0.809e-5 (MESSENGER,
 //             Smith et al. 2012): (B − A)/C = 4C₂₂/(C/MR²) = 9.35e-5, (C − A)/C = (J₂ + 2C₂₂)/(C/MR²); e = 0.2056
 #include <array>
+#include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,7 @@
 #include "rotlie/models/md_integrators.hpp"
 #include "rotlie/models/scenes/spin_orbit_odeint.hpp"
 #include "rotlie/models/small_matrix.hpp"
+#include "rotlie/runs/spin_estimate.hpp"
 #include "rotlie/schemes/scheme_table.hpp"
 
 namespace rotlie::runs {
@@ -43,6 +46,7 @@ spin_body spin_body_named(const std::string& text);
 struct spin_method {
   std::string name;
   bool adaptive = false;                       ///< an Odeint method
+  int order = 0;                               ///< the declared order (a rotor table of lower order lowers it)
   models::odeint_method ode = models::odeint_method::dopri5;
   double tolerance = 1e-10;                    ///< absolute and relative (Odeint)
   double first_step = 0;                       ///< Odeint's first trial step (time units); 0: the run's step h
@@ -57,6 +61,8 @@ spin_method spin_method_named(const std::string& name, const spin_body& body);
 struct spin_request {
   std::string body, e, integrator, h, T, theta0 = "0", omega0 = "1", obliquity = "0", scalar = "double";
   std::string every = "0";  ///< a trajectory sample every K steps (0: none)
+  std::string accuracy = "1e-3,1e-2";  ///< the error estimate's bounds: REL (spin rate) or REL,RAD (attitude)
+  bool no_error_estimate = false;      ///< skip the run at twice the step (spin_estimate.hpp)
 };
 
 /// The checked run: h a fraction of the orbital period, T in orbits, T a whole number of steps h
@@ -70,6 +76,8 @@ struct spin_setup {
   long steps = 0;
   long every = 0;  ///< trajectory samples at steps 0, K, 2K, … (0: none)
   std::string scalar = "double";
+  bool error_estimate = true;  ///< a fixed-step run's estimate at twice the step (spin_estimate.hpp)
+  double accuracy_rel = 1e-3, accuracy_rad = 1e-2;
 };
 
 /// Throws bad_input (one line naming the option) for anything that does not describe a run.
@@ -79,7 +87,9 @@ spin_setup spin_setup_of(const spin_request& request);
 /// step. At e = 0 the Jacobi integral J = T + V − L_z; otherwise the extended-phase-space
 /// Hamiltonian K = T + V' + p_t, V' the potential without its isotropic part and p_t = −∫ ∂V'/∂t dt
 /// (the trapezoidal rule over the steps). "unstable": its largest change reaches the potential's own
-/// fluctuation along the run (the criterion of md's dH/dV ≥ 100 %) and lies beyond round-off.
+/// fluctuation along the run (the criterion of md's dH/dV ≥ 100 %) and lies beyond round-off, or
+/// the final spin or energy is not finite, or the attitude is no longer a rotation (|QᵀQ − 1| > 1e-3).
+/// "inaccurate": the error estimate (spin_estimate.hpp) beyond the accuracy asked for.
 struct spin_check {
   std::string quantity;           ///< "jacobi" or "extended_hamiltonian"
   double start = 0;               ///< its value at t = 0
@@ -88,6 +98,7 @@ struct spin_check {
   double change_percent = 0;      ///< 100 max_change / potential_fluctuation (inf when V' is steady)
   bool unstable = false;
   bool round_off_floor = false;   ///< a step turns the body by less than 1000 ε: the step is lost in round-off
+  bool inaccurate = false;        ///< the error estimate beyond the accuracy asked for
   std::vector<std::string> warnings;  ///< one line per flag
 };
 
@@ -110,15 +121,22 @@ struct spin_result {
   double energy_start = 0, energy_end = 0;  ///< T + V(t) at 0 and at the end
   double cpu_s = 0;                 ///< CPU seconds of the stepping
   long evaluations = 0;             ///< torque evaluations (force_evaluations; right-hand sides for Odeint)
+  std::optional<spin_error_estimate> error_estimate;  ///< with setup.error_estimate, for a fixed-step run
 };
 
 /// The largest number of steps an adaptive run may take per orbit of T (accepted and refused): a
 /// tolerance the problem cannot reach ends the run with an error instead of running for days.
 inline constexpr double adaptive_steps_per_orbit = 1e6;
 
-/// Runs the setup in its scalar. Throws std::runtime_error when the run diverges or an adaptive run
-/// exhausts its step budget.
-spin_result spin_run(const spin_setup& setup);
+/// Runs the setup in its scalar, then (setup.error_estimate) its companion at twice the step. Throws
+/// std::runtime_error when the run diverges or an adaptive run exhausts its step budget. `stop` (if
+/// given) is asked every 64 steps; when it says so the run throws spin_stopped.
+spin_result spin_run(const spin_setup& setup, const std::function<bool()>& stop = {});
+
+/// The run was stopped before its end (spin_run's `stop`): no result.
+struct spin_stopped : std::runtime_error {
+  spin_stopped() : std::runtime_error("the run was stopped before its end") {}
+};
 
 /// The moments of a body in double (A, B, C).
 models::vec3<double> spin_moments(const spin_body& body);

@@ -27,6 +27,7 @@ struct md_run_options {
   std::uint64_t seed = 1;
   long every = 0;  ///< > 0: the first run's trajectory every `every` steps (md_ensemble_cost::trajectory)
   std::function<void(long done, long runs)> progress;  ///< after each run, may be empty
+  std::function<void()> poll;  ///< every 64 steps of a run, may be empty; throws to abandon the ensemble (a stop asked for)
 };
 
 /// Steps of one run: T/h rounded to the nearest whole number (at least 1).
@@ -92,14 +93,17 @@ void run_ensemble(const Scene& scene, const md_run_options& o, const Method& met
       cost.trajectory.record(o.h_fs * static_cast<double>(k) / 1000, s.bodies[0], method.system().kinetic_energy(s) + s.potential, s.potential);
     return true;
   };
+  auto poll = [&](long k, const T&, const rigid_bodies_state<T>&) {
+    if (k % 64 == 0 && o.poll) o.poll();
+  };
   auto step = [&](rigid_bodies_state<T>& x, auto&... observers) {
     const bool sampled = run == 0 && o.every > 0;
     if (sampled) sample(0, T(0), x);
     const double c0 = thread_cpu_seconds();
     if (sampled)
-      integrate(method, x, h, steps, observers..., sample);
+      integrate(method, x, h, steps, observers..., sample, poll);
     else
-      integrate(method, x, h, steps, observers...);
+      integrate(method, x, h, steps, observers..., poll);
     cpu += thread_cpu_seconds() - c0;
   };
   for (run = 0; run < o.runs; ++run) {

@@ -37,6 +37,8 @@ struct liquid_water_run_options {
   std::string state_file;   ///< read if it exists; else the equilibrated start is written there
   /// Writes a file whole (path, text); empty: write_water_state's own temporary and rename.
   std::function<void(const std::string&, const std::string&)> write_file;
+  /// Called after every step (equilibration included), may be empty; throws to abandon the run (a stop asked for).
+  std::function<void()> poll;
   double kelvin = 297;
   double density = 0.9973;  ///< g/cm³
   std::uint64_t seed = 1;
@@ -129,10 +131,14 @@ inline rigid_bodies_state<double> liquid_water_start(const liquid_water_run_opti
   const long steps = std::lround(o.equilibration_ps * 1000 / o.equilibration_h_fs);
   with_md_integrator(md_integrator_of("MRDL", "Strang-TV", mrdl_rotor_table), nullptr, model.mass, model.moments, w, [&](const auto& method) {
     // the lattice start is far from equilibrium: a shorter step and a tight coupling first
-    equilibrate(method, s, o.equilibration_h_fs / 4, 400, o.kelvin, 10.0, [](long, double, double) {});
+    const auto poll = [&o] {
+      if (o.poll) o.poll();
+    };
+    equilibrate(method, s, o.equilibration_h_fs / 4, 400, o.kelvin, 10.0, [&](long, double, double) { poll(); }, 1);
     equilibrate(method, s, o.equilibration_h_fs, steps, o.kelvin, o.berendsen_tau_fs, [&](long k, double T, double v) {
-      if (progress) progress("equilibration " + schemes::message_number(static_cast<double>(k) * o.equilibration_h_fs / 1000) + " ps: T = " + schemes::message_number(T) + " K, V/N = " + schemes::message_number(v) + " kcal/mol");
-    }, 500);
+      poll();
+      if (progress && k % 500 == 0) progress("equilibration " + schemes::message_number(static_cast<double>(k) * o.equilibration_h_fs / 1000) + " ps: T = " + schemes::message_number(T) + " K, V/N = " + schemes::message_number(v) + " kcal/mol");
+    }, 1);
     return 0;
   });
   if (!o.state_file.empty()) {
@@ -174,6 +180,7 @@ inline liquid_water_run_result run_liquid_water(const liquid_water_run_options& 
       double e_sum = 0, e_sq = 0, v_run = 0, v_sq = 0, scale = 0;
       const double e_ref = sys.energy(s), v_ref = sys.potential_energy(s);  // shifts that keep the sums well conditioned
       for (long k = 0; k < steps; ++k) {
+        if (o.poll) o.poll();
         try {
           method.step(s, o.h_fs);
         } catch (const std::invalid_argument&) {  // a rotor refusing a non-finite momentum: the run blew up
