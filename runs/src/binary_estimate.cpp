@@ -45,6 +45,15 @@ double rotation_angle(const models::mat3<double>& A, const models::mat3<double>&
   return std::atan2(s, c);
 }
 
+double observed_order(double q, double rho1, double rho2, int declared) {
+  const auto ratio = [&](double p) { return (std::pow(rho2, p) - std::pow(rho1, p)) / (std::pow(rho1, p) - 1); };
+  double lo = 1, hi = declared;
+  if (!(q < ratio(hi))) return hi;
+  if (!(q > ratio(lo))) return lo;
+  for (int i = 0; i < 60; ++i) (ratio((lo + hi) / 2) < q ? lo : hi) = (lo + hi) / 2;
+  return (lo + hi) / 2;
+}
+
 namespace {
 
 constexpr double saturation = 0.5;  // a distance (relative, or rad) beyond which two runs are simply apart
@@ -76,17 +85,6 @@ std::optional<models::binary_state<double>> companion_end(const binary_setup& se
 std::array<double, 4> distances(const models::binary_state<double>& x, const models::binary_state<double>& end) {
   return {distance(x.r, end.r) / models::norm(end.r), distance(x.v, end.v) / models::norm(end.v), rotation_angle(x.body[0].Q, end.body[0].Q),
           rotation_angle(x.body[1].Q, end.body[1].Q)};
-}
-
-// The order the three runs show: p in [1, declared] with (ρ2^p − ρ1^p)/(ρ1^p − 1) = q, the ratio of the
-// distances (ρ2h, ρ1h) and (ρ1h, h); the ratio grows with p (it is 2^p at ρ1 = 2, ρ2 = 4).
-double observed_order(double q, double rho1, double rho2, int declared) {
-  const auto ratio = [&](double p) { return (std::pow(rho2, p) - std::pow(rho1, p)) / (std::pow(rho1, p) - 1); };
-  double lo = 1, hi = declared;
-  if (!(q < ratio(hi))) return hi;
-  if (!(q > ratio(lo))) return lo;
-  for (int i = 0; i < 60; ++i) (ratio((lo + hi) / 2) < q ? lo : hi) = (lo + hi) / 2;
-  return (lo + hi) / 2;
 }
 
 }  // namespace

@@ -41,7 +41,7 @@ nlohmann::json spin_json(const runs::spin_result& r) {
   if (r.error_estimate) {
     const auto& e = *r.error_estimate;
     j["error_estimate"] = {{"attitude_rad", e.attitude_rad}, {"spin_rate_rel", e.spin_rate_rel}, {"order", e.order},
-                           {"step_ratio", e.step_ratio}, {"cpu_s", e.cpu_s}};
+                           {"observed_order", e.observed_order}, {"step_ratio", e.step_ratio}, {"cpu_s", e.cpu_s}};
   } else {
     j["error_estimate"] = nullptr;
   }

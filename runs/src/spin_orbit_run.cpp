@@ -170,6 +170,11 @@ void judge_accuracy(spin_result& r, const std::function<bool()>& stop) {
   std::string why;
   r.error_estimate = estimate_spin_error(s, r.Q, r.omega_body, why, stop);
   const auto& e = r.error_estimate;
+  if (!e && !s.method.adaptive && s.steps > 0) {  // the companions failed: the step is near the method's limit
+    r.check.inaccurate = true;
+    r.check.warnings.push_back("the error of the final state could not be estimated: " + why + "; take a smaller step");
+    return;
+  }
   if (!e || (e->attitude_rad <= s.accuracy_rad && e->spin_rate_rel <= s.accuracy_rel)) return;
   r.check.inaccurate = true;
   r.check.warnings.push_back("the estimated error of the final state (attitude " + schemes::message_number(e->attitude_rad) + " rad, spin rate " +

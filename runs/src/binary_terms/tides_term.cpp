@@ -42,7 +42,7 @@ class constant_lag_tides final : public registered_term {
       if (love_[k] == 0) continue;
       const double sign = k == 0 ? 1.0 : -1.0;  // ρ from body k to the other
       const vec3<double> rho{sign * x.r[0], sign * x.r[1], sign * x.r[2]}, rho_dot{sign * x.v[0], sign * x.v[1], sign * x.v[2]};
-      const double m = mass_[1 - k], d2 = models::dot(rho, rho), d = std::sqrt(d2);
+      const double m = mass_[1 - k], d2 = models::dot(rho, rho);
       const double R5 = std::pow(radius_[k], 5), strength = 3 * love_[k] * G_ * m * m * R5 / (d2 * d2 * d2 * d2 * d2);
       const auto spin = spin_of(x, k);
       const auto rho_x_spin = models::cross(rho, spin);
