@@ -1,6 +1,7 @@
 #include "rotlie/runs/binary_bodies.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <numbers>
 #include <map>
@@ -22,6 +23,11 @@ using models::vec3;
 
 constexpr std::size_t shape_file_limit = std::size_t(256) << 20;  // 256 MiB: millions of facets
 constexpr double m3_per_km3 = 1e9;  // a density in kg/m³ times this is kg/km³
+// The range of a shape model's size (km): its coordinates at most this large, ...
+constexpr double largest_coordinate = 1e20;
+// ... and its extent at least this: the integrals to degree 4 (size⁷ times the density) and the
+// moments of inertia times the spin rates stay within double's range.
+constexpr double smallest_extent = 1e-12;
 
 vec3<double> minus(const vec3<double>& a, const vec3<double>& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
@@ -112,9 +118,31 @@ models::polyhedron parse_shape_model(const std::string& text, const std::string&
   const auto refuse = [&](const std::string& why) { throw bad_input(name + ", line " + std::to_string(line_number) + ": " + why); };
   const auto finite_vertex = [&](std::istringstream& words) {
     vec3<double> v;
-    for (auto& x : v)
-      if (!(words >> x) || !std::isfinite(x)) refuse("a vertex needs three finite coordinates");
+    for (auto& x : v) {
+      std::string word;
+      if (!(words >> word)) refuse("a vertex needs three finite coordinates");
+      const std::size_t sign = word[0] == '+' ? 1 : 0;
+      const auto [end, error] = std::from_chars(word.data() + sign, word.data() + word.size(), x);
+      if (error == std::errc::result_out_of_range)
+        refuse("vertex coordinate " + one_line(word) + " is out of range (a double holds sizes from 2.2e-308 to 1.8e308)");
+      if (error != std::errc() || end != word.data() + word.size()) refuse("vertex coordinate '" + one_line(word) + "' is not a number");
+      if (!std::isfinite(x)) refuse("vertex coordinate " + one_line(word) + " is not finite");
+      if (std::abs(x) > largest_coordinate)
+        refuse("vertex coordinate " + one_line(word) + " is out of range (at most " + schemes::message_number(largest_coordinate) + " km in size)");
+    }
     return v;
+  };
+  const auto sized = [&](models::polyhedron&& shape) {
+    if (shape.vertices.empty()) return std::move(shape);
+    double extent = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const auto [low, high] = std::minmax_element(shape.vertices.begin(), shape.vertices.end(), [&](const auto& a, const auto& b) { return a[i] < b[i]; });
+      extent = std::max(extent, (*high)[i] - (*low)[i]);
+    }
+    if (extent < smallest_extent)
+      throw bad_input(name + ": the vertices span " + schemes::message_number(extent) + " km, out of range (at least " + schemes::message_number(smallest_extent) +
+                      " km)");
+    return std::move(shape);
   };
   // the plain form starts with two counts; OBJ with `v`, `f`, `#`, `o`, `g`, … lines
   std::vector<std::string> lines;
@@ -150,7 +178,7 @@ models::polyhedron parse_shape_model(const std::string& text, const std::string&
                             static_cast<int>(std::clamp<long>(f[2] - 1, -1, INT32_MAX))});
       }
     }
-    return p;
+    return sized(std::move(p));
   }
   for (std::size_t i = 0; i < lines.size(); ++i) {
     line_number = static_cast<long>(i) + 1;
@@ -165,14 +193,17 @@ models::polyhedron parse_shape_model(const std::string& text, const std::string&
       while (words >> item) {
         // "7", "7/1", "7//3", "7/1/3": the vertex is the first number; negative counts from the end
         const auto slash = item.find('/');
+        long id = 0;
         try {
           std::size_t used = 0;
-          const long id = std::stol(item.substr(0, slash), &used);
+          id = std::stol(item.substr(0, slash), &used);
           if (used != item.substr(0, slash).size()) refuse("'" + one_line(item) + "' is not a vertex number");
-          ids.push_back(id < 0 ? static_cast<long>(p.vertices.size()) + id : id - 1);
         } catch (const std::logic_error&) {
           refuse("'" + one_line(item) + "' is not a vertex number");
         }
+        if (id < -static_cast<long>(p.vertices.size()))
+          refuse("'" + one_line(item) + "' counts back past the first vertex (" + std::to_string(p.vertices.size()) + " so far)");
+        ids.push_back(id < 0 ? static_cast<long>(p.vertices.size()) + id : id - 1);
       }
       if (ids.size() != 3) refuse("facets must be triangles (" + std::to_string(ids.size()) + " vertices)");
       p.facets.push_back({static_cast<int>(std::clamp<long>(ids[0], -1, INT32_MAX)), static_cast<int>(std::clamp<long>(ids[1], -1, INT32_MAX)),
@@ -183,7 +214,7 @@ models::polyhedron parse_shape_model(const std::string& text, const std::string&
       refuse("'" + one_line(tag) + "' is neither a vertex (v) nor a facet (f) line of a Wavefront OBJ file, nor the plain form's counts");
     }
   }
-  return p;
+  return sized(std::move(p));
 }
 
 binary_body binary_shape_named(const std::string& spec, const std::string& option) {

@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include "rotlie/runs/output_file.hpp"
+#include "rotlie/runs/rotation_check.hpp"
 #include "rotlie/runs/text_file.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/schemes/message_number.hpp"
@@ -32,6 +34,73 @@ json state_fields(const models::binary_state<double>& x, const models::binary_sy
           {"omega2", models::angular_velocity(sys.moments(1), x.body[1].G)}};
 }
 
+// The largest size a component of r (km), v (km/s) or omega (rad/s) may have: far beyond any binary,
+// and small enough that the run's energies, momenta and their squares stay within double's range.
+constexpr double largest_component = 1e30;
+// The shortest separation (km) told apart from zero (|r|² and |r|³ stay normal numbers).
+constexpr double shortest_separation = 1e-30;
+
+// Where the parser met a number it cannot hold (1e999): the keys and indices down to it, and its text.
+class number_locator : public nlohmann::json_sax<json> {
+ public:
+  std::string where, token;
+
+  bool null() override { return next(); }
+  bool boolean(bool) override { return next(); }
+  bool number_integer(number_integer_t) override { return next(); }
+  bool number_unsigned(number_unsigned_t) override { return next(); }
+  bool number_float(number_float_t, const string_t&) override { return next(); }
+  bool string(string_t&) override { return next(); }
+  bool binary(binary_t&) override { return next(); }
+  bool start_object(std::size_t) override { return open(false); }
+  bool key(string_t& k) override {
+    path.back().key = k;
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(true); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t, const std::string& last_token, const nlohmann::detail::exception&) override {
+    for (const auto& f : path) where += f.array ? "[" + std::to_string(f.index) + "]" : "\"" + one_line(f.key) + "\"";
+    token = one_line(last_token);
+    return false;
+  }
+
+ private:
+  struct level {
+    bool array = false;
+    std::size_t index = 0;
+    std::string key;
+  };
+  std::vector<level> path;
+
+  bool next() {
+    if (!path.empty() && path.back().array) ++path.back().index;
+    return true;
+  }
+  bool open(bool array) {
+    path.push_back({array, 0, ""});
+    return true;
+  }
+  bool close() {
+    path.pop_back();
+    return next();
+  }
+};
+
+json parsed(const std::string& text, const std::string& where) {
+  try {
+    return json::parse(text);
+  } catch (const json::out_of_range&) {  // a number beyond double's range
+    number_locator locator;
+    json::sax_parse(text, &locator);
+    throw bad_input(where + ": " + (locator.where.empty() ? "a number" : locator.where) + " = " + locator.token +
+                    " is out of range (beyond double's 1.8e308)");
+  } catch (const json::exception& e) {
+    throw bad_input(where + ": not JSON (" + one_line(e.what()) + ")");
+  }
+}
+
 vec3<double> vector_field(const json& j, const std::string& key, const std::string& where) {
   if (!j.contains(key)) throw bad_input(where + ": the field \"" + key + "\" is missing");
   const auto& v = j[key];
@@ -40,7 +109,9 @@ vec3<double> vector_field(const json& j, const std::string& key, const std::stri
   for (std::size_t k = 0; k < 3; ++k) {
     if (!v[k].is_number()) throw bad_input(where + ": \"" + key + "\" must be three numbers");
     out[k] = v[k].get<double>();
-    if (!std::isfinite(out[k])) throw bad_input(where + ": \"" + key + "\" is not finite");
+    if (!(std::abs(out[k]) <= largest_component))
+      throw bad_input(where + ": \"" + key + "\"[" + std::to_string(k) + "] = " + schemes::message_number(out[k]) + " is out of range (at most " +
+                      schemes::message_number(largest_component) + " in size)");
   }
   return out;
 }
@@ -56,17 +127,10 @@ mat3<double> rotation_field(const json& j, const std::string& key, const std::st
     for (int k = 0; k < 3; ++k) {
       if (!row[static_cast<std::size_t>(k)].is_number()) throw bad_input(where + ": \"" + key + "\" must hold numbers");
       Q(i, k) = row[static_cast<std::size_t>(k)].get<double>();
-      if (!std::isfinite(Q(i, k))) throw bad_input(where + ": \"" + key + "\" is not finite");
     }
   }
-  const auto P = transpose(Q) * Q;
-  double gap = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k) gap = std::max(gap, std::abs(P(i, k) - (i == k ? 1.0 : 0.0)));
-  const double det = Q(0, 0) * (Q(1, 1) * Q(2, 2) - Q(1, 2) * Q(2, 1)) - Q(0, 1) * (Q(1, 0) * Q(2, 2) - Q(1, 2) * Q(2, 0)) +
-                     Q(0, 2) * (Q(1, 0) * Q(2, 1) - Q(1, 1) * Q(2, 0));
-  if (gap > 1e-9 || det < 0)
-    throw bad_input(where + ": \"" + key + "\" is not a rotation (|QᵀQ − 1| = " + schemes::message_number(gap) + ", det " + schemes::message_number(det) + ")");
+  const double entries[9] = {Q(0, 0), Q(0, 1), Q(0, 2), Q(1, 0), Q(1, 1), Q(1, 2), Q(2, 0), Q(2, 1), Q(2, 2)};
+  if (const auto why = rotation_problem(entries, 1e-9); !why.empty()) throw bad_input(where + ": \"" + key + "\" is not a rotation (" + why + ")");
   for (int pass = 0; pass < 2; ++pass) {  // Newton steps toward the nearest rotation: Q (3 − QᵀQ)/2
     auto half = transpose(Q) * Q;
     for (int i = 0; i < 3; ++i)
@@ -189,12 +253,7 @@ models::binary_state<double> read_binary_state(const std::string& path, const mo
 }
 
 models::binary_state<double> parse_binary_state(const std::string& text, const std::string& where, const models::binary_system<double>& sys) {
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw bad_input(where + ": not JSON (" + one_line(e.what()) + ")");
-  }
+  const json j = parsed(text, where);
   if (!j.is_object()) throw bad_input(where + ": a JSON object with r, v, Q1, Q2, omega1, omega2 is expected");
   models::binary_state<double> x;
   x.r = vector_field(j, "r", where);
@@ -203,7 +262,11 @@ models::binary_state<double> parse_binary_state(const std::string& text, const s
   x.body[1].Q = rotation_field(j, "Q2", where);
   const auto w1 = vector_field(j, "omega1", where), w2 = vector_field(j, "omega2", where);
   for (std::size_t k = 0; k < 3; ++k) x.body[0].G[k] = sys.moments(0)[k] * w1[k], x.body[1].G[k] = sys.moments(1)[k] * w2[k];
-  if (!(models::dot(x.r, x.r) > 0)) throw bad_input(where + ": r must not be zero");
+  const double separation = std::hypot(x.r[0], x.r[1], x.r[2]);
+  if (!(separation > 0)) throw bad_input(where + ": r must not be zero");
+  if (separation < shortest_separation)
+    throw bad_input(where + ": \"r\" is out of range (|r| = " + schemes::message_number(separation) + " km, below " + schemes::message_number(shortest_separation) +
+                    ")");
   return x;
 }
 

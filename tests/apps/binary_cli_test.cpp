@@ -7,9 +7,12 @@
 #include "cli_support.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <fstream>
+#include <sstream>
+#include <vector>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -181,6 +184,121 @@ BOOST_AUTO_TEST_CASE(observables_and_impulses) {
   const double v0 = at_rest["v"][1].get<double>();  // the circular start moves along +y
   BOOST_TEST(std::abs(dart["v"][1].get<double>() - (v0 - size)) < 1e-18);
   BOOST_TEST(run("binary " + didymos + " --integrator SIER4 --T 0 --impulse moon:1,2,3").status == 2);
+}
+
+// Issue 46: numbers in a --state file or a shape file that a double cannot hold, or that the run's
+// energies and integrals would overflow with, are refused in one line naming the file and the field
+// or line (exit 2), and a message about an attitude shows finite, true numbers.
+namespace {
+
+struct scratch_file {
+  fs::path path;
+  scratch_file(const std::string& name, const std::string& text)
+      : path(fs::temp_directory_path() / ("rotlie-binary-" + std::to_string(::getpid()) + "-" + name)) {
+    std::ofstream(path) << text;
+  }
+  ~scratch_file() { fs::remove(path); }
+};
+
+void check_refusal(const std::string& args, const std::string& file, const std::string& words) {
+  const auto r = run("binary " + args);
+  BOOST_TEST(r.status == 2, args << ": " << r.err);
+  BOOST_TEST(r.err.rfind("rotlie: error: ", 0) == 0, r.err);
+  BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, r.err);
+  BOOST_TEST(r.err.find(file) != std::string::npos, r.err);
+  BOOST_TEST(r.err.find(words) != std::string::npos, "'" << r.err << "' should say '" << words << "'");
+  BOOST_TEST((r.err.find("inf") == std::string::npos && r.err.find("nan") == std::string::npos), r.err);
+}
+
+// An OBJ file of these boxes [x, x + s]³ (counter-clockwise from outside), each vertex written once.
+std::string boxes_obj(const std::vector<std::array<double, 3>>& corners, double s) {
+  std::vector<std::array<double, 3>> vertices;
+  std::string facets;
+  const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& c : corners) {
+    int index[8];
+    for (int i = 0; i < 8; ++i) {
+      const std::array<double, 3> v{c[0] + (i & 1 ? s : 0), c[1] + (i & 2 ? s : 0), c[2] + (i & 4 ? s : 0)};
+      const auto found = std::find(vertices.begin(), vertices.end(), v);
+      index[i] = static_cast<int>(found - vertices.begin()) + 1;
+      if (found == vertices.end()) vertices.push_back(v);
+    }
+    for (const auto& f : faces)
+      for (const auto& t : {std::array<int, 3>{f[0], f[1], f[2]}, std::array<int, 3>{f[0], f[2], f[3]}})
+        facets += "f " + std::to_string(index[t[0]]) + " " + std::to_string(index[t[1]]) + " " + std::to_string(index[t[2]]) + "\n";
+  }
+  std::ostringstream out;
+  out.precision(17);
+  for (const auto& v : vertices) out << "v " << v[0] << " " << v[1] << " " << v[2] << "\n";
+  return out.str() + facets;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(out_of_range_numbers_in_a_state_file_are_named) {
+  const auto start = binary_json(didymos + " --integrator SIER2 --h 60 --T 0");
+  nlohmann::json state;
+  for (const char* key : {"r", "v", "Q1", "Q2", "omega1", "omega2"}) state[key] = start[key];
+  const auto with = [&](const char* key, const nlohmann::json& value) {
+    auto s = state;
+    s[key] = value;
+    return s.dump();
+  };
+  const nlohmann::json identity = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  auto reflection = identity, huge = identity, beyond = identity;
+  reflection[0][0] = -1, huge[0][0] = 1e300, beyond[0][0] = 1e200;
+  // 1e999 is no double: written into the text, the parser refuses it
+  auto text_999 = with("r", {7777, 0, 0});
+  text_999.replace(text_999.find("7777"), 4, "1e999");
+  auto text_minus_999 = with("Q2", {{1, 0, 0}, {0, 7777, 0}, {0, 0, 1}});
+  text_minus_999.replace(text_minus_999.find("7777"), 4, "-1e999");
+  const std::pair<std::string, std::string> cases[] = {
+      {with("r", {1e308, 0, 0}), "\"r\"[0] = 1e+308 is out of range"},
+      {with("v", {0, 1e308, 0}), "\"v\"[1] = 1e+308 is out of range"},
+      {with("omega1", {1e300, 0, 0}), "\"omega1\"[0] = 1e+300 is out of range"},
+      {with("Q1", huge), "\"Q1\" is not a rotation (its entry [0][0] = 1e+300 lies outside [-1, 1])"},
+      {with("Q1", beyond), "\"Q1\" is not a rotation (its entry [0][0] = 1e+200 lies outside [-1, 1])"},
+      {with("Q1", reflection), "\"Q1\" is not a rotation (|QᵀQ − 1| = 0, det -1: a reflection)"},
+      {with("Q1", {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}), "\"Q1\" is not a rotation (|QᵀQ − 1| = 1, det 0)"},
+      {with("r", {1e-200, 0, 0}), "\"r\" is out of range (|r| = 1e-200 km"},
+      {text_999, "\"r\"[0] = 1e999 is out of range"},
+      {text_minus_999, "\"Q2\"[1][1] = -1e999 is out of range"},
+  };
+  for (const auto& [text, words] : cases) {
+    const scratch_file file("state.json", text);
+    check_refusal(didymos + " --integrator SIER2 --h 10 --T 100 --state " + file.path.string(), file.path.filename().string(), words);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(out_of_range_numbers_in_a_shape_file_are_named) {
+  const std::string facets = "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  const std::pair<std::string, std::string> cases[] = {
+      {"v 0 0 0\nv 1e200 0 0\nv 0 0.2 0\nv 0 0 0.2\n" + facets, "line 2: vertex coordinate 1e200 is out of range"},
+      {"v 0 0 0\nv 0.2 0 0\nv 0 1e400 0\nv 0 0 0.2\n" + facets, "line 3: vertex coordinate 1e400 is out of range"},
+      {"v 0 0 0\nv 2e-200 0 0\nv 0 2e-200 0\nv 0 0 2e-200\n" + facets, "the vertices span 2e-200 km, out of range"},
+      {"4 4\n0 0 0\n0.2 0 0\n0 0.2 0\n0 0 -1e400\n1 3 2\n1 2 4\n1 4 3\n2 3 4\n", "line 5: vertex coordinate -1e400 is out of range"},
+  };
+  for (const auto& [text, words] : cases) {
+    const scratch_file file("shape.obj", text);
+    check_refusal("--primary polyhedron:" + file.path.string() + " --secondary ellipsoid:0.1,0.08,0.06 --density 2000 --separation 1.2 --integrator SIER2 --T 0",
+                  file.path.filename().string(), words);
+  }
+}
+
+// Two cubes of side s = 0.2 km sharing an edge are one solid: mass 2ρs³, principal moments ρs⁵ (1/3,
+// 4/3, 4/3) (the closed form of polyhedron_check_test); two overlapping cubes are refused.
+BOOST_AUTO_TEST_CASE(a_solid_with_an_edge_of_four_facets_runs_and_a_surface_crossing_itself_does_not) {
+  const double s = 0.2, rho = 2000 * 1e9;
+  const scratch_file cubes("cubes.obj", boxes_obj({{0, 0, 0}, {s, s, 0}}, s));
+  const auto j = binary_json("--primary polyhedron:" + cubes.path.string() +
+                             " --secondary ellipsoid:0.1,0.08,0.06 --density 2000 --separation 1.2 --integrator SIER2 --T 0");
+  BOOST_TEST(j["masses"][0].get<double>() == 2 * rho * s * s * s, boost::test_tools::tolerance(1e-13));
+  const double moments[3] = {1.0 / 3, 4.0 / 3, 4.0 / 3};
+  for (std::size_t k = 0; k < 3; ++k)
+    BOOST_TEST(j["moments"][0][k].get<double>() == moments[k] * rho * std::pow(s, 5), boost::test_tools::tolerance(1e-12));
+  const scratch_file crossing("crossing.obj", boxes_obj({{0, 0, 0}, {s / 2, s / 2, s / 2}}, s));
+  check_refusal("--primary polyhedron:" + crossing.path.string() + " --secondary ellipsoid:0.1,0.08,0.06 --density 2000 --separation 1.2 --integrator SIER2 --T 0",
+                crossing.path.filename().string(), "the surface meets itself: facets");
 }
 
 BOOST_AUTO_TEST_SUITE_END()  // binary_cli_test

@@ -37,7 +37,9 @@ binary_body binary_shape_named(const std::string& spec, const std::string& optio
 binary_body with_density(binary_body shape, double density_kg_m3);
 binary_body with_mass(binary_body shape, double mass_kg);
 
-/// A shape model's text (OBJ or the plain form); `name` names it in messages. Throws bad_input.
+/// A shape model's text (OBJ or the plain form); `name` names it in messages. Throws bad_input naming the
+/// line of a coordinate that is not a number or beyond 1e20 km in size, or vertices spanning less than
+/// 1e-12 km. (Whether the mesh bounds a solid is polyhedron_body's check.)
 models::polyhedron parse_shape_model(const std::string& text, const std::string& name);
 
 /// Whether the two bodies touch at this configuration (Q maps each body's principal frame to inertial,

@@ -9,7 +9,8 @@ namespace rotlie::runs {
 
 /// A start from a JSON file with "r", "v" (km, km/s), "Q1", "Q2" (3×3, rows; proper rotations to 1e-9,
 /// then made orthogonal to round-off) and "omega1", "omega2" (rad/s, body frames): the fields of
-/// binary_json, so a run's output starts the next. Throws bad_input naming --state.
+/// binary_json, so a run's output starts the next. Each component of r, v and the omegas at most 1e30
+/// in size, |r| at least 1e-30 km. Throws bad_input naming --state and the field.
 models::binary_state<double> read_binary_state(const std::string& path, const models::binary_system<double>& sys);
 
 /// The same from the JSON text; `where` names it in messages.

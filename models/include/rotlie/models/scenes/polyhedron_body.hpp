@@ -4,7 +4,8 @@
 // the origin span a tetrahedron of signed volume det[a b c]/6; over a tetrahedron with vertices 0, v₁,
 // v₂, v₃ the barycentric moments ∫ λ^α dV = 6V α!/(|α|+3)! give
 //   ∫ ρ^⊗k dV = 6V/(k+3)! Σ_{j₁…j_k ∈ {1,2,3}} α(j)! v_{j₁} ⊗ … ⊗ v_{j_k},
-// and the signed tetrahedra sum to the solid for a closed, outward-oriented surface. The integrals are
+// and the signed tetrahedra sum to the solid for a closed, outward-oriented surface that does not meet
+// itself (polyhedron_check.hpp says which meshes are such; edges of four facets are). The integrals are
 // taken about the centroid, then turned into the principal axes (sorted as an ellipsoid's a ≥ b ≥ c
 // along x, y, z: the moments ascending).
 #include <algorithm>
@@ -19,43 +20,10 @@
 #include <vector>
 
 #include "rotlie/models/scenes/inertia_integrals.hpp"
+#include "rotlie/models/scenes/polyhedron_check.hpp"
 #include "rotlie/models/small_matrix.hpp"
 
 namespace rotlie::models {
-
-/// A shape model: vertices (km) and triangular facets (0-based vertex indices, counter-clockwise from outside).
-struct polyhedron {
-  std::vector<vec3<double>> vertices;
-  std::vector<std::array<int, 3>> facets;
-};
-
-/// Throws std::invalid_argument unless the surface is a closed, consistently oriented triangle mesh:
-/// every index valid, no facet with a repeated vertex, every directed edge once and its reverse once.
-/// (The volume's sign, checked by polyhedron_body, says whether it faces outward.)
-inline void check_polyhedron(const polyhedron& shape) {
-  if (shape.vertices.size() < 4 || shape.facets.size() < 4)
-    throw std::invalid_argument("polyhedron: " + std::to_string(shape.vertices.size()) + " vertices and " + std::to_string(shape.facets.size()) +
-                                " facets (a closed solid needs at least 4 of each)");
-  for (const auto& v : shape.vertices)
-    if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) throw std::invalid_argument("polyhedron: a vertex is not finite");
-  std::map<std::pair<int, int>, int> edges;
-  const int n = static_cast<int>(shape.vertices.size());
-  for (std::size_t f = 0; f < shape.facets.size(); ++f) {
-    const auto& t = shape.facets[f];
-    for (int k = 0; k < 3; ++k)
-      if (t[static_cast<std::size_t>(k)] < 0 || t[static_cast<std::size_t>(k)] >= n)
-        throw std::invalid_argument("polyhedron: facet " + std::to_string(f + 1) + " names vertex " + std::to_string(t[static_cast<std::size_t>(k)] + 1) +
-                                    " of " + std::to_string(n));
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) throw std::invalid_argument("polyhedron: facet " + std::to_string(f + 1) + " repeats a vertex");
-    for (std::size_t k = 0; k < 3; ++k) ++edges[{t[k], t[(k + 1) % 3]}];
-  }
-  for (const auto& [edge, count] : edges) {
-    const auto reverse = edges.find({edge.second, edge.first});
-    if (count != 1 || reverse == edges.end() || reverse->second != 1)
-      throw std::invalid_argument("polyhedron: not a closed, consistently oriented surface (edge " + std::to_string(edge.first + 1) + "–" +
-                                  std::to_string(edge.second + 1) + ")");
-  }
-}
 
 /// A homogeneous polyhedron's body and where its principal frame sits in the shape's frame.
 template <class T>
