@@ -24,9 +24,11 @@
 #include "rotlie/models/moments_from_text.hpp"
 #include "rotlie/runs/free_body_io.hpp"
 #include "rotlie/runs/body_names.hpp"
+#include "rotlie/runs/rotation_check.hpp"
 #include "rotlie/schemes/message_number.hpp"
 #include "rotlie/runs/free_body_runs.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
+#include "rotlie/runs/rotation_check.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/schemes/quad.hpp"
 #include "rotlie/schemes/same_body.hpp"
@@ -65,19 +67,6 @@ T number_in(const std::string& text) {
 /// How far an attitude may be from a rotation: float64 entries written out to about 10 digits.
 constexpr double max_rotation_defect = 1e-9;
 
-/// max |QᵀQ − I| of a row-major 3×3 matrix, or +∞ when det Q < 0 (a reflection).
-double rotation_defect(const double* q) {
-  double worst = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      double d = i == j ? -1.0 : 0.0;
-      for (int k = 0; k < 3; ++k) d += q[3 * k + i] * q[3 * k + j];
-      worst = std::max(worst, std::abs(d));
-    }
-  const double det = q[0] * (q[4] * q[8] - q[5] * q[7]) - q[1] * (q[3] * q[8] - q[5] * q[6]) + q[2] * (q[3] * q[7] - q[4] * q[6]);
-  return det > 0 ? worst : std::numeric_limits<double>::infinity();
-}
-
 /// The states of N bodies: G0 of shape (N, 3), Q0 of shape (N, 3, 3) a rotation each, both finite.
 struct state_rows {
   const double* G = nullptr;
@@ -103,11 +92,10 @@ state_rows checked_rows(const rows& G0, const rows& Q0) {
   for (py::ssize_t i = 0; i < 9 * r.n; ++i)
     if (!std::isfinite(r.Q[i])) throw runs::bad_input("Q0 must be finite");
   for (py::ssize_t row = 0; row < r.n; ++row) {
-    const double off = rotation_defect(r.Q + 9 * row);
-    if (!(off <= max_rotation_defect))
-      throw runs::bad_input("Q0 (row " + std::to_string(row) + ") is not a rotation: max |QᵀQ − I| = " + schemes::message_number(off) +
-                            (off <= max_rotation_defect ? "" : " > " + schemes::message_number(max_rotation_defect)) +
-                            " or det Q < 0 (orthonormalise it, e.g. by its polar decomposition)");
+    const auto why = runs::rotation_problem(r.Q + 9 * row, max_rotation_defect);
+    if (!why.empty())
+      throw runs::bad_input("Q0 (row " + std::to_string(row) + ") is not a rotation (" + why + "; at most " + schemes::message_number(max_rotation_defect) +
+                            " and det 1 are needed): orthonormalise it, e.g. by its polar decomposition");
   }
   return r;
 }

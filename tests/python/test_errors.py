@@ -158,8 +158,13 @@ def test_table_files_are_bounded_as_on_the_command_line(tmp_path):
 def test_attitudes_must_be_rotations_and_arrays_real():
     with pytest.raises(ValueError, match="not a rotation"):
         rotlie.exact_flow(WATER, [1, 1, 1], 2 * np.eye(3), t=1)
-    with pytest.raises(ValueError, match="not a rotation"):
+    with pytest.raises(ValueError, match="not a rotation") as e:
         rotlie.integrate("ABCBA2", WATER, [1, 1, 1], np.diag([1.0, 1.0, -1.0]), h=0.1, steps=1)  # a reflection
+    # the numbers shown are finite and true (issue 46: it printed inf where the gap is 0)
+    assert "|QᵀQ − 1| = 0, det -1: a reflection" in str(e.value) and "inf" not in str(e.value)
+    with pytest.raises(ValueError, match=r"= 74, det") as e:
+        rotlie.exact_flow(WATER, [1, 1, 1], np.diag([1.0, 1.0, 75 ** 0.5 * 1.0]), t=1)
+    assert "inf" not in str(e.value)
     with pytest.raises(TypeError, match="G0 must be real"):
         rotlie.exact_flow(WATER, [1 + 1j, 1, 1], t=1)
     with pytest.raises(TypeError, match="Q0 must be real"):
