@@ -59,12 +59,13 @@ BOOST_AUTO_TEST_CASE(the_force_and_torques_are_the_potentials_gradient_without_l
 }
 
 BOOST_AUTO_TEST_CASE(the_lag_keeps_the_angular_momentum_and_dissipates_energy) {
-  const auto run = runs::binary_run(runs::binary_setup_of(tidal_request("1,600,1,600", "200000")));
-  BOOST_TEST_MESSAGE("L kept to " << run.check.max_rel_angular_momentum_error << "; energy " << run.end.energy << " from " << run.setup.start.r[0]);
+  const auto run = runs::binary_run(runs::binary_setup_of(tidal_request("1,600,1,600", "199800")));
+  const auto sys = run.setup.system_model();
+  const double E0 = sys.energy(run.setup.start, 0.0);
+  BOOST_TEST_MESSAGE("L kept to " << run.check.max_rel_angular_momentum_error << "; the energy falls from " << E0 << " to " << run.end.energy);
   BOOST_TEST(run.check.max_rel_angular_momentum_error < 1e-11);
   BOOST_TEST(!run.check.unstable);
-  const auto sys = run.setup.system_model();
-  BOOST_TEST(run.end.energy < sys.energy(run.setup.start, 0.0));  // the primary spins faster than the orbit: energy falls
+  BOOST_TEST(run.end.energy < E0);  // the primary spins faster than the orbit: energy falls
 }
 
 BOOST_AUTO_TEST_CASE(the_secular_rates_on_a_circular_orbit_are_the_closed_forms) {
@@ -75,8 +76,16 @@ BOOST_AUTO_TEST_CASE(the_secular_rates_on_a_circular_orbit_are_the_closed_forms)
   const auto& I = sys.moments(0);
   const double R = std::sqrt(5 * (I[0] + I[1] + I[2]) / (6 * m1)), a = s0.start.r[0];
   const double n = std::sqrt(G * (m1 + m2) / (a * a * a)), Omega = s0.start.body[0].G[2] / I[2];
-  const double F_theta = 3 * 1.0 * G * m2 * m2 * std::pow(R, 5) * 600 * (Omega - n) / std::pow(a, 7);
-  const double a_dot = 2 * F_theta / (mu * n), n_dot = -1.5 * n / a * a_dot, Omega_dot = -a * F_theta / I[2];
+  // the closed forms at a separation a and spin Ω (n from Kepler's third law)
+  struct rates {
+    double a_dot, n_dot, Omega_dot;
+  };
+  const auto closed_form = [&](double a_, double Omega_) {
+    const double n_ = std::sqrt(G * (m1 + m2) / (a_ * a_ * a_));
+    const double F_theta = 3 * 1.0 * G * m2 * m2 * std::pow(R, 5) * 600 * (Omega_ - n_) / std::pow(a_, 7);
+    const double a_dot = 2 * F_theta / (mu * n_);
+    return rates{a_dot, -1.5 * n_ / a_ * a_dot, -a_ * F_theta / I[2]};
+  };
 
   const double period = 2 * std::acos(-1.0) / n;
   const long orbits = 20, per_orbit = 72;
@@ -117,12 +126,15 @@ BOOST_AUTO_TEST_CASE(the_secular_rates_on_a_circular_orbit_are_the_closed_forms)
                      A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
   const double det2 = A[0][0] * (A[1][1] * P[2] - P[1] * A[2][1]) - A[0][1] * (A[1][0] * P[2] - P[1] * A[2][0]) + P[0] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
   const double n_rate = 2 * det2 / det;
-  const double Omega_rate = (run.end.x.body[0].G[2] / I[2] - Omega) / run.end.t;
+  const double Omega_end = run.end.x.body[0].G[2] / I[2], Omega_rate = (Omega_end - Omega) / run.end.t;
+  // a moves by 1 % over the run: the rates at the run's middle (a and Ω halfway), second order in the change
+  const auto mid = closed_form((mean(0) + mean(sep.size() - 1 - per_orbit)) / 2, (Omega + Omega_end) / 2);
+  const double a_dot = mid.a_dot, n_dot = mid.n_dot, Omega_dot = mid.Omega_dot;
   BOOST_TEST_MESSAGE("da/dt " << a_rate << " km/s (closed form " << a_dot << "), dn/dt " << n_rate << " (" << n_dot << "), dOmega/dt " << Omega_rate
                               << " (" << Omega_dot << ")");
-  BOOST_TEST(a_rate == a_dot, boost::test_tools::tolerance(0.02));
-  BOOST_TEST(n_rate == n_dot, boost::test_tools::tolerance(0.02));
-  BOOST_TEST(Omega_rate == Omega_dot, boost::test_tools::tolerance(0.02));
+  BOOST_TEST(a_rate == a_dot, boost::test_tools::tolerance(2e-3));
+  BOOST_TEST(n_rate == n_dot, boost::test_tools::tolerance(2e-3));
+  BOOST_TEST(Omega_rate == Omega_dot, boost::test_tools::tolerance(2e-3));
 }
 
 BOOST_AUTO_TEST_SUITE_END()
