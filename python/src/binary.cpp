@@ -102,7 +102,7 @@ void bind_binary(py::module_& m) {
       .def_property_readonly("observables", [](const binary_object& b) -> py::object {
         if (!b.result.observables) return py::none();
         return field(b, "observables");
-      }, "with observe=True: orbit_period_h, libration_amplitude_deg, libration_mean_deg, libration_period_h, spin_periods_h, separation_km, osculating")
+      }, "with observe=True: orbit_period_h, libration_amplitude_deg, libration_mean_deg, libration_period_h, spin_periods_h, separation_km, osculating, euler_deg, spin_state")
       .def_property_readonly("terms", [](const binary_object& b) {
         py::dict out;
         for (const auto& term : b.result.setup.terms) out[py::str(term.first)] = field(b, term.first.c_str());

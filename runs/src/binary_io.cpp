@@ -190,6 +190,21 @@ json binary_json(const binary_result& r) {
                         {"spin_periods_h", {o.primary_period_h, o.secondary_period_h}},
                         {"separation_km", {o.separation_min_km, o.separation_max_km}},
                         {"osculating", {{"a_km", o.osculating.a_km}, {"e", o.osculating.e}, {"i_deg", o.osculating.i_deg}, {"period_h", o.osculating.period_h}}}};
+    // roll, pitch, yaw: 1-2-3 Euler angles of the principal axes in the orbit frame (x̂ = r̂, ẑ = r × v)
+    const auto euler = [](const body_rotation& b) {
+      return json{{"roll_max", b.euler_max_deg[0]}, {"pitch_max", b.euler_max_deg[1]}, {"yaw_max", b.euler_max_deg[2]},
+                  {"roll_end", b.euler_end_deg[0]}, {"pitch_end", b.euler_end_deg[1]}, {"yaw_end", b.euler_end_deg[2]}};
+    };
+    const auto spin = [](const body_rotation& b) {
+      return json{{"npa_angle_max_deg", b.npa_angle_max_deg}, {"npa_angle_end_deg", b.npa_angle_end_deg}, {"id_over_c", b.id_over_c},
+                  {"mode", b.short_axis_mode ? "SAM" : "LAM"}, {"tumbling", b.tumbling}};
+    };
+    j["observables"]["euler_deg"] = {{"primary", euler(o.rotation[0])}, {"secondary", euler(o.rotation[1])}};
+    j["observables"]["spin_state"] = {
+        {"tumbling_threshold_deg", o.tumbling_threshold_deg},
+        {"tumbling_definition", "the angle between G and the maximum-moment axis exceeds tumbling_threshold_deg at a sample"},
+        {"primary", spin(o.rotation[0])},
+        {"secondary", spin(o.rotation[1])}};
   }
   j["unstable"] = r.check.unstable;
   j["round_off_floor"] = r.check.round_off_floor;
@@ -236,6 +251,13 @@ std::string binary_text(const binary_result& r) {
         << " h, e = " << message_number(o.osculating.e) << "), libration " << message_number(o.libration_amplitude_deg) << " deg about "
         << message_number(o.libration_mean_deg) << " deg, period " << message_number(o.libration_period_h) << " h; spin periods "
         << message_number(o.primary_period_h) << " and " << message_number(o.secondary_period_h) << " h\n";
+    for (int b = 0; b < 2; ++b) {
+      const auto& rot = o.rotation[b];
+      out << (b == 0 ? "primary" : "secondary") << ": G up to " << message_number(rot.npa_angle_max_deg) << " deg off its maximum-moment axis, I_d/C "
+          << message_number(rot.id_over_c) << " (" << (rot.short_axis_mode ? "SAM" : "LAM") << ")" << (rot.tumbling ? ": TUMBLING" : "")
+          << "; roll, pitch, yaw up to " << message_number(rot.euler_max_deg[0]) << ", " << message_number(rot.euler_max_deg[1]) << ", "
+          << message_number(rot.euler_max_deg[2]) << " deg\n";
+    }
   }
   for (const auto& [name, term] : s.terms) out << name << " at the end: " << term->values(r.end.x, r.end.t).dump() << "\n";
   return out.str();
