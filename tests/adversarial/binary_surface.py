@@ -85,20 +85,22 @@ def binary_surface(R, quick):
         f = _write(d / f"{name}.obj", "\n".join(lines) + "\n")
         R.expect(cls, ["binary", "--primary", f"polyhedron:{f}", "--secondary", "ellipsoid:0.01,0.01,0.01", "--density", "2000",
                        "--separation", "1", "--integrator", "SIER4", "--T", "0"], "refused", what=f"a {name} shape model")
-    # a valid solid of two cubes sharing an edge (an edge of four facets) is accepted
-    def cube_at(x0, y0, first):
-        v = [f"v {x0 + i} {y0 + j} {k}" for k in (0, 1) for j in (0, 1) for i in (0, 1)]
-        n = lambda i, j, k: first + i + 2 * j + 4 * k  # noqa: E731
-        quads = [((0, 0, 0), (0, 1, 0), (1, 1, 0), (1, 0, 0)), ((0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)),
-                 ((0, 0, 0), (1, 0, 0), (1, 0, 1), (0, 0, 1)), ((0, 1, 0), (0, 1, 1), (1, 1, 1), (1, 1, 0)),
-                 ((0, 0, 0), (0, 0, 1), (0, 1, 1), (0, 1, 0)), ((1, 0, 0), (1, 1, 0), (1, 1, 1), (1, 0, 1))]
-        f = []
-        for a, b, c, e in quads:
-            f += [f"f {n(*a)} {n(*b)} {n(*c)}", f"f {n(*a)} {n(*c)} {n(*e)}"]
-        return v, f
-    va, fa = cube_at(0, 0, 1)
-    vb, fb = cube_at(1, 1, 9)
-    f = _write(d / "two-cubes.obj", "\n".join(va + vb + fa + fb) + "\n")
+    # a valid solid of two cubes sharing an edge (an edge of four facets, its two vertices written once)
+    index, verts, tris = {}, [], []
+
+    def vertex(p):
+        if p not in index:
+            index[p] = len(verts) + 1
+            verts.append("v %d %d %d" % p)
+        return index[p]
+
+    for x0, y0 in ((0, 0), (1, 1)):
+        c = lambda i, j, k: vertex((x0 + i, y0 + j, k))  # noqa: E731
+        for a_, b_, c_, e_ in (((0, 0, 0), (0, 1, 0), (1, 1, 0), (1, 0, 0)), ((0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)),
+                               ((0, 0, 0), (1, 0, 0), (1, 0, 1), (0, 0, 1)), ((0, 1, 0), (0, 1, 1), (1, 1, 1), (1, 1, 0)),
+                               ((0, 0, 0), (0, 0, 1), (0, 1, 1), (0, 1, 0)), ((1, 0, 0), (1, 1, 0), (1, 1, 1), (1, 0, 1))):
+            tris += [f"f {c(*a_)} {c(*b_)} {c(*c_)}", f"f {c(*a_)} {c(*c_)} {c(*e_)}"]
+    f = _write(d / "two-cubes.obj", "\n".join(verts + tris) + "\n")
     R.expect(cls, ["binary", "--primary", f"polyhedron:{f}", "--secondary", "ellipsoid:0.1,0.1,0.1", "--density", "2000", "--separation", "5",
                    "--integrator", "SIER4", "--T", "0", "--force"], "ok", what="two cubes sharing an edge (a valid solid)")
     # conventions a new user meets
