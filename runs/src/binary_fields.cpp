@@ -65,8 +65,9 @@ std::vector<binary_field> all_fields() {
                    "against the body's orbital motion); BODY primary or secondary",
                    &binary_request::impulse));
   f.push_back(flag("observe",
-                   "Read off every step: the mean orbit period, the secondary's libration (amplitude, mean, period), both spin periods and the "
-                   "osculating elements at the end (the JSON's observables)",
+                   "Read off every step: the mean orbit period, the secondary's libration (amplitude, mean, period), both spin periods, the "
+                   "osculating elements at the end, each body's roll, pitch and yaw in the orbit frame and its spin state (the angle of G off "
+                   "the maximum-moment axis, I_d/C, SAM or LAM, tumbling beyond 1 deg) (the JSON's observables)",
                    &binary_request::observe));
   f.back().run_only = true;
   f.push_back(text("accuracy", "REL[,RAD]", "float | tuple[float, float]", "'1e-3,1e-2'",
