@@ -16,7 +16,7 @@
 #include <utility>
 
 namespace rotlie::runs {
-namespace {
+namespace output_file_detail {  // named: output_file_stream::state holds its types
 
 // The named temporaries being written now, for the signal handler: a folder descriptor and a
 // program-chosen name per slot (dirfd < 0: free). The process writes one file at a time.
@@ -177,7 +177,9 @@ struct replaced_file {
   void replace_with(const std::string& temporary) const;
 };
 
-}  // namespace
+}  // namespace output_file_detail
+
+using namespace output_file_detail;
 
 std::filesystem::path writable_target(const std::filesystem::path& path) {
   std::filesystem::path target = path;
