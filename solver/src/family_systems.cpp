@@ -13,25 +13,25 @@
 namespace rotlie::solver {
 namespace {
 
-constexpr int n = interpolation_nodes;
-using node_values = std::array<cln::cl_RA, n * n>;  // [a * n + b]: the value at w1 = a + 1, w2 = b + 1
+constexpr int nodes = interpolation_nodes;  // not `n`: the unity batch's other files use n for their own counts
+using node_values = std::array<cln::cl_RA, nodes * nodes>;  // [a * nodes + b]: the value at w1 = a + 1, w2 = b + 1
 
-// Divided differences on the nodes 1, 2, …, n (consecutive integers: the k-th difference divides by k),
+// Divided differences on the nodes 1, 2, …, nodes (consecutive integers: the k-th difference divides by k),
 // first along w2 for each w1, then along w1: the tensor Newton coefficients.
 void to_newton_form(node_values& y) {
-  for (int a = 0; a < n; ++a)
-    for (int k = 1; k < n; ++k)
-      for (int i = n - 1; i >= k; --i) y[a * n + i] = (y[a * n + i] - y[a * n + i - 1]) / k;
-  for (int b = 0; b < n; ++b)
-    for (int k = 1; k < n; ++k)
-      for (int i = n - 1; i >= k; --i) y[i * n + b] = (y[i * n + b] - y[(i - 1) * n + b]) / k;
+  for (int a = 0; a < nodes; ++a)
+    for (int k = 1; k < nodes; ++k)
+      for (int i = nodes - 1; i >= k; --i) y[a * nodes + i] = (y[a * nodes + i] - y[a * nodes + i - 1]) / k;
+  for (int b = 0; b < nodes; ++b)
+    for (int k = 1; k < nodes; ++k)
+      for (int i = nodes - 1; i >= k; --i) y[i * nodes + b] = (y[i * nodes + b] - y[(i - 1) * nodes + b]) / k;
 }
 
 template <class T>
-std::array<T, n> newton_basis(const T& w) {
-  std::array<T, n> out;
+std::array<T, nodes> newton_basis(const T& w) {
+  std::array<T, nodes> out;
   out[0] = T(1);
-  for (int k = 1; k < n; ++k) out[k] = out[k - 1] * (w - T(k));
+  for (int k = 1; k < nodes; ++k) out[k] = out[k - 1] * (w - T(k));
   return out;
 }
 
@@ -72,11 +72,11 @@ body_system interpolate_system(const std::string& scheme, const std::string& per
   s.unknowns = static_cast<int>(s.layout.free_coefficients.size());
   sampled_polynomial p1, p2;
   std::map<lie::monomial, sampled_polynomial> h5;
-  for (int a = 0; a < n; ++a)
-    for (int b = 0; b < n; ++b) {
+  for (int a = 0; a < nodes; ++a)
+    for (int b = 0; b < nodes; ++b) {
       const std::array<cln::cl_RA, 3> w{cln::cl_RA(a + 1), cln::cl_RA(b + 1), cln::cl_RA(1)};
       const auto k = bch::compute_exact_modified_hamiltonian(s.layout, w, 5);
-      const int node = a * n + b;
+      const int node = a * nodes + b;
       sample(p1, k.remainder[3].coefficient(lie::monomial(2, 2, 0)), node);
       sample(p2, k.remainder[3].coefficient(lie::monomial(2, 0, 2)), node);
       for (const auto& [m, q] : k.remainder[5].terms()) sample(h5[m], q, node);
@@ -104,8 +104,8 @@ lie::coefficient_polynomial body_polynomial::at(const cln::cl_RA& w1, const cln:
   lie::coefficient_polynomial out;
   for (const auto& t : terms) {
     cln::cl_RA c = 0;
-    for (int a = 0; a < n; ++a)
-      for (int b = 0; b < n; ++b) c = c + t.exact[static_cast<std::size_t>(a * n + b)] * n1[a] * n2[b];
+    for (int a = 0; a < nodes; ++a)
+      for (int b = 0; b < nodes; ++b) c = c + t.exact[static_cast<std::size_t>(a * nodes + b)] * n1[a] * n2[b];
     out += lie::coefficient_polynomial::monomial({t.x[0], t.x[1], t.x[2], 0}, c);
   }
   return out;
@@ -127,12 +127,12 @@ const std::vector<body_system>& family_systems(const std::string& family) {
 
 namespace {
 
-long double coefficient_at(const body_polynomial::term& t, const std::array<long double, n>& n1,
-                           const std::array<long double, n>& n2) {
+long double coefficient_at(const body_polynomial::term& t, const std::array<long double, nodes>& n1,
+                           const std::array<long double, nodes>& n2) {
   long double c = 0;
-  for (int a = 0; a < n; ++a) {
+  for (int a = 0; a < nodes; ++a) {
     long double inner = 0;
-    for (int b = 0; b < n; ++b) inner += t.approx[static_cast<std::size_t>(a * n + b)] * n2[b];
+    for (int b = 0; b < nodes; ++b) inner += t.approx[static_cast<std::size_t>(a * nodes + b)] * n2[b];
     c += inner * n1[a];
   }
   return c;
