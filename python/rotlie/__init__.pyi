@@ -270,6 +270,8 @@ class BinaryResult:
     t: float
     energy: float
     energy_start: float
+    inaccurate: bool
+    error_estimate: dict[str, float] | None
     max_rel_energy_error: float
     max_rel_angular_momentum_error: float
     cpu_s: float

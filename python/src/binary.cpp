@@ -96,6 +96,10 @@ void bind_binary(py::module_& m) {
       .def_property_readonly("energy", [](const binary_object& b) { return b.result.end.energy; })
       .def_property_readonly("energy_start", [](const binary_object& b) { return field(b, "energy_start"); })
       .def_property_readonly("angular_momentum", [](const binary_object& b) { return array3(b.result.angular_momentum); })
+      .def_property_readonly("inaccurate", [](const binary_object& b) { return b.result.check.inaccurate; },
+                             "the error estimate beyond the accuracy asked for, or not to be had (docs/binary.md)")
+      .def_property_readonly("error_estimate", [](const binary_object& b) { return field(b, "error_estimate"); },
+                             "{position_rel, velocity_rel, attitude1_rad, attitude2_rad, order, observed_order, step_ratio, cpu_s}, or None")
       .def_property_readonly("max_rel_energy_error", [](const binary_object& b) { return b.result.check.max_rel_energy_error; })
       .def_property_readonly("max_rel_angular_momentum_error", [](const binary_object& b) { return b.result.check.max_rel_angular_momentum_error; })
       .def_property_readonly("mutual", [](const binary_object& b) { return field(b, "mutual"); }, "{U, F, M1, M2} at the final state")
