@@ -8,6 +8,7 @@
 
 #include "rotlie/runs/binary_run.hpp"
 #include "rotlie/runs/binary_simulation.hpp"
+#include "rotlie/runs/richardson.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 
 namespace rotlie::runs {
@@ -45,18 +46,7 @@ double rotation_angle(const models::mat3<double>& A, const models::mat3<double>&
   return std::atan2(s, c);
 }
 
-double observed_order(double q, double rho1, double rho2, int declared) {
-  const auto ratio = [&](double p) { return (std::pow(rho2, p) - std::pow(rho1, p)) / (std::pow(rho1, p) - 1); };
-  double lo = 1, hi = declared;
-  if (!(q < ratio(hi))) return hi;
-  if (!(q > ratio(lo))) return lo;
-  for (int i = 0; i < 60; ++i) (ratio((lo + hi) / 2) < q ? lo : hi) = (lo + hi) / 2;
-  return (lo + hi) / 2;
-}
-
 namespace {
-
-constexpr double saturation = 0.5;  // a distance (relative, or rad) beyond which two runs are simply apart
 
 // The final state of the setup's run in `steps` steps (nothing when it touched or failed: `why` says so).
 std::optional<models::binary_state<double>> companion_end(const binary_setup& setup, long steps, double& cpu_s, std::string& why,
@@ -98,55 +88,11 @@ std::optional<binary_error_estimate> estimate_binary_error(const binary_setup& s
   }
   binary_error_estimate e;
   e.order = p;
-  std::array<double, 4> est{};
-  const auto x2 = setup.steps >= 4 ? companion_end(setup, setup.steps / 2, e.cpu_s, why, stop) : std::nullopt;
-  if (x2) {
-    // Richardson at ρ1 ≈ 2, each component's order checked by a third run at ρ2 ≈ 4: short of the
-    // asymptotic range (a few steps an orbit) the distances shrink slower than 2^p, and dividing by
-    // 2^p − 1 would hide most of the error.
-    const double rho1 = static_cast<double>(setup.steps) / static_cast<double>(setup.steps / 2);
-    const double rho2 = static_cast<double>(setup.steps) / static_cast<double>(setup.steps / 4);
-    std::string why4;
-    const auto x4 = companion_end(setup, setup.steps / 4, e.cpu_s, why4, stop);
-    const auto d1 = distances(*x2, end);
-    e.step_ratio = rho1, e.observed_order = p;
-    bool saturated = false;
-    for (std::size_t c = 0; c < 4; ++c) {
-      double pc = p;
-      if (x4) {
-        const auto d2 = distances(*x4, *x2);
-        saturated = saturated || d2[c] > saturation;
-        pc = d1[c] > 0 ? observed_order(d2[c] / d1[c], rho1, rho2, p) : p;
-      }
-      e.observed_order = std::min(e.observed_order, pc);
-      est[c] = d1[c] / (std::pow(rho1, pc) - 1);
-    }
-    // A distance of the orbit's size or a radian says nothing of the order: the run at h/2 then checks
-    // it (the runs at h/2, h, 2h), and its distance to the run is the estimate's base.
-    std::string why_fine;
-    const auto x_fine = saturated ? companion_end(setup, 2 * setup.steps, e.cpu_s, why_fine, stop) : std::nullopt;
-    if (x_fine) {
-      const auto df = distances(*x_fine, end);
-      e.step_ratio = 0.5, e.observed_order = p;
-      for (std::size_t c = 0; c < 4; ++c) {
-        const double pc = df[c] > 0 ? observed_order(d1[c] / df[c], 2, 4, p) : p;
-        e.observed_order = std::min(e.observed_order, pc);
-        est[c] = df[c] * std::pow(2, pc) / (std::pow(2, pc) - 1);
-      }
-    }
-  } else {
-    // too few steps, or the coarser run failed: the same run at half the step, at the declared order
-    std::string why_fine;
-    const auto x_fine = companion_end(setup, 2 * setup.steps, e.cpu_s, why_fine, stop);
-    if (!x_fine) {
-      why = why.empty() ? why_fine : why + "; " + why_fine;
-      return std::nullopt;
-    }
-    why.clear();
-    e.step_ratio = 0.5, e.observed_order = p;
-    const auto d = distances(*x_fine, end);
-    for (std::size_t c = 0; c < 4; ++c) est[c] = d[c] * std::pow(2, p) / (std::pow(2, p) - 1);
-  }
+  const auto run = [&](long steps, std::string& failed) { return companion_end(setup, steps, e.cpu_s, failed, stop); };
+  const auto r = estimate_by_companions<4>(setup.steps, p, end, run, distances, why);
+  if (!r) return std::nullopt;
+  const auto& est = r->error;
+  e.observed_order = r->observed_order, e.step_ratio = r->step_ratio;
   e.position_rel = est[0], e.velocity_rel = est[1], e.attitude1_rad = est[2], e.attitude2_rad = est[3];
   return e;
 }

@@ -6,13 +6,12 @@
 #include <stdexcept>
 
 #include "rotlie/runs/binary_estimate.hpp"
+#include "rotlie/runs/richardson.hpp"
 #include "rotlie/runs/spin_orbit_run.hpp"
 
 namespace rotlie::runs {
 
 namespace {
-
-constexpr double spin_saturation = 0.5;  // a distance (rad, or relative) beyond which two runs are simply apart
 
 // The final attitude and body-frame angular velocity of the setup's run in `steps` steps, or nothing
 // (it failed: `why` says so).
@@ -51,54 +50,14 @@ std::optional<spin_error_estimate> estimate_spin_error(const spin_setup& setup, 
   }
   spin_error_estimate e;
   e.order = p;
-  std::array<double, 2> est{};
-  const auto x2 = setup.steps >= 4 ? spin_companion(setup, setup.steps / 2, e.cpu_s, why, stop) : std::nullopt;
-  std::optional<spin_result> x_fine;
-  if (x2) {
-    // Richardson at ρ1 ≈ 2, the order checked by a third run at ρ2 ≈ 4 (binary_estimate.hpp): short of the
-    // asymptotic range the distances shrink slower than 2^p
-    const double rho1 = static_cast<double>(setup.steps) / static_cast<double>(setup.steps / 2);
-    const double rho2 = static_cast<double>(setup.steps) / static_cast<double>(setup.steps / 4);
-    std::string why4;
-    const auto x4 = spin_companion(setup, setup.steps / 4, e.cpu_s, why4, stop);
-    const auto d1 = spin_distances(x2->Q, x2->omega_body, Q, omega);
-    e.step_ratio = rho1, e.observed_order = p;
-    bool saturated = false;
-    for (std::size_t c = 0; c < 2; ++c) {
-      double pc = p;
-      if (x4) {
-        const auto d2 = spin_distances(x4->Q, x4->omega_body, x2->Q, x2->omega_body);
-        saturated = saturated || d2[c] > spin_saturation;
-        pc = d1[c] > 0 ? observed_order(d2[c] / d1[c], rho1, rho2, p) : p;
-      }
-      e.observed_order = std::min(e.observed_order, pc);
-      est[c] = d1[c] / (std::pow(rho1, pc) - 1);
-    }
-    // a run at 4h a radian away says nothing of the order: the run at h/2 checks it instead
-    std::string why_fine;
-    if (saturated) x_fine = spin_companion(setup, 2 * setup.steps, e.cpu_s, why_fine, stop);
-    if (x_fine) {
-      const auto df = spin_distances(x_fine->Q, x_fine->omega_body, Q, omega);
-      e.step_ratio = 0.5, e.observed_order = p;
-      for (std::size_t c = 0; c < 2; ++c) {
-        const double pc = df[c] > 0 ? observed_order(d1[c] / df[c], 2, 4, p) : p;
-        e.observed_order = std::min(e.observed_order, pc);
-        est[c] = df[c] * std::pow(2, pc) / (std::pow(2, pc) - 1);
-      }
-    }
-  } else {
-    // too few steps, or the coarser run failed: the run at half the step, at the declared order
-    std::string why_fine;
-    x_fine = spin_companion(setup, 2 * setup.steps, e.cpu_s, why_fine, stop);
-    if (!x_fine) {
-      why = why.empty() ? why_fine : why + "; " + why_fine;
-      return std::nullopt;
-    }
-    why.clear();
-    e.step_ratio = 0.5, e.observed_order = p;
-    const auto d = spin_distances(x_fine->Q, x_fine->omega_body, Q, omega);
-    for (std::size_t c = 0; c < 2; ++c) est[c] = d[c] * std::pow(2, p) / (std::pow(2, p) - 1);
-  }
+  const auto run = [&](long steps, std::string& failed) { return spin_companion(setup, steps, e.cpu_s, failed, stop); };
+  const auto distance = [](const spin_result& a, const spin_result& b) { return spin_distances(a.Q, a.omega_body, b.Q, b.omega_body); };
+  spin_result end;
+  end.Q = Q, end.omega_body = omega;
+  const auto r = estimate_by_companions<2>(setup.steps, p, end, run, distance, why);
+  if (!r) return std::nullopt;
+  const auto& est = r->error;
+  e.observed_order = r->observed_order, e.step_ratio = r->step_ratio;
   e.attitude_rad = est[0], e.spin_rate_rel = est[1];
   return e;
 }

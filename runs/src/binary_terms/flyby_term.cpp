@@ -23,13 +23,14 @@
 #include "rotlie/runs/binary_terms.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/schemes/message_number.hpp"
+#include "term_geometry.hpp"
 
 namespace rotlie::runs {
 
 namespace {
 
-using models::mat3;
 using models::vec3;
+using term_geometry::inertial_inertia;
 
 class planetary_flyby final : public registered_term {
  public:
@@ -40,11 +41,8 @@ class planetary_flyby final : public registered_term {
         share_{sys.body(1).mass / sys.total_mass(), sys.body(0).mass / sys.total_mass()},
         mass_{sys.body(0).mass, sys.body(1).mass},
         moments_{sys.moments(0), sys.moments(1)} {
-    const double q = p[1], v_inf = p[2], i = p[3] * degree, node = p[4] * degree, peri = p[5] * degree;
-    // perifocal → inertial: R₃(Ω) R₁(i) R₃(ω)
-    const double cO = std::cos(node), sO = std::sin(node), ci = std::cos(i), si = std::sin(i), cw = std::cos(peri), sw = std::sin(peri);
-    const vec3<double> P{cO * cw - sO * sw * ci, sO * cw + cO * sw * ci, sw * si};
-    const vec3<double> Q{-cO * sw - sO * cw * ci, -sO * sw + cO * cw * ci, cw * si};
+    const double q = p[1], v_inf = p[2];
+    const auto [P, Q] = term_geometry::perifocal_axes_of(p[3], p[4], p[5]);
     const double v_q = std::sqrt(v_inf * v_inf + 2 * GM_ / q);
     for (std::size_t c = 0; c < 3; ++c) r_q_[c] = q * P[c], v_q_[c] = v_q * Q[c];
   }
@@ -107,15 +105,6 @@ class planetary_flyby final : public registered_term {
   }
 
  private:
-  static constexpr double degree = 0.017453292519943295;  // π/180
-
-  static mat3<double> inertial_inertia(const mat3<double>& Q, const vec3<double>& I) {
-    mat3<double> QI = Q;
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) QI(r, c) *= I[static_cast<std::size_t>(c)];
-    return QI * transpose(Q);
-  }
-
   double Gm_, GM_, tq_;
   double share_[2];  // m₂/M, m₁/M: x₁ = −share₀ r, x₂ = share₁ r
   double mass_[2];

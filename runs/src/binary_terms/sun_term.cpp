@@ -13,13 +13,15 @@
 #include "rotlie/runs/binary_terms.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/schemes/message_number.hpp"
+#include "term_geometry.hpp"
 
 namespace rotlie::runs {
 
 namespace {
 
-using models::mat3;
 using models::vec3;
+using term_geometry::degree;
+using term_geometry::inertial_inertia;
 
 constexpr double GM_sun = 1.32712440018e11;  // km³ s⁻²
 constexpr double au_km = 149597870.7;
@@ -29,11 +31,8 @@ class sun_tide final : public registered_term {
   sun_tide(const std::vector<double>& p, const models::binary_system<double>& sys)
       : a_(p[0] * au_km), orbit_(p[1]), M0_(p[5] * degree), mu_(sys.reduced_mass()), moments_{sys.moments(0), sys.moments(1)} {
     n_ = std::sqrt(GM_sun / (a_ * a_ * a_));
-    const double i = p[2] * degree, node = p[3] * degree, peri = p[4] * degree;
-    // perifocal → inertial: R₃(Ω) R₁(i) R₃(ω)
-    const double cO = std::cos(node), sO = std::sin(node), ci = std::cos(i), si = std::sin(i), cw = std::cos(peri), sw = std::sin(peri);
-    P_ = {cO * cw - sO * sw * ci, sO * cw + cO * sw * ci, sw * si};
-    Qv_ = {-cO * sw - sO * cw * ci, -sO * sw + cO * cw * ci, cw * si};
+    const auto axes = term_geometry::perifocal_axes_of(p[2], p[3], p[4]);
+    P_ = axes.P, Qv_ = axes.Q;
   }
 
   bool time_dependent() const override { return true; }
@@ -68,15 +67,6 @@ class sun_tide final : public registered_term {
   }
 
  private:
-  static constexpr double degree = 0.017453292519943295;  // π/180
-
-  static mat3<double> inertial_inertia(const mat3<double>& Q, const vec3<double>& I) {
-    mat3<double> QI = Q;
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) QI(r, c) *= I[static_cast<std::size_t>(c)];
-    return QI * transpose(Q);
-  }
-
   double a_;
   models::kepler_orbit<double> orbit_;
   double M0_, n_ = 0, mu_;

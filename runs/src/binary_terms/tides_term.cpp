@@ -11,6 +11,7 @@
 #include <cmath>
 #include <memory>
 
+#include "rotlie/models/rigid_body.hpp"
 #include "rotlie/runs/binary_terms.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/schemes/message_number.hpp"
@@ -66,12 +67,7 @@ class constant_lag_tides final : public registered_term {
 
  private:
   /// ω_k in the inertial frame: Q_k I_k⁻¹ G_k.
-  vec3<double> spin_of(const models::binary_state<double>& x, int k) const {
-    const auto& G = x.body[k].G;
-    const auto& I = moments_[k];
-    const vec3<double> w{G[0] / I[0], G[1] / I[1], G[2] / I[2]};
-    return x.body[k].Q * w;
-  }
+  vec3<double> spin_of(const models::binary_state<double>& x, int k) const { return x.body[k].Q * models::angular_velocity(moments_[k], x.body[k].G); }
 
   double G_;
   double mass_[2]{}, radius_[2]{}, love_[2]{}, lag_[2]{};

@@ -38,11 +38,6 @@ std::optional<binary_error_estimate> estimate_binary_error(const binary_setup& s
 std::optional<binary_error_estimate> estimate_contact_error(const binary_setup& setup, long step, const models::binary_state<double>& touching,
                                                             std::string& why, const std::function<bool()>& stop = {});
 
-/// The order three runs of one method show (Richardson's check): the p in [1, declared] for which
-/// (ρ2^p − ρ1^p)/(ρ1^p − 1) = q, q the ratio of the distances (ρ2h, ρ1h) and (ρ1h, h) of their final
-/// states (the ratio grows with p; it is 2^p at ρ1 = 2, ρ2 = 4).
-double observed_order(double q, double rho1, double rho2, int declared);
-
 /// The angle of the rotation Aᵀ B, rad.
 double rotation_angle(const models::mat3<double>& A, const models::mat3<double>& B);
 
