@@ -5,7 +5,6 @@ import math
 import os
 import pathlib
 import signal
-import subprocess
 import time
 
 DIDYMOS = ["binary", "--system", "didymos"]
@@ -184,21 +183,9 @@ print(json.dumps(out))
 
 def python_binary(R, quick):
     cls = "python binary"
-    package = pathlib.Path(R.binary).parent.parent / "python"
-    if not (package / "rotlie").is_dir():
-        print(f"python binary: skipped (no package at {package})")
+    out = R.python_cases(cls, PYTHON_BINARY, timeout=120)  # a hang means Ctrl-C did not stop the run
+    if out is None:
         return
-    env = {**os.environ, "PYTHONPATH": str(package), "PYTHONDONTWRITEBYTECODE": "1"}
-    R.commands += 1
-    try:
-        p = subprocess.run(["/usr/bin/python3", "-c", PYTHON_BINARY], capture_output=True, text=True, timeout=120, env=env)
-    except subprocess.TimeoutExpired:
-        R.record(cls, "the Python binary cases", "hung (timeout): Ctrl-C did not stop the run")
-        return
-    if p.returncode != 0:
-        R.record(cls, "the Python binary cases", f"the interpreter ended with {p.returncode}: {p.stderr[-300:]!r}")
-        return
-    out = json.loads(p.stdout)
     s = out.pop("interrupt_s")
     R.record(cls, f"Ctrl-C ends a 3e7-step rotlie.binary ({s if s is None else round(s, 3)} s)", None if s is not None and s < 0.5 else "not within 0.5 s")
     n = out.pop("next_call_s")

@@ -157,6 +157,25 @@ class Replay:
         d.mkdir(parents=True)
         return d
 
+    def python_cases(self, cls, code, timeout):
+        """Runs `code` under /usr/bin/python3 with the package built beside the binary; returns the JSON it
+        prints, or None (the package is absent: said; the interpreter hung or failed: recorded)."""
+        package = pathlib.Path(self.binary).parent.parent / "python"
+        if not (package / "rotlie").is_dir():
+            print(f"{cls}: skipped (no package at {package})")
+            return None
+        env = {**os.environ, "PYTHONPATH": str(package), "PYTHONDONTWRITEBYTECODE": "1"}
+        self.commands += 1
+        try:
+            p = subprocess.run(["/usr/bin/python3", "-c", code], capture_output=True, text=True, timeout=timeout, env=env)
+        except subprocess.TimeoutExpired:
+            self.record(cls, "the Python cases", "hung (timeout)")
+            return None
+        if p.returncode != 0:
+            self.record(cls, "the Python cases", f"the interpreter ended with {p.returncode}: {p.stderr[-300:]!r}")
+            return None
+        return json.loads(p.stdout)
+
     @staticmethod
     def leftovers(folder, keep):
         """Files in folder other than the expected ones (temporaries of a killed run)."""
@@ -562,21 +581,10 @@ print(json.dumps(out))
 
 def python_surface(R, quick):
     cls = "python"
-    package = pathlib.Path(R.binary).parent.parent / "python"
-    if not (package / "rotlie").is_dir():
-        print(f"python: skipped (no package at {package})")
+    out = R.python_cases(cls, PYTHON_CASES, timeout=300)
+    if out is None:
         return
-    env = {**os.environ, "PYTHONPATH": str(package), "PYTHONDONTWRITEBYTECODE": "1"}
-    R.commands += 1
-    try:
-        p = subprocess.run(["/usr/bin/python3", "-c", PYTHON_CASES], capture_output=True, text=True, timeout=300, env=env)
-    except subprocess.TimeoutExpired:
-        R.record(cls, "the Python cases", "hung (timeout)")
-        return
-    if p.returncode != 0:
-        R.record(cls, "the Python cases", f"the interpreter ended with {p.returncode}: {p.stderr[-300:]!r}")
-        return
-    for name, (kind, message) in json.loads(p.stdout).items():
+    for name, (kind, message) in out.items():
         if kind == "returned":
             R.record(cls, name, "returned where it had to raise", silent=True)
         elif "\n" in message.strip() or not message:
