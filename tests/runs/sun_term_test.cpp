@@ -22,11 +22,16 @@
 #include "rotlie/models/odeint_warnings_restore.hpp"
 
 #include "rotlie/runs/binary_simulation.hpp"
+#include "binary_term_checks.hpp"
 #include "rotlie/runs/binary_terms.hpp"
 
 BOOST_AUTO_TEST_SUITE(sun_term_test)
 
 using namespace rotlie;
+using test::pair_setup;
+using test::rotation;
+using test::term_potential;
+using test::torque_gradient_error;
 
 namespace {
 
@@ -115,38 +120,15 @@ double apart(const vec3<double>& x, const vec3<double>& y) { return models::norm
 
 vec3<double> vector_of(const nlohmann::json& j) { return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()}; }
 
-/// The turn by `angle` about the unit axis u (Rodrigues).
-models::mat3<double> rotation(const vec3<double>& u, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  models::mat3<double> R;
-  for (int r = 0; r < 3; ++r)
-    for (int k = 0; k < 3; ++k) R(r, k) = (r == k ? c : 0) + (1 - c) * u[static_cast<std::size_t>(r)] * u[static_cast<std::size_t>(k)];
-  R(0, 1) -= s * u[2], R(1, 0) += s * u[2];
-  R(0, 2) += s * u[1], R(2, 0) -= s * u[1];
-  R(1, 2) -= s * u[0], R(2, 1) += s * u[0];
-  return R;
-}
 
 vec3<double> unit(const vec3<double>& x) { return scaled(x, 1 / models::norm(x)); }
 
-// A triaxial pair of comparable bodies (the torques on both are of one size) on the circular start.
-runs::binary_setup pair_setup() {
-  runs::binary_request r;
-  r.primary = "ellipsoid:0.45,0.3,0.2", r.secondary = "ellipsoid:0.35,0.25,0.15", r.density = "2000", r.separation = "1.5";
-  r.integrator = "SIER4", r.T = "0";
-  return runs::binary_setup_of(r);
-}
 
 std::shared_ptr<const runs::registered_term> sun_for(const elements& el, const models::binary_system<double>& sys) {
   std::vector<double> values{el.a_au, el.e, el.i, el.node, el.peri, el.M0};
   return runs::binary_term_named("sun")->make(values, sys);
 }
 
-double potential(const runs::registered_term& term, const models::binary_state<double>& x, double t) {
-  models::mutual_gravity<double> f;
-  term.add(x, t, f);
-  return f.U;
-}
 
 }  // namespace
 
@@ -284,26 +266,11 @@ BOOST_AUTO_TEST_CASE(force_and_torques_are_the_potentials_derivatives) {
   for (std::size_t k = 0; k < 3; ++k) {
     auto ahead = x, behind = x;
     ahead.r[k] += dr, behind.r[k] -= dr;
-    const double slope = (potential(*term, ahead, t) - potential(*term, behind, t)) / (2 * dr);
+    const double slope = (term_potential(*term, ahead, t) - term_potential(*term, behind, t)) / (2 * dr);
     worst_F = std::max(worst_F, std::abs(-slope - f.F[k]) / models::norm(f.F));
   }
   // a turn δ of body k about the inertial axis j, Q → R(δ ê_j) Q, changes U by −M_j δ (a fourth-order stencil)
-  const double d = 1e-3;
-  double worst_M = 0;
-  for (int body = 0; body < 2; ++body) {
-    const auto& M = body == 0 ? f.M1 : f.M2;
-    for (std::size_t j = 0; j < 3; ++j) {
-      vec3<double> axis{};
-      axis[j] = 1;
-      const auto U = [&](double delta) {
-        auto y = x;
-        y.body[body].Q = rotation(axis, delta) * x.body[body].Q;
-        return potential(*term, y, t);
-      };
-      const double slope = (8 * (U(d) - U(-d)) - (U(2 * d) - U(-2 * d))) / (12 * d);
-      worst_M = std::max(worst_M, std::abs(-slope - M[j]) / models::norm(M));
-    }
-  }
+  const double worst_M = torque_gradient_error(*term, x, t, f);
   BOOST_TEST_MESSAGE("F against −∂U/∂r: " << worst_F << "; M against −∂U/∂θ: " << worst_M << " (relative)");
   // round-off: U's ε over the difference's step (the stencil's δ⁴ term is below it)
   BOOST_TEST(worst_F < 1e-12);
