@@ -27,10 +27,11 @@ class constant_lag_tides final : public registered_term {
   constant_lag_tides(const std::vector<double>& p, const models::binary_system<double>& sys) : G_(sys.G()) {
     for (int k = 0; k < 2; ++k) {
       const auto& I = sys.moments(k);
-      mass_[k] = sys.body(k).mass;
-      radius_[k] = std::sqrt(5 * (I[0] + I[1] + I[2]) / (6 * mass_[k]));
-      moments_[k] = I;
+      radius_[k] = std::sqrt(5 * (I[0] + I[1] + I[2]) / (6 * sys.body(k).mass));
       love_[k] = p[2 * static_cast<std::size_t>(k)];
+      // k₂ G m² R⁵ with m the other body's mass: the tide's strength, fixed for the run
+      scale_[k] = love_[k] * G_ * sys.body(1 - k).mass * sys.body(1 - k).mass * std::pow(radius_[k], 5);
+      moments_[k] = I;
       lag_[k] = p[2 * static_cast<std::size_t>(k) + 1];
     }
   }
@@ -43,8 +44,8 @@ class constant_lag_tides final : public registered_term {
       if (love_[k] == 0) continue;
       const double sign = k == 0 ? 1.0 : -1.0;  // ρ from body k to the other
       const vec3<double> rho{sign * x.r[0], sign * x.r[1], sign * x.r[2]}, rho_dot{sign * x.v[0], sign * x.v[1], sign * x.v[2]};
-      const double m = mass_[1 - k], d2 = models::dot(rho, rho);
-      const double R5 = std::pow(radius_[k], 5), strength = 3 * love_[k] * G_ * m * m * R5 / (d2 * d2 * d2 * d2 * d2);
+      const double d2 = models::dot(rho, rho);
+      const double strength = 3 * scale_[k] / (d2 * d2 * d2 * d2 * d2);
       const auto spin = spin_of(x, k);
       const auto rho_x_spin = models::cross(rho, spin);
       const double rr = models::dot(rho, rho_dot);
@@ -55,7 +56,7 @@ class constant_lag_tides final : public registered_term {
       const auto torque = models::cross(rho, F);
       auto& M = k == 0 ? f.M1 : f.M2;
       for (std::size_t c = 0; c < 3; ++c) M[c] -= torque[c];
-      f.U += -love_[k] * G_ * m * m * R5 / (2 * d2 * d2 * d2);
+      f.U += -scale_[k] / (2 * d2 * d2 * d2);
     }
   }
 
@@ -70,7 +71,7 @@ class constant_lag_tides final : public registered_term {
   vec3<double> spin_of(const models::binary_state<double>& x, int k) const { return x.body[k].Q * models::angular_velocity(moments_[k], x.body[k].G); }
 
   double G_;
-  double mass_[2]{}, radius_[2]{}, love_[2]{}, lag_[2]{};
+  double radius_[2]{}, love_[2]{}, lag_[2]{}, scale_[2]{};
   vec3<double> moments_[2]{};
 };
 
