@@ -131,14 +131,10 @@ inline rigid_bodies_state<double> liquid_water_start(const liquid_water_run_opti
   const long steps = std::lround(o.equilibration_ps * 1000 / o.equilibration_h_fs);
   with_md_integrator(md_integrator_of("MRDL", "Strang-TV", mrdl_rotor_table), nullptr, model.mass, model.moments, w, [&](const auto& method) {
     // the lattice start is far from equilibrium: a shorter step and a tight coupling first
-    const auto poll = [&o] {
-      if (o.poll) o.poll();
-    };
-    equilibrate(method, s, o.equilibration_h_fs / 4, 400, o.kelvin, 10.0, [&](long, double, double) { poll(); }, 1);
+    equilibrate(method, s, o.equilibration_h_fs / 4, 400, o.kelvin, 10.0, [](long, double, double) {}, 100, o.poll);
     equilibrate(method, s, o.equilibration_h_fs, steps, o.kelvin, o.berendsen_tau_fs, [&](long k, double T, double v) {
-      poll();
-      if (progress && k % 500 == 0) progress("equilibration " + schemes::message_number(static_cast<double>(k) * o.equilibration_h_fs / 1000) + " ps: T = " + schemes::message_number(T) + " K, V/N = " + schemes::message_number(v) + " kcal/mol");
-    }, 1);
+      if (progress) progress("equilibration " + schemes::message_number(static_cast<double>(k) * o.equilibration_h_fs / 1000) + " ps: T = " + schemes::message_number(T) + " K, V/N = " + schemes::message_number(v) + " kcal/mol");
+    }, 500, o.poll);
     return 0;
   });
   if (!o.state_file.empty()) {

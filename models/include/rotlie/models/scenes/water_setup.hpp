@@ -5,6 +5,7 @@
 // is used: production runs are NVE).
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <random>
 #include <stdexcept>
 
@@ -92,10 +93,12 @@ void berendsen_scale(rigid_bodies_state<T>& s, const T& current, const T& target
 /// progress(k) is called every `every` steps and may be empty.
 template <class Composition, class Progress>
 void equilibrate(const Composition& method, typename Composition::state& s, const typename Composition::scalar& h, long steps,
-                 const typename Composition::scalar& kelvin, const typename Composition::scalar& tau, Progress&& progress, long every = 100) {
+                 const typename Composition::scalar& kelvin, const typename Composition::scalar& tau, Progress&& progress, long every = 100,
+                 const std::function<void()>& poll = {}) {
   const auto& sys = method.system();
   const long n = static_cast<long>(s.bodies.size());
   for (long k = 1; k <= steps; ++k) {
+    if (poll) poll();  // every step, apart from progress: its potential energy costs a force evaluation
     method.step(s, h);
     berendsen_scale(s, temperature_of(sys.kinetic_energy(s), n), kelvin, h, tau);
     if (k % every == 0) progress(k, temperature_of(sys.kinetic_energy(s), n), sys.potential_energy(s) / typename Composition::scalar(n));
