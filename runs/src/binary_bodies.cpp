@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "rotlie/models/rigid_bodies.hpp"
+#include "rotlie/models/scenes/monomial_moments.hpp"
+#include "rotlie/models/scenes/polyhedron_moments.hpp"
 #include "rotlie/runs/numeric_inputs.hpp"
 #include "rotlie/runs/output_file.hpp"
 #include "rotlie/runs/text_file.hpp"
@@ -274,14 +276,28 @@ binary_body with_density(binary_body b, double density) {
   b.density = density;
   const double mass = density * m3_per_km3 * b.volume;
   if (b.kind == "ellipsoid") {
-    b.body = models::ellipsoid_body(mass, b.semi_axes[0], b.semi_axes[1], b.semi_axes[2]);
+    b.body = models::ellipsoid_body(mass, b.semi_axes[0], b.semi_axes[1], b.semi_axes[2], 4);
   } else {
     const double scale = density * m3_per_km3;  // the integrals were taken at unit density (kg/km³)
     b.body.mass = mass;
     for (auto& x : b.body.inertia.a) x *= scale;
     for (auto& x : b.body.third) x *= scale;
     for (auto& x : b.body.fourth) x *= scale;
+    for (auto& x : b.body.moments) x *= scale;
   }
+  return b;
+}
+
+binary_body with_degree(binary_body b, int degree) {
+  if (degree <= 4 || b.body.degree >= degree) return b;
+  if (b.kind == "ellipsoid") {
+    b.body.moments = models::ellipsoid_moments(b.body.mass, b.semi_axes[0], b.semi_axes[1], b.semi_axes[2], degree);
+  } else {
+    // the shape is kept in its principal frame about its centroid
+    b.body.moments = models::polyhedron_monomial_moments<double>(b.shape, {}, models::mat3<double>::identity(), degree);
+    for (auto& x : b.body.moments) x *= b.density * m3_per_km3;
+  }
+  b.body.degree = degree;
   return b;
 }
 

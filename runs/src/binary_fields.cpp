@@ -39,7 +39,7 @@ std::vector<binary_field> all_fields() {
   f.push_back(text("secondary", "SHAPE", "str | None", "None", "As primary", &binary_request::secondary));
   f.push_back(text("density", "RHO|RHO1,RHO2", "float | tuple[float, float] | None", "None", "kg/m3: one value for both bodies, or RHO1,RHO2", &binary_request::density, field_kind::numbers));
   f.push_back(text("mass", "M1,M2", "tuple[float, float] | None", "None", "M1,M2 in kg (instead of the density)", &binary_request::mass, field_kind::numbers));
-  f.push_back(text("order", "ORDER", "int", "2", "Truncation of the mutual potential in the inertia integrals: 0, 2 or 4", &binary_request::order, field_kind::integer));
+  f.push_back(text("order", "ORDER", "int", "2", "Truncation of the mutual potential by the inertia integrals' total degree: 0 to 16 (0 point masses, 2 MacCullagh)", &binary_request::order, field_kind::integer));
   f.push_back(text("G", "NUMBER", "float | str", "'6.67430e-20'", "Gravitational constant in km3 kg-1 s-2", &binary_request::G, field_kind::number));
   f.push_back(text("separation", "KM", "float | None", "None",
                    "km: a circular mutual orbit in the primary's equatorial plane, frames aligned, the secondary synchronous (its long axis at the "

@@ -124,8 +124,9 @@ binary_setup binary_setup_of(const binary_request& given) {
     s.primary = with_mass(s.primary, m[0]);
     s.secondary = with_mass(s.secondary, m[1]);
   }
-  s.order = static_cast<int>(integer_in_range(r.order, "--order", 0, 4));
-  if (s.order % 2) throw bad_input("--order must be 0, 2 or 4, got '" + one_line(r.order) + "'");
+  s.order = static_cast<int>(integer_in_range(r.order, "--order", 0, models::max_gravity_order));
+  s.primary = with_degree(std::move(s.primary), s.order);
+  s.secondary = with_degree(std::move(s.secondary), s.order);
   s.G = positive_number(r.G, "--G");
   if (!r.force) check_G_units(s.G, r.G);
   const auto sys = s.system_model();

@@ -10,6 +10,7 @@
 #include <limits>
 #include <random>
 
+#include "point_clusters.hpp"
 #include "random_seed.hpp"
 #include "rotlie/models/md_integrators.hpp"
 #include "rotlie/models/scenes/spin_orbit.hpp"
@@ -22,6 +23,10 @@ using namespace rotlie::models;
 using ld = long double;
 
 namespace {
+
+using rotlie::test::point_cluster;
+using rotlie::test::random_cluster;
+using rotlie::test::exact_cluster_potential;
 
 struct pair_setup {
   gravitating_body<ld> b1, b2;
@@ -50,30 +55,6 @@ pair_setup random_pair(std::mt19937_64& rng) {
 
 ld norm(const vec3<ld>& v) { return std::sqrt(dot(v, v)); }
 
-// A body made of point masses: its integrals are sums, Σ m ρ^⊗k about the centre of mass, and its
-// mutual potential with another such body is exactly Σ −G mᵢ mⱼ / |xⱼ − xᵢ|.
-struct point_cluster {
-  std::vector<ld> m;
-  std::vector<vec3<ld>> x;  // about the centre of mass, body frame
-};
-
-point_cluster random_cluster(std::mt19937_64& rng, ld mass, ld size, int points) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  point_cluster c;
-  vec3<ld> centre{};
-  ld total = 0;
-  for (int i = 0; i < points; ++i) {
-    c.m.push_back(1 + 0.5L * u(rng));
-    c.x.push_back({size * u(rng), 0.8L * size * u(rng), 0.6L * size * u(rng)});
-    total += c.m.back();
-    for (std::size_t k = 0; k < 3; ++k) centre[k] += c.m.back() * c.x.back()[k];
-  }
-  for (int i = 0; i < points; ++i) {
-    c.m[static_cast<std::size_t>(i)] *= mass / total;
-    for (std::size_t k = 0; k < 3; ++k) c.x[static_cast<std::size_t>(i)][k] -= centre[k] / total;
-  }
-  return c;
-}
 
 template <int K>
 tensor3<ld, K> cluster_integral(const point_cluster& c) {
@@ -103,16 +84,6 @@ gravitating_body<ld> cluster_body(const point_cluster& c) {
 
 gravitating_body<ld> lopsided_cluster(std::mt19937_64& rng, ld mass, ld size) { return cluster_body(random_cluster(rng, mass, size, 7)); }
 
-ld exact_cluster_potential(const point_cluster& c1, const mat3<ld>& Q1, const point_cluster& c2, const mat3<ld>& Q2, const vec3<ld>& r) {
-  ld U = 0;
-  for (std::size_t i = 0; i < c1.m.size(); ++i)
-    for (std::size_t j = 0; j < c2.m.size(); ++j) {
-      const auto a = Q1 * c1.x[i], b = Q2 * c2.x[j];
-      const vec3<ld> d{r[0] + b[0] - a[0], r[1] + b[1] - a[1], r[2] + b[2] - a[2]};
-      U -= c1.m[i] * c2.m[j] / norm(d);
-    }
-  return U;
-}
 
 }  // namespace
 
@@ -366,7 +337,8 @@ BOOST_AUTO_TEST_CASE(a_small_body_about_a_point_mass_is_the_spin_orbit_scene) {
 BOOST_AUTO_TEST_CASE(an_unknown_order_is_refused) {
   const gravitating_body<double> b{1.0, {}};
   const auto I = mat3<double>::identity();
-  BOOST_CHECK_THROW(mutual_gravity_at(b, I, b, I, vec3<double>{1, 0, 0}, 1.0, 3), std::invalid_argument);
+  BOOST_CHECK_THROW(mutual_gravity_at(b, I, b, I, vec3<double>{1, 0, 0}, 1.0, -2), std::invalid_argument);
+  BOOST_CHECK_THROW(mutual_gravity_at(b, I, b, I, vec3<double>{1, 0, 0}, 1.0, max_gravity_order + 1), std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_CASE(order_four_refuses_a_body_given_by_its_inertia_alone) {

@@ -36,6 +36,9 @@ binary_body binary_shape_named(const std::string& spec, const std::string& optio
 /// The shape given its density in kg/m³ (mass = density × 10⁹ × volume in km³) or its mass in kg.
 binary_body with_density(binary_body shape, double density_kg_m3);
 binary_body with_mass(binary_body shape, double mass_kg);
+/// The body with its inertia integrals to `degree` (kg·km^k): above 4 its monomial moments, exact for
+/// an ellipsoid (closed form) and a polyhedron (its tetrahedra), after its density is set.
+binary_body with_degree(binary_body body, int degree);
 
 /// A shape model's text (OBJ or the plain form); `name` names it in messages. Throws bad_input naming the
 /// line of a coordinate that is not a number or beyond 1e20 km in size, or vertices spanning less than

@@ -32,7 +32,7 @@ struct binary_request {
   std::string primary, secondary;       ///< ellipsoid:a,b,c | polyhedron:FILE
   std::string density;                  ///< kg/m³: one value for both, or two
   std::string mass;                     ///< kg: M1,M2 (instead of the density)
-  std::string order = "2";              ///< 0, 2 or 4
+  std::string order = "2";              ///< 0 to 16 (the inertia integrals' total degree)
   std::string G = "6.67430e-20";        ///< km³ kg⁻¹ s⁻²
   std::string separation;               ///< km: the circular start
   std::string primary_period;           ///< hours: the primary's spin in the circular start

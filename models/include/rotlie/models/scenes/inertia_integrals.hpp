@@ -6,6 +6,7 @@
 // vanish about the centre of mass. Homogeneous ellipsoids here; polyhedra in polyhedron_body.hpp.
 #include <array>
 #include <cstddef>
+#include <vector>
 
 #include "rotlie/models/small_matrix.hpp"
 
@@ -17,9 +18,11 @@ constexpr std::size_t power_of_three(int k) { return k == 0 ? 1 : 3 * power_of_t
 template <class T, int K>
 using tensor3 = std::array<T, power_of_three(K)>;
 
-/// A rigid body for the mutual gravity: its mass, inertia tensor and, when `degree` is 4, its third-
-/// and fourth-degree integrals (all in its body frame, about its centre of mass). `degree` says which
-/// integrals are known: 2 for a body given by its inertia alone (order 4 refuses it, unless it is a point).
+/// A rigid body for the mutual gravity: its mass, inertia tensor and, when `degree` is 4 or more, its
+/// third- and fourth-degree integrals (all in its body frame, about its centre of mass). `degree` says
+/// which integrals are known: 2 for a body given by its inertia alone (higher orders refuse it, unless it
+/// is a point). Above degree 4 `moments` holds every degree 0…degree as monomial moments
+/// (monomial_moments.hpp), the lower ones equal to the tensors'.
 template <class T>
 struct gravitating_body {
   T mass{};
@@ -27,6 +30,7 @@ struct gravitating_body {
   tensor3<T, 3> third{};
   tensor3<T, 4> fourth{};
   int degree = 2;
+  std::vector<T> moments{};
 };
 
 /// J = ∫ ρρᵀ dm from the inertia tensor: J = (tr I / 2)·1 − I.

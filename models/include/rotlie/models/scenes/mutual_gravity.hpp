@@ -1,7 +1,8 @@
 #pragma once
 // The mutual gravity of two rigid bodies (the full two-body problem of binary asteroids), expanded in
-// the bodies' inertia integrals T^(k) (inertia_integrals.hpp) and truncated by total degree N = 0, 2, 4
-// (Hou, Scheeres & Xin 2017). With ρ₁, ρ₂ the mass elements' offsets from the centres (inertial frame)
+// the bodies' inertia integrals T^(k) (inertia_integrals.hpp) and truncated by total degree N (Hou,
+// Scheeres & Xin 2017): written out on full tensors for N = 0, 2, 4 (below, the fast path), any N to
+// max_gravity_order by the series on monomial moments (mutual_gravity_series.hpp). With ρ₁, ρ₂ the mass elements' offsets from the centres (inertial frame)
 // and r = x₂ − x₁, 1/|r + ρ₂ − ρ₁| expanded in Taylor series about r gives
 //   U = −G Σ_n (1/n!) ⟨Dₙ, Sₙ⟩,  Dₙ = ∂ⁿ(1/r),  Sₙ = Σ_k C(n,k) (−1)^(n−k) T₂^(k) ⊗ T₁^(n−k),
 // so that, with T^(0) = M and T^(1) = 0,
@@ -19,6 +20,7 @@
 
 #include "rotlie/models/rigid_bodies.hpp"
 #include "rotlie/models/scenes/inertia_integrals.hpp"
+#include "rotlie/models/scenes/mutual_gravity_series.hpp"
 #include "rotlie/models/small_matrix.hpp"
 
 namespace rotlie::models {
@@ -30,11 +32,15 @@ struct mutual_gravity {
   vec3<T> F{}, M1{}, M2{};
 };
 
-/// Throws std::invalid_argument unless the expansion is written at this order.
+/// Throws std::invalid_argument unless the expansion can be taken to this order.
 inline void check_gravity_order(int order) {
-  if (order != 0 && order != 2 && order != 4)
-    throw std::invalid_argument("mutual gravity: order " + std::to_string(order) + " (0, 2 or 4)");
+  if (order < 0 || order > max_gravity_order)
+    throw std::invalid_argument("mutual gravity: order " + std::to_string(order) + " (0 to " + std::to_string(max_gravity_order) + ")");
 }
+
+/// Whether the order is evaluated written out on full tensors rather than summed as the series: the
+/// series is faster from order 4 on (1.0 µs against 4.6 µs an evaluation at order 4, bench/gravity_bench.cpp).
+inline bool gravity_order_written_out(int order) { return order == 0 || order == 2; }
 
 /// Throws std::invalid_argument when the body lacks the integrals the order needs (a point mass has them all).
 template <class T>
@@ -44,6 +50,8 @@ void check_body_integrals(const gravitating_body<T>& body, int order, const std:
   if (order > body.degree && !point)
     throw std::invalid_argument("mutual gravity at order " + std::to_string(order) + ": the " + name + " is given by its integrals to degree " +
                                 std::to_string(body.degree) + " only");
+  if (order > 4 && !point && body.moments.size() < static_cast<std::size_t>(monomials_up_to(order)))
+    throw std::invalid_argument("mutual gravity at order " + std::to_string(order) + ": the " + name + " carries no moments of degree above 4");
 }
 
 namespace gravity_detail {
@@ -134,13 +142,14 @@ void add_torque(vec3<T>& M, const tensor3<T, K>& A, const tensor3<T, K>& t) {
 
 }  // namespace gravity_detail
 
-/// The mutual potential, force and torques truncated at `order` (0, 2 or 4). Without the point masses'
-/// term (`point_masses` false) what is left is U − U₀, the perturbation of a Kepler split.
+/// The expansion written out on full tensors at order 0, 2 or 4 (the series' second code, and the
+/// faster one at orders 0 and 2).
 template <class T>
-mutual_gravity<T> mutual_gravity_at(const gravitating_body<T>& b1, const mat3<T>& Q1, const gravitating_body<T>& b2, const mat3<T>& Q2,
-                                    const vec3<T>& r, const T& G, int order, bool point_masses = true) {
+mutual_gravity<T> mutual_gravity_written_out(const gravitating_body<T>& b1, const mat3<T>& Q1, const gravitating_body<T>& b2, const mat3<T>& Q2,
+                                             const vec3<T>& r, const T& G, int order, bool point_masses = true) {
   using namespace gravity_detail;
-  check_gravity_order(order);
+  if (order != 0 && order != 2 && order != 4)
+    throw std::invalid_argument("mutual gravity written out: order " + std::to_string(order) + " (0, 2 or 4)");
   using std::sqrt;
   const T inverse_r = 1 / sqrt(dot(r, r));
   const T m1 = b1.mass, m2 = b2.mass;
@@ -188,6 +197,20 @@ mutual_gravity<T> mutual_gravity_at(const gravitating_body<T>& b1, const mat3<T>
   }
   add_torque<T, 2>(out.M1, A1, J1);
   add_torque<T, 2>(out.M2, A2, J2);
+  return out;
+}
+
+/// The mutual potential, force and torques truncated at `order` (0 to max_gravity_order). Without the
+/// point masses' term (`point_masses` false) what is left is U − U₀, the perturbation of a Kepler split.
+template <class T>
+mutual_gravity<T> mutual_gravity_at(const gravitating_body<T>& b1, const mat3<T>& Q1, const gravitating_body<T>& b2, const mat3<T>& Q2,
+                                    const vec3<T>& r, const T& G, int order, bool point_masses = true) {
+  check_gravity_order(order);
+  if (gravity_order_written_out(order)) return mutual_gravity_written_out(b1, Q1, b2, Q2, r, G, order, point_masses);
+  check_body_integrals(b1, order, "primary");
+  check_body_integrals(b2, order, "secondary");
+  mutual_gravity<T> out;
+  mutual_gravity_series(b1, Q1, b2, Q2, r, G, order, point_masses, out.U, out.F, out.M1, out.M2);
   return out;
 }
 

@@ -21,6 +21,7 @@
 
 #include "rotlie/models/scenes/inertia_integrals.hpp"
 #include "rotlie/models/scenes/polyhedron_check.hpp"
+#include "rotlie/models/scenes/polyhedron_moments.hpp"
 #include "rotlie/models/small_matrix.hpp"
 
 namespace rotlie::models {
@@ -110,10 +111,10 @@ mat3<T> symmetric_eigenvectors(mat3<T> a) {
 }  // namespace polyhedron_detail
 
 /// The homogeneous polyhedron of this density (kg per km³ when the vertices are in km) as a body,
-/// its integrals exact to round-off. Throws std::invalid_argument for a mesh check_polyhedron refuses
-/// or one whose volume is not positive (facets facing inward).
+/// its integrals exact to round-off, to `degree` (above 4 as moments too). Throws std::invalid_argument
+/// for a mesh check_polyhedron refuses or one whose volume is not positive (facets facing inward).
 template <class T>
-polyhedron_integrals<T> polyhedron_body(const polyhedron& shape, const T& density) {
+polyhedron_integrals<T> polyhedron_body(const polyhedron& shape, const T& density, int degree = 4) {
   using namespace polyhedron_detail;
   check_polyhedron(shape);
   if (!(density > 0)) throw std::invalid_argument("polyhedron: the density must be positive");
@@ -151,6 +152,14 @@ polyhedron_integrals<T> polyhedron_body(const polyhedron& shape, const T& densit
   for (std::size_t i = 0; i < body.third.size(); ++i) body.third[i] = density * std::get<3>(principal)[i];
   for (std::size_t i = 0; i < body.fourth.size(); ++i) body.fourth[i] = density * std::get<4>(principal)[i];
   body.degree = 4;
+  if (degree > 4) {
+    body.moments = polyhedron_monomial_moments(shape, out.centroid, out.axes, degree);
+    for (auto& x : body.moments) x *= density;
+    body.degree = degree;
+  } else {  // the tensors' own, read once here rather than at each evaluation
+    body.moments.resize(static_cast<std::size_t>(monomials_up_to(4)));
+    moments_from_tensors(body, 4, body.moments.data());
+  }
   return out;
 }
 
