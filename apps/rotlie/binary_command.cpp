@@ -1,13 +1,16 @@
 // binary: two rigid bodies in mutual gravity (the full two-body problem of binary asteroids), any of
 // its integrators: the final state, the mutual gravity there, the conserved quantities' errors.
-// --every K's trajectory goes to --out FILE (written whole at the end) or, with --json and no --out,
+// --every K's trajectory goes to --out FILE (JSON lines, CSV or .npz, written whole at the end) or, with --json and no --out,
 // to standard output as JSON lines before the summary's line; never beside the text summary.
 #include <array>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "arguments.hpp"
 #include "commands.hpp"
@@ -15,6 +18,7 @@
 #include "rotlie/runs/binary_fields.hpp"
 #include "rotlie/runs/binary_io.hpp"
 #include "rotlie/runs/binary_run.hpp"
+#include "rotlie/runs/npz_file.hpp"
 #include "rotlie/runs/output_file.hpp"
 
 namespace rotlie::app {
@@ -32,35 +36,46 @@ std::string csv_number(const nlohmann::json& x) {
   return nlohmann::json(v).dump();
 }
 
-// One CSV row of a sample, or with `header` its column names: a vector's components r_x, r_y, r_z, a
-// matrix's entries by row Q1_11, Q1_12, … Q1_33.
-std::string csv_row(const nlohmann::json& sample, bool header) {
+// Each column of a sample in order, its name and its value: a number as is, a vector's components
+// r_x, r_y, r_z, a matrix's entries by row Q1_11, Q1_12, … Q1_33.
+void for_each_column(const nlohmann::json& sample, const std::function<void(const std::string&, const nlohmann::json&)>& column) {
   static const char* const axes[] = {"x", "y", "z"};
-  std::string row;
-  const auto cell = [&](const std::string& text) { row += (row.empty() ? "" : ",") + text; };
   for (const char* name : sample_fields) {
     const auto& value = sample.at(name);
     if (!value.is_array()) {
-      cell(header ? std::string(name) : csv_number(value));
+      column(name, value);
       continue;
     }
     for (std::size_t i = 0; i < value.size(); ++i) {
       if (!value[i].is_array()) {
-        cell(header ? std::string(name) + "_" + (i < 3 ? axes[i] : std::to_string(i + 1)) : csv_number(value[i]));
+        column(std::string(name) + "_" + (i < 3 ? axes[i] : std::to_string(i + 1)), value[i]);
         continue;
       }
-      for (std::size_t k = 0; k < value[i].size(); ++k)
-        cell(header ? std::string(name) + "_" + std::to_string(i + 1) + std::to_string(k + 1) : csv_number(value[i][k]));
+      for (std::size_t k = 0; k < value[i].size(); ++k) column(std::string(name) + "_" + std::to_string(i + 1) + std::to_string(k + 1), value[i][k]);
     }
   }
+}
+
+// One CSV row of a sample, or with `header` its column names.
+std::string csv_row(const nlohmann::json& sample, bool header) {
+  std::string row;
+  for_each_column(sample, [&](const std::string& name, const nlohmann::json& value) { row += (row.empty() ? "" : ",") + (header ? name : csv_number(value)); });
   return row + "\n";
 }
 
-// The --out file: JSON lines, or CSV with a header line when its name ends in .csv. Nothing is in
-// place until commit(): a run that fails leaves the file as it was.
+bool ends_with(const std::string& path, const std::string& suffix) {
+  return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// The --out file: JSON lines; CSV with a header line when its name ends in .csv; NumPy's .npz (one
+// float64 array per CSV column, runs/npz_file.hpp) when it ends in .npz, its columns held in memory
+// until the end. Nothing is in place until commit(): a run that fails leaves the file as it was.
 class trajectory_file {
  public:
-  explicit trajectory_file(const std::string& path) : csv_(path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0) {
+  enum class format { json_lines, csv, npz };
+
+  explicit trajectory_file(const std::string& path)
+      : format_(ends_with(path, ".csv") ? format::csv : ends_with(path, ".npz") ? format::npz : format::json_lines) {
     try {
       file_ = std::make_unique<runs::output_file_stream>(path);
     } catch (const std::runtime_error& e) {  // a folder, a FIFO, a missing folder: nothing computed
@@ -68,15 +83,34 @@ class trajectory_file {
     }
   }
   void add(const nlohmann::json& sample) {
-    if (csv_ && first_) file_->write(csv_row(sample, true));
+    if (format_ == format::npz) {
+      std::size_t k = 0;
+      for_each_column(sample, [&](const std::string& name, const nlohmann::json& value) {
+        if (columns_.size() == k) columns_.push_back({name, {}});
+        columns_[k++].second.push_back(value.is_number() ? value.get<double>() : std::nan(""));
+      });
+      return;
+    }
+    if (format_ == format::csv && first_) file_->write(csv_row(sample, true));
     first_ = false;
-    file_->write(csv_ ? csv_row(sample, false) : sample.dump() + "\n");
+    file_->write(format_ == format::csv ? csv_row(sample, false) : sample.dump() + "\n");
   }
-  void commit() { file_->commit(); }
+  void commit() {
+    if (format_ == format::npz) {
+      try {
+        file_->write(runs::npz_of_columns(columns_));
+      } catch (const std::length_error& e) {
+        throw std::runtime_error("--out: " + std::string(e.what()) + "; write a .csv instead");
+      }
+    }
+    file_->commit();
+  }
 
  private:
-  bool csv_, first_ = true;
+  format format_;
+  bool first_ = true;
   std::unique_ptr<runs::output_file_stream> file_;
+  std::vector<std::pair<std::string, std::vector<double>>> columns_;  // .npz: each column's values so far
 };
 
 }  // namespace

@@ -137,7 +137,7 @@ int run_spin(const spin_options& options);
 struct binary_options {
   std::map<std::string, std::string> fields, terms;
   std::map<std::string, bool> flags;
-  std::string out;  ///< --every's trajectory file (JSON lines, or CSV for a .csv name); empty: none
+  std::string out;  ///< --every's trajectory file (JSON lines, CSV for a .csv name, NumPy for a .npz name); empty: none
   bool json = false;
 };
 int run_binary(const binary_options& options);

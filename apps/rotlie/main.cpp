@@ -367,7 +367,8 @@ subcommand add_binary(CLI::App& app, binary_options& b) {
   for (const auto& term : rotlie::runs::binary_terms())
     typed(cmd->add_option("--" + term.name, b.terms[term.name], term.summary), rotlie::runs::term_syntax(term));
   typed(cmd->add_option("--out", b.out, "With --every: the trajectory into FILE, written whole at the end (CSV with a header line when FILE "
-                                        "ends in .csv, else JSON lines); the summary stays on stdout"),
+                                        "ends in .csv, NumPy's .npz of one array per CSV column when it ends in .npz, else JSON lines); "
+                                        "the summary stays on stdout"),
         "FILE");
   cmd->add_flag("--json", b.json, "Machine-readable output on stdout (with --every and no --out: the trajectory's lines first, the run's JSON the last line)");
   cmd->footer(example("binary --system didymos --integrator SIER4 --h 60 --T 86400",
