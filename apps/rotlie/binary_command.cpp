@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -18,6 +19,7 @@
 #include "rotlie/runs/binary_fields.hpp"
 #include "rotlie/runs/binary_io.hpp"
 #include "rotlie/runs/binary_run.hpp"
+#include "rotlie/runs/gubas_config.hpp"
 #include "rotlie/runs/npz_file.hpp"
 #include "rotlie/runs/output_file.hpp"
 
@@ -113,16 +115,36 @@ class trajectory_file {
   std::vector<std::pair<std::string, std::vector<double>>> columns_;  // .npz: each column's values so far
 };
 
+// The request as typed, on top of what --gubas-config sets: an option the config sets, or one that
+// describes the bodies or the start another way, is refused beside it rather than silently preferred.
+runs::binary_request request_of(const binary_options& o) {
+  runs::binary_request request;
+  std::map<std::string, std::string> from_config;
+  if (!o.gubas_config.empty()) {
+    auto mapped = runs::read_gubas_config(o.gubas_config);
+    request = std::move(mapped.request);
+    from_config = std::move(mapped.source);
+  }
+  for (const auto& f : runs::binary_fields()) {
+    if (f.type == runs::binary_field::kind::flag) {
+      request.*f.flag = o.flags.at(f.name);
+      continue;
+    }
+    const bool given = o.given.count(f.name) > 0;
+    if (given && from_config.count(f.name))
+      throw usage_error(f.option + " is set by --gubas-config (from GUBAS's '" + from_config.at(f.name) + "'): give one of them");
+    if (given && !o.gubas_config.empty() && (f.name == "system" || f.name == "mass" || f.name == "separation" || f.name == "primary_period"))
+      throw usage_error(f.option + " and --gubas-config exclude each other (the config gives the bodies, their densities and the start)");
+    if (given || o.gubas_config.empty()) request.*f.text = o.fields.at(f.name);
+    if (f.cli_required && !given && o.gubas_config.empty()) throw usage_error(f.option + " is required");
+  }
+  return request;
+}
+
 }  // namespace
 
 int run_binary(const binary_options& o) {
-  runs::binary_request request;
-  for (const auto& f : runs::binary_fields()) {
-    if (f.type == runs::binary_field::kind::flag)
-      request.*f.flag = o.flags.at(f.name);
-    else
-      request.*f.text = o.fields.at(f.name);
-  }
+  auto request = request_of(o);
   for (const auto& [name, text] : o.terms)
     if (!text.empty()) request.terms[name] = text;
   const auto setup = runs::binary_setup_of(request);

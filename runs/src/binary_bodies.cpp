@@ -12,6 +12,7 @@
 #include "rotlie/runs/text_file.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/schemes/message_number.hpp"
+#include "shape_formats/gubas_shape.hpp"
 #include "shape_formats/icq_shape.hpp"
 #include "shape_formats/vertex_text.hpp"
 
@@ -221,23 +222,36 @@ binary_body binary_shape_named(const std::string& spec, const std::string& optio
     for (const auto& u : sphere_points()) b.surface.push_back({axes[0] * u[0], axes[1] * u[1], axes[2] * u[2]});
     return b;
   }
-  if (kind == "polyhedron") {
-    if (rest.empty()) throw bad_input(option + ": polyhedron:FILE names a shape model file");
-    std::string text;
-    try {
-      text = read_bounded_file(rest, shape_file_limit);
-    } catch (const std::runtime_error& e) {
-      throw bad_input(option + ": " + one_line(e.what()));
+  if (kind == "polyhedron" || kind == "gubas") {
+    const auto text_of = [&](const std::string& path) {
+      try {
+        return read_bounded_file(path, shape_file_limit);
+      } catch (const std::runtime_error& e) {
+        throw bad_input(option + ": " + one_line(e.what()));
+      }
+    };
+    std::string name;
+    models::polyhedron shape;
+    if (kind == "polyhedron") {
+      if (rest.empty()) throw bad_input(option + ": polyhedron:FILE names a shape model file");
+      name = option + " " + printable_path(rest);
+      shape = parse_shape_model(text_of(rest), name);
+    } else {
+      // GUBAS's pair of files, in metres: the vertices, then after the first comma the facets
+      const auto comma = rest.find(',');
+      if (rest.empty() || comma == std::string::npos || comma == 0 || comma + 1 == rest.size())
+        throw bad_input(option + ": gubas:VERTICES,FACETS names GUBAS's vertex and facet files, got '" + one_line(spec) + "'");
+      const std::string vertices = rest.substr(0, comma), facets = rest.substr(comma + 1);
+      name = option + " " + printable_path(vertices);
+      shape = shape_formats::parse_gubas_shape(text_of(vertices), text_of(facets), name, option + " " + printable_path(facets));
     }
-    const std::string name = option + " " + printable_path(rest);
-    auto shape = parse_shape_model(text, name);
     models::polyhedron_integrals<double> integrals;
     try {
       integrals = models::polyhedron_body<double>(shape, 1.0);
     } catch (const std::invalid_argument& e) {
       throw bad_input(name + ": " + e.what());
     }
-    b.kind = kind;
+    b.kind = "polyhedron";  // GUBAS's files too: a polyhedron once read
     b.volume = integrals.volume;
     b.axes = integrals.axes;
     b.centroid = integrals.centroid;
@@ -253,7 +267,7 @@ binary_body binary_shape_named(const std::string& spec, const std::string& optio
     if (!inside(b, {0, 0, 0})) b.inner_radius = 0;  // a centre of mass outside the body (a bent shape): no inner ball
     return b;
   }
-  throw bad_input(option + ": '" + one_line(spec) + "' is neither ellipsoid:a,b,c (km) nor polyhedron:FILE");
+  throw bad_input(option + ": '" + one_line(spec) + "' is neither ellipsoid:a,b,c (km), polyhedron:FILE nor gubas:VERTICES,FACETS");
 }
 
 binary_body with_density(binary_body b, double density) {

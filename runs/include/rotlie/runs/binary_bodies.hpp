@@ -2,7 +2,7 @@
 // The bodies of `rotlie binary` as a user names them: `ellipsoid:a,b,c` (semi-axes in km, a ≥ b ≥ c
 // along the body x, y, z) or `polyhedron:FILE` (a shape model in km: Wavefront OBJ `v`/`f` lines, the
 // plain form "N_vertices N_facets" then the vertices and the 1-based facets, or Gaskell's ICQ form, Q
-// then 6(Q+1)² vertices), homogeneous, of a
+// then 6(Q+1)² vertices) or `gubas:VERTICES,FACETS` (GUBAS's CSV pair in metres), homogeneous, of a
 // density (kg/m³) or a mass (kg). Each becomes a gravitating body in its principal frame (the
 // integrals to degree 4) with what the contact check needs: its bounding and inner radii and points
 // of its surface. Named systems hold both bodies and the start.
