@@ -2,6 +2,7 @@
 // One function per subcommand. They take plain option structs, so that CLI11 stays in main.cpp
 // (the slowest header to compile). Each returns the process exit status.
 #include <map>
+#include <set>
 #include <string>
 
 namespace rotlie::app {
@@ -137,7 +138,9 @@ int run_spin(const spin_options& options);
 struct binary_options {
   std::map<std::string, std::string> fields, terms;
   std::map<std::string, bool> flags;
-  std::string out;  ///< --every's trajectory file (JSON lines, or CSV for a .csv name); empty: none
+  std::string out;  ///< --every's trajectory file (JSON lines, CSV for a .csv name, NumPy for a .npz name); empty: none
+  std::string gubas_config;  ///< GUBAS's configuration file (runs/gubas_config.hpp); empty: none
+  std::set<std::string> given;  ///< the fields given on the command line (by name), not left at their defaults
   bool json = false;
 };
 int run_binary(const binary_options& options);

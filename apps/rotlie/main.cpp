@@ -361,18 +361,28 @@ subcommand add_binary(CLI::App& app, binary_options& b) {
       cmd->add_flag(f.option, b.flags[f.name] = defaults.*f.flag, f.help);
       continue;
     }
-    auto* option = with_default(cmd->add_option(f.option, b.fields[f.name] = defaults.*f.text, f.help), f.cli_type);
-    if (f.cli_required) option->required();
+    // a required field may come from --gubas-config instead: run_binary asks for it
+    with_default(cmd->add_option(f.option, b.fields[f.name] = defaults.*f.text, f.help + (f.cli_required ? " (required unless --gubas-config gives it)" : "")),
+                 f.cli_type);
   }
   for (const auto& term : rotlie::runs::binary_terms())
     typed(cmd->add_option("--" + term.name, b.terms[term.name], term.summary), rotlie::runs::term_syntax(term));
   typed(cmd->add_option("--out", b.out, "With --every: the trajectory into FILE, written whole at the end (CSV with a header line when FILE "
-                                        "ends in .csv, else JSON lines); the summary stays on stdout"),
+                                        "ends in .csv, NumPy's .npz of one array per CSV column when it ends in .npz, else JSON lines); "
+                                        "the summary stays on stdout"),
         "FILE");
   cmd->add_flag("--json", b.json, "Machine-readable output on stdout (with --every and no --out: the trajectory's lines first, the run's JSON the last line)");
+  typed(cmd->add_option("--gubas-config", b.gubas_config,
+                        "GUBAS's configuration file (SI units): its bodies, densities, G, start, order, integrator, step and span, in rotlie's "
+                        "units; the options it sets are not given beside it, the others (--every, --out, --json, --observe, ...) are"),
+        "FILE");
   cmd->footer(example("binary --system didymos --integrator SIER4 --h 60 --T 86400",
                       "--every K needs --out FILE or --json: the trajectory never shares standard output with the text summary."));
-  return {cmd, [&b] { return run_binary(b); }};
+  return {cmd, [&b, cmd] {
+            for (const auto& f : rotlie::runs::binary_fields())
+              if (cmd->count(f.option) > 0) b.given.insert(f.name);
+            return run_binary(b);
+          }};
 }
 
 // Many binary runs, one line each, over MPI ranks when started by mpirun.

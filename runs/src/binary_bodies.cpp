@@ -1,7 +1,6 @@
 #include "rotlie/runs/binary_bodies.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <numbers>
 #include <map>
@@ -15,6 +14,9 @@
 #include "rotlie/runs/text_file.hpp"
 #include "rotlie/runs/user_input.hpp"
 #include "rotlie/schemes/message_number.hpp"
+#include "shape_formats/gubas_shape.hpp"
+#include "shape_formats/icq_shape.hpp"
+#include "shape_formats/vertex_text.hpp"
 
 namespace rotlie::runs {
 
@@ -25,9 +27,8 @@ using models::vec3;
 
 constexpr std::size_t shape_file_limit = std::size_t(256) << 20;  // 256 MiB: millions of facets
 constexpr double m3_per_km3 = 1e9;  // a density in kg/m³ times this is kg/km³
-// The range of a shape model's size (km): its coordinates at most this large, ...
-constexpr double largest_coordinate = 1e20;
-// ... and its extent at least this: the integrals to degree 4 (size⁷ times the density) and the
+// The range of a shape model's size (km): its coordinates at most 1e20 in size (vertex_text.hpp), and
+// its extent at least this: the integrals to degree 4 (size⁷ times the density) and the
 // moments of inertia times the spin rates stay within double's range.
 constexpr double smallest_extent = 1e-12;
 
@@ -118,22 +119,7 @@ models::polyhedron parse_shape_model(const std::string& text, const std::string&
   std::string line;
   long line_number = 0;
   const auto refuse = [&](const std::string& why) { throw bad_input(name + ", line " + std::to_string(line_number) + ": " + why); };
-  const auto finite_vertex = [&](std::istringstream& words) {
-    vec3<double> v;
-    for (auto& x : v) {
-      std::string word;
-      if (!(words >> word)) refuse("a vertex needs three finite coordinates");
-      const std::size_t sign = word[0] == '+' ? 1 : 0;
-      const auto [end, error] = std::from_chars(word.data() + sign, word.data() + word.size(), x);
-      if (error == std::errc::result_out_of_range)
-        refuse("vertex coordinate " + one_line(word) + " is out of range (a double holds sizes from 2.2e-308 to 1.8e308)");
-      if (error != std::errc() || end != word.data() + word.size()) refuse("vertex coordinate '" + one_line(word) + "' is not a number");
-      if (!std::isfinite(x)) refuse("vertex coordinate " + one_line(word) + " is not finite");
-      if (std::abs(x) > largest_coordinate)
-        refuse("vertex coordinate " + one_line(word) + " is out of range (at most " + schemes::message_number(largest_coordinate) + " km in size)");
-    }
-    return v;
-  };
+  const auto finite_vertex = [&](std::istringstream& words) { return shape_formats::vertex_of(words, refuse); };
   const auto sized = [&](models::polyhedron&& shape) {
     if (shape.vertices.empty()) return std::move(shape);
     double extent = 0;
@@ -146,11 +132,12 @@ models::polyhedron parse_shape_model(const std::string& text, const std::string&
                       " km)");
     return std::move(shape);
   };
-  // the plain form starts with two counts; OBJ with `v`, `f`, `#`, `o`, `g`, … lines
+  // the plain form starts with two counts; ICQ with Q alone; OBJ with `v`, `f`, `#`, `o`, `g`, … lines
   std::vector<std::string> lines;
   while (std::getline(in, line)) lines.push_back(line);
   std::size_t first = 0;
   while (first < lines.size() && lines[first].find_first_not_of(" \t\r") == std::string::npos) ++first;
+  if (first < lines.size() && shape_formats::looks_like_icq(lines[first])) return sized(shape_formats::parse_icq_shape(lines, first, name));
   long n_vertices = -1, n_facets = -1;
   if (first < lines.size()) {
     std::istringstream words(lines[first]);
@@ -237,23 +224,36 @@ binary_body binary_shape_named(const std::string& spec, const std::string& optio
     for (const auto& u : sphere_points()) b.surface.push_back({axes[0] * u[0], axes[1] * u[1], axes[2] * u[2]});
     return b;
   }
-  if (kind == "polyhedron") {
-    if (rest.empty()) throw bad_input(option + ": polyhedron:FILE names a shape model file");
-    std::string text;
-    try {
-      text = read_bounded_file(rest, shape_file_limit);
-    } catch (const std::runtime_error& e) {
-      throw bad_input(option + ": " + one_line(e.what()));
+  if (kind == "polyhedron" || kind == "gubas") {
+    const auto text_of = [&](const std::string& path) {
+      try {
+        return read_bounded_file(path, shape_file_limit);
+      } catch (const std::runtime_error& e) {
+        throw bad_input(option + ": " + one_line(e.what()));
+      }
+    };
+    std::string name;
+    models::polyhedron shape;
+    if (kind == "polyhedron") {
+      if (rest.empty()) throw bad_input(option + ": polyhedron:FILE names a shape model file");
+      name = option + " " + printable_path(rest);
+      shape = parse_shape_model(text_of(rest), name);
+    } else {
+      // GUBAS's pair of files, in metres: the vertices, then after the first comma the facets
+      const auto comma = rest.find(',');
+      if (rest.empty() || comma == std::string::npos || comma == 0 || comma + 1 == rest.size())
+        throw bad_input(option + ": gubas:VERTICES,FACETS names GUBAS's vertex and facet files, got '" + one_line(spec) + "'");
+      const std::string vertices = rest.substr(0, comma), facets = rest.substr(comma + 1);
+      name = option + " " + printable_path(vertices);
+      shape = shape_formats::parse_gubas_shape(text_of(vertices), text_of(facets), name, option + " " + printable_path(facets));
     }
-    const std::string name = option + " " + printable_path(rest);
-    auto shape = parse_shape_model(text, name);
     models::polyhedron_integrals<double> integrals;
     try {
       integrals = models::polyhedron_body<double>(shape, 1.0);
     } catch (const std::invalid_argument& e) {
       throw bad_input(name + ": " + e.what());
     }
-    b.kind = kind;
+    b.kind = "polyhedron";  // GUBAS's files too: a polyhedron once read
     b.volume = integrals.volume;
     b.axes = integrals.axes;
     b.centroid = integrals.centroid;
@@ -269,7 +269,7 @@ binary_body binary_shape_named(const std::string& spec, const std::string& optio
     if (!inside(b, {0, 0, 0})) b.inner_radius = 0;  // a centre of mass outside the body (a bent shape): no inner ball
     return b;
   }
-  throw bad_input(option + ": '" + one_line(spec) + "' is neither ellipsoid:a,b,c (km) nor polyhedron:FILE");
+  throw bad_input(option + ": '" + one_line(spec) + "' is neither ellipsoid:a,b,c (km), polyhedron:FILE nor gubas:VERTICES,FACETS");
 }
 
 binary_body with_density(binary_body b, double density) {

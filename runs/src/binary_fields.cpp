@@ -34,7 +34,7 @@ std::vector<binary_field> all_fields() {
   f.push_back(text("system", "NAME", "str | None", "None", "A named system (didymos): its bodies, densities and start; the options below override it", &binary_request::system));
   f.push_back(text("primary", "SHAPE", "str | None", "None",
                    "ellipsoid:a,b,c (semi-axes in km, a >= b >= c along x, y, z) or polyhedron:FILE (a shape model in km: Wavefront OBJ, or "
-                   "'N_vertices N_facets' then vertices and 1-based facets)",
+                   "'N_vertices N_facets' then vertices and 1-based facets, or ICQ: Q then 6(Q+1)^2 vertices), or gubas:VERTICES,FACETS (GUBAS's CSV pair, in metres)",
                    &binary_request::primary));
   f.push_back(text("secondary", "SHAPE", "str | None", "None", "As primary", &binary_request::secondary));
   f.push_back(text("density", "RHO|RHO1,RHO2", "float | tuple[float, float] | None", "None", "kg/m3: one value for both bodies, or RHO1,RHO2", &binary_request::density, field_kind::numbers));

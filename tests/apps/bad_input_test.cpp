@@ -397,7 +397,7 @@ const std::vector<bad_input> cases = {
   {{"binary", "--system", "didymos", "--primary", "ellipsoid:-0.4,0.3,0.2", "--integrator", "SIER2", "--T", "0"}, usage, "--primary ellipsoid: a semi-axis must be positive"},
   {{"binary", "--system", "didymos", "--primary", "ellipsoid:0.4,0,0", "--integrator", "SIER2", "--T", "0"}, usage, "must be positive"},
   {{"binary", "--system", "didymos", "--primary", "ellipsoid:0.3,0.4,0.2", "--integrator", "SIER2", "--T", "0"}, usage, "a >= b >= c"},
-  {{"binary", "--system", "didymos", "--secondary", "sphere:0.1", "--integrator", "SIER2", "--T", "0"}, usage, "neither ellipsoid:a,b,c (km) nor polyhedron:FILE"},
+  {{"binary", "--system", "didymos", "--secondary", "sphere:0.1", "--integrator", "SIER2", "--T", "0"}, usage, "neither ellipsoid:a,b,c (km), polyhedron:FILE nor gubas:VERTICES,FACETS"},
   {{"binary", "--system", "didymos", "--primary", "polyhedron:@DIR@/open.obj", "--integrator", "SIER2", "--T", "0"}, usage, "not a closed, consistently oriented surface"},
   {{"binary", "--system", "didymos", "--primary", "polyhedron:@DIR@/inverted.obj", "--integrator", "SIER2", "--T", "0"}, usage, "the facets face inward"},
   {{"binary", "--system", "didymos", "--primary", "polyhedron:@DIR@/out-of-range.obj", "--integrator", "SIER2", "--T", "0"}, usage, "names vertex 9 of 4"},

@@ -1,7 +1,8 @@
 #pragma once
 // The bodies of `rotlie binary` as a user names them: `ellipsoid:a,b,c` (semi-axes in km, a ≥ b ≥ c
-// along the body x, y, z) or `polyhedron:FILE` (a shape model in km: Wavefront OBJ `v`/`f` lines, or
-// the plain form "N_vertices N_facets" then the vertices and the 1-based facets), homogeneous, of a
+// along the body x, y, z) or `polyhedron:FILE` (a shape model in km: Wavefront OBJ `v`/`f` lines, the
+// plain form "N_vertices N_facets" then the vertices and the 1-based facets, or Gaskell's ICQ form, Q
+// then 6(Q+1)² vertices) or `gubas:VERTICES,FACETS` (GUBAS's CSV pair in metres), homogeneous, of a
 // density (kg/m³) or a mass (kg). Each becomes a gravitating body in its principal frame (the
 // integrals to degree 4) with what the contact check needs: its bounding and inner radii and points
 // of its surface. Named systems hold both bodies and the start.
@@ -40,7 +41,7 @@ binary_body with_mass(binary_body shape, double mass_kg);
 /// an ellipsoid (closed form) and a polyhedron (its tetrahedra), after its density is set.
 binary_body with_degree(binary_body body, int degree);
 
-/// A shape model's text (OBJ or the plain form); `name` names it in messages. Throws bad_input naming the
+/// A shape model's text (OBJ, the plain form or ICQ, told apart by the first line); `name` names it in messages. Throws bad_input naming the
 /// line of a coordinate that is not a number or beyond 1e20 km in size, or vertices spanning less than
 /// 1e-12 km. (Whether the mesh bounds a solid is polyhedron_body's check.)
 models::polyhedron parse_shape_model(const std::string& text, const std::string& name);
