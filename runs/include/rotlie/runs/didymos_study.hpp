@@ -36,7 +36,7 @@ struct didymos_benchmark_row {
   binary_observables observed;
 };
 
-/// The circular start, then the GUBAS one, each at orders 2 and 4.
+/// The circular start, then the GUBAS one, each at orders 2, 4, 6 and 8.
 std::vector<didymos_benchmark_row> didymos_benchmark(double T);
 
 /// A momentum transfer: Δv = β m U / M₂ (m in kg, U in km/s), against the secondary's orbital motion.
