@@ -183,7 +183,7 @@ binary_setup binary_setup_of(const binary_request& given) {
   for (const auto& [name, text] : r.terms) {
     const auto* term = binary_term_named(name);
     if (!term) throw bad_input("'" + one_line(name) + "' is not a force term of binary");
-    s.terms.emplace_back(term->name, term->make(real_numbers(text, "--" + term->name), sys));
+    s.terms.emplace_back(term->name, term->make(real_numbers(with_named_values(*term, text), "--" + term->name), sys));
   }
   if (r.integrator.empty()) throw bad_input("--integrator is required");
   s.method = method_named(r.integrator, sys.moments(0), sys.moments(1));

@@ -379,4 +379,21 @@ BOOST_AUTO_TEST_CASE(bad_values_are_refused_naming_the_option) {
   BOOST_CHECK_NO_THROW(term->make({0, 3e4, 6, 0, 0, 0, 0}, sys));
 }
 
+// A planet by name is its mass: `earth` reads as 5.9722e24 kg (any case), in the mass's place only.
+BOOST_AUTO_TEST_CASE(a_planet_by_name_is_its_mass) {
+  const auto* term = runs::binary_term_named("flyby");
+  BOOST_REQUIRE(term);
+  BOOST_TEST(runs::with_named_values(*term, "Earth,38000,5.84,45,30,60,86400") == "5.9722e+24,38000,5.84,45,30,60,86400");
+  BOOST_TEST(runs::with_named_values(*term, " jupiter ,1e6,10,0,0,0,0").substr(0, 12) == "1.89813e+27,");
+  BOOST_TEST(runs::with_named_values(*term, "5,earth,1,0,0,0,0") == "5,earth,1,0,0,0,0");  // not a distance
+  runs::binary_request by_name, by_number;
+  for (auto* r : {&by_name, &by_number}) {
+    r->system = "didymos", r->integrator = "SIER4", r->h = "60", r->T = "600";
+  }
+  by_name.terms["flyby"] = "earth,38000,5.84,45,30,60,86400";
+  by_number.terms["flyby"] = "5.9722e24,38000,5.84,45,30,60,86400";
+  const auto a = runs::binary_run(runs::binary_setup_of(by_name)), b = runs::binary_run(runs::binary_setup_of(by_number));
+  for (std::size_t k = 0; k < 3; ++k) BOOST_TEST(a.end.x.r[k] == b.end.x.r[k]);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

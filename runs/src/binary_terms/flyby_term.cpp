@@ -128,10 +128,11 @@ std::shared_ptr<const registered_term> make_flyby(const std::vector<double>& p, 
 
 binary_term_description flyby_term() {
   return {"flyby",
-          "A planetary flyby: a point mass m (kg; the Earth 5.9722e24) on the Kepler hyperbola about the barycentre of closest "
+          "A planetary flyby: a point mass m (kg, or a planet by name: earth 5.9722e24, moon, mars, venus, jupiter) on the Kepler hyperbola about the barycentre of closest "
           "approach q (km) at t_q (s), speed at infinity v_inf (km/s), orientation i, Omega, omega (deg, omega the periapsis); "
           "its whole pull on each body and the quadrupole torque",
-          {{"m", "kg"}, {"q", "km"}, {"v_inf", "km/s"}, {"i", "deg"}, {"Omega", "deg"}, {"omega", "deg"}, {"t_q", "s"}},
+          // masses: NASA's planetary fact sheets (GM / G)
+          {{"m", "kg", {{"earth", 5.9722e24}, {"moon", 7.346e22}, {"mars", 6.4171e23}, {"venus", 4.8673e24}, {"jupiter", 1.89813e27}}}, {"q", "km"}, {"v_inf", "km/s"}, {"i", "deg"}, {"Omega", "deg"}, {"omega", "deg"}, {"t_q", "s"}},
           // the Earth at Apophis's 2029 encounter (JPL: 38,000 km from the Earth's centre, v∞ 5.84 km/s), closest a day in,
           // in an orientation chosen for illustration
           "5.9722e24,38000,5.84,45,30,60,86400",

@@ -23,6 +23,7 @@ class registered_term : public models::binary_term<double> {
 
 struct term_parameter {
   std::string name, unit;
+  std::vector<std::pair<std::string, double>> named{};  ///< words accepted in place of the number (any case)
 };
 
 struct binary_term_description {
@@ -40,6 +41,9 @@ const std::vector<binary_term_description>& binary_terms();
 
 /// The term named so, or nullptr.
 const binary_term_description* binary_term_named(const std::string& name);
+
+/// The values' text with each parameter's words (e.g. the flyby's `earth`) replaced by their numbers.
+std::string with_named_values(const binary_term_description& term, const std::string& text);
 
 /// "NAME a,e,…": the syntax with units, for help texts.
 std::string term_syntax(const binary_term_description& term);
