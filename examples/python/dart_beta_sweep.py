@@ -11,10 +11,10 @@ about 1e-8, far within the default accuracy of 1e-3). Dimorphos's mass is set wi
 primary keeps the named system's mass), DART's push is an `impulse` on the secondary at t = 0:
 
 - a beta grid (--betas, default 1 ... 5 in 17 values) along the secondary's motion, the `beta=` form, at the
-  grid's mass (--grid-mass, default 4.3e9 kg, Cheng et al. 2023's Dimorphos at 2,400 kg/m3);
+  grid's mass (--grid-mass, default 4.3e9 kg: Dimorphos at Cheng et al. 2023's 2,400 kg/m3);
 - a Monte Carlo of --runs pushes at --seed: beta from a split normal 3.61 +0.19/-0.25 (Cheng et al. 2023,
-  Nature 616, 457), Dimorphos's mass from a normal 4.3e9 +- 0.25e9 kg, and the push's direction tilted from
-  the anti-along-track direction by two normal angles of --direction-sigma degrees (in the orbit plane toward
+  Nature 616, 457), Dimorphos's mass from a normal 4.3e9 +- 0.25e9 kg (the spread assumed), and the push's
+  direction tilted from the anti-along-track direction by two normal angles of --direction-sigma degrees (in the orbit plane toward
   the radial, and out of it; the spread is assumed, see docs/binary.md), given as the vector form
   `secondary:dx,dy,dz` (mm/s, inertial) of |dv| = beta m U / M2 (m = 579.4 kg, U = 6.1449 km/s);
 - runs without the push at a few masses, for the period before at each mass (interpolated).
@@ -52,7 +52,7 @@ H = 60.0  # s: SIER4's error estimate at this step is ~1e-8, far within the defa
 DART_MASS_KG = 579.4  # DART at impact (Cheng et al. 2023)
 DART_SPEED_KM_S = 6.1449  # DART's speed relative to Dimorphos (Cheng et al. 2023)
 BETA, BETA_PLUS, BETA_MINUS = 3.61, 0.19, 0.25  # Cheng et al. 2023, 1 sigma, equal densities of 2,400 kg/m3
-M2_KG, M2_SIGMA_KG = 4.3e9, 0.25e9  # Dimorphos's mass at 2,400 kg/m3 (Cheng et al. 2023; Daly et al. 2023's volume)
+M2_KG, M2_SIGMA_KG = 4.3e9, 0.25e9  # Dimorphos at 2,400 kg/m3 with Daly et al. 2023's volume; the spread assumed
 OBSERVED_MIN, OBSERVED_SIGMA_MIN = -33.0, 1.0  # Thomas et al. 2023 (the 1.0 min is 3 sigma)
 
 
