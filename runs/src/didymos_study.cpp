@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "rotlie/models/rigid_bodies.hpp"
 #include "rotlie/schemes/message_number.hpp"
 
 namespace rotlie::runs {
@@ -41,6 +42,42 @@ dart_result dart_period_change(const dart_impact& impact, double T) {
     const double after = observe_binary(with_impulse(before_setup, dv), 5).orbit_period_h;
     out.rows.push_back({dv, after, (after - out.period_before_h) * 60});
   }
+  return out;
+}
+
+dart_beta_result dart_beta_sweep(const dart_impact& impact, const std::vector<double>& betas, double tilted_beta, double tilt_deg,
+                                 double target_min, double T) {
+  const auto before_setup = didymos_setup(4, "KEPLER4", 60, T, false);
+  dart_beta_result out;
+  out.secondary_mass_kg = before_setup.system_model().body(1).mass;
+  out.period_before_h = observe_binary(before_setup, 5).orbit_period_h;
+  out.target_min = target_min;
+  const auto push = [&](double beta, double tilt_deg_here) {
+    auto setup = before_setup;
+    const double dv = beta * impact.mass_kg * impact.speed_km_s / out.secondary_mass_kg;
+    // against the motion, turned by the tilt about the line of centres (out of the orbit plane)
+    const auto& v = setup.start.v;
+    const double speed = models::norm(v), tilt = tilt_deg_here * std::acos(-1.0) / 180;
+    const auto& r = setup.start.r;
+    const models::vec3<double> normal = models::cross(r, v);
+    const double n = models::norm(normal);
+    for (std::size_t k = 0; k < 3; ++k) setup.start.v[k] -= dv * (std::cos(tilt) * v[k] / speed + std::sin(tilt) * normal[k] / n);
+    const auto seen = observe_binary(setup, 5);
+    dart_beta_row row;
+    row.beta = beta, row.dv_km_s = dv, row.tilt_deg = tilt_deg_here;
+    row.change_min = (seen.orbit_period_h - out.period_before_h) * 60;
+    row.libration_amplitude_deg = seen.libration_amplitude_deg;
+    row.npa_angle_max_deg = seen.rotation[1].npa_angle_max_deg;
+    row.tumbling = seen.rotation[1].tumbling;
+    out.rows.push_back(row);
+  };
+  for (const double beta : betas) push(beta, 0);
+  for (std::size_t k = 1; k < out.rows.size(); ++k) {
+    const auto &a = out.rows[k - 1], &b = out.rows[k];
+    if ((a.change_min - target_min) * (b.change_min - target_min) <= 0 && a.change_min != b.change_min)
+      out.beta_for_target = a.beta + (target_min - a.change_min) / (b.change_min - a.change_min) * (b.beta - a.beta);
+  }
+  push(tilted_beta, tilt_deg);
   return out;
 }
 

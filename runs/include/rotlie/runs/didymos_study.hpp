@@ -61,6 +61,25 @@ struct dart_result {
 /// after the impulse.
 dart_result dart_period_change(const dart_impact& impact, double T);
 
+/// One push of DART's β: the period change and the secondary's excitation after it.
+struct dart_beta_row {
+  double beta = 0, dv_km_s = 0, tilt_deg = 0;  ///< tilt: the push turned out of the orbit plane
+  double change_min = 0;                       ///< the mean mutual orbit period after, against before
+  double libration_amplitude_deg = 0;
+  double npa_angle_max_deg = 0;  ///< the secondary's G off its maximum-moment axis, largest over the run
+  bool tumbling = false;
+};
+
+/// DART's push at each β (impact's mass and speed, along the track), and once at `tilted_beta` turned
+/// `tilt_deg` out of the orbit plane: the circular start at order 4 (KEPLER4, h = 60 s, over T seconds).
+/// The β that gives `target_min` (linear interpolation between the grid's neighbours; 0 if outside).
+struct dart_beta_result {
+  double period_before_h = 0, secondary_mass_kg = 0, beta_for_target = 0, target_min = 0;
+  std::vector<dart_beta_row> rows;  ///< the grid, then the tilted push
+};
+dart_beta_result dart_beta_sweep(const dart_impact& impact, const std::vector<double>& betas, double tilted_beta, double tilt_deg,
+                                 double target_min, double T);
+
 /// The report's sweep over `orbits` × didymos_orbit_unit_s: the TV splittings, the LGVI and RK4 at fixed
 /// steps (three with quick, five otherwise), Odeint's RKF78 at three tolerances, against KEPLER4 at 7.5 s.
 binary_cost_plan didymos_cost_plan(double orbits, bool quick);
