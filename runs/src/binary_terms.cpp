@@ -3,6 +3,8 @@
 #include <cctype>
 #include <charconv>
 
+#include "rotlie/runs/user_input.hpp"
+
 namespace rotlie::runs {
 
 #define ROTLIE_BINARY_TERM(NAME) binary_term_description NAME##_term();
@@ -34,12 +36,18 @@ std::string with_named_values(const binary_term_description& term, const std::st
     for (const char c : value)
       if (c != ' ') word += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     std::string replaced = value;
-    if (k < term.parameters.size())
-      for (const auto& [name, number] : term.parameters[k].named)
+    if (k < term.parameters.size() && !term.parameters[k].named.empty()) {
+      std::string names;
+      for (const auto& [name, number] : term.parameters[k].named) {
+        names += (names.empty() ? "" : ", ") + name;
         if (word == name) {
           char digits[32];
           replaced.assign(digits, std::to_chars(digits, digits + sizeof digits, number).ptr);  // the shortest text that reads back
         }
+      }
+      if (replaced == value && !word.empty() && std::isalpha(static_cast<unsigned char>(word[0])))
+        throw bad_input("--" + term.name + ": " + term.parameters[k].name + " '" + one_line(value) + "' is neither a number nor one of " + names);
+    }
     out += (k ? "," : "") + replaced;
     if (comma == std::string::npos) return out;
     start = comma + 1;

@@ -386,6 +386,9 @@ BOOST_AUTO_TEST_CASE(a_planet_by_name_is_its_mass) {
   BOOST_TEST(runs::with_named_values(*term, "Earth,38000,5.84,45,30,60,86400") == "5.9722e+24,38000,5.84,45,30,60,86400");
   BOOST_TEST(runs::with_named_values(*term, " jupiter ,1e6,10,0,0,0,0").substr(0, 12) == "1.89813e+27,");
   BOOST_TEST(runs::with_named_values(*term, "5,earth,1,0,0,0,0") == "5,earth,1,0,0,0,0");  // not a distance
+  BOOST_CHECK_EXCEPTION(runs::with_named_values(*term, "pluto,38000,5.84,45,30,60,86400"), runs::bad_input, [](const runs::bad_input& e) {
+    return std::string(e.what()) == "--flyby: m 'pluto' is neither a number nor one of earth, moon, mars, venus, jupiter";
+  });
   runs::binary_request by_name, by_number;
   for (auto* r : {&by_name, &by_number}) {
     r->system = "didymos", r->integrator = "SIER4", r->h = "60", r->T = "600";
