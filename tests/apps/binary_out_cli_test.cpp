@@ -49,16 +49,6 @@ fs::path fresh_folder(const std::string& name) {
   return dir;
 }
 
-void expect_refusal(const std::string& args, const std::string& must_mention) {
-  const auto r = run(args);
-  BOOST_TEST_CONTEXT("rotlie " << args << " → " << r.status << ": " << r.err) {
-    BOOST_TEST(r.status == 2);
-    BOOST_TEST(r.out.empty());
-    BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    BOOST_TEST(r.err.find(must_mention) != std::string::npos);
-  }
-}
-
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(every_without_out_or_json_is_refused_naming_both) {

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -51,6 +52,17 @@ inline run_result run_command(const std::string& command) {
 
 /// rotlie with the given arguments (shell words).
 inline run_result run(const std::string& args) { return run_command(std::string(ROTLIE_BINARY) + " " + args); }
+
+/// A refused input: exit 2, nothing on stdout, one line on stderr that mentions `must_mention`.
+inline void expect_refusal(const std::string& args, const std::string& must_mention) {
+  const auto r = run(args);
+  BOOST_TEST_CONTEXT("rotlie " << args << " → " << r.status << ": " << r.err) {
+    BOOST_TEST(r.status == 2);
+    BOOST_TEST(r.out.empty());
+    BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    BOOST_TEST(r.err.find(must_mention) != std::string::npos);
+  }
+}
 
 /// rotlie started in the background (its outputs discarded), killed by SIGKILL and reaped when the
 /// object goes: for a run that must be going on while another command is tried.
