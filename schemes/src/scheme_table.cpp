@@ -74,9 +74,13 @@ std::string split_name(split s) {
 }
 
 int force_evaluations(const scheme_table& t) {
-  int kicks = 0;
-  for (const auto& s : t.stages) kicks += s.part == 'V' ? 1 : 0;
-  const bool shared = t.stages.size() > 1 && t.stages.front().part == 'V' && t.stages.back().part == 'V';
+  // a thermostat's letters (O, N) move no body: the forces stay those of the configuration, and the two
+  // halves of a kick split around one (V O V) are one evaluation
+  std::string moving;
+  for (const auto& s : t.stages)
+    if ((s.part == 'V' || s.part == 'T') && (moving.empty() || moving.back() != s.part || s.part != 'V')) moving += s.part;
+  const int kicks = static_cast<int>(std::count(moving.begin(), moving.end(), 'V'));
+  const bool shared = moving.size() > 1 && moving.front() == 'V' && moving.back() == 'V';
   return shared ? kicks - 1 : kicks;
 }
 
@@ -174,6 +178,8 @@ std::string format_scheme_table(const scheme_table& t) {
 
 void check_scheme_table(const scheme_table& t) {
   const std::string letters = t.splitting == split::abc ? "ABC" : t.splitting == split::rs ? "RS" : "TV";
+  // a TV table may hold a thermostat (thermostat_tables.hpp): O, the Ornstein-Uhlenbeck step; N, a Nose-Hoover chain
+  const std::string optional = t.splitting == split::tv ? "ON" : "";
   const std::string name = printable_text(t.name);
   if (t.stages.empty()) throw std::invalid_argument("scheme table " + name + ": no stages");
   if (t.word.size() != t.stages.size())
@@ -190,9 +196,9 @@ void check_scheme_table(const scheme_table& t) {
   std::vector<long double> value(t.stages.size());
   for (std::size_t i = 0; i < t.stages.size(); ++i) {
     const char p = t.stages[i].part;
-    if (letters.find(p) == std::string::npos)
+    if ((letters + optional).find(p) == std::string::npos)
       throw std::invalid_argument("scheme table " + name + ": part '" + printable_text(std::string(1, p)) + "' is not in the " +
-                                  letters + " splitting");
+                                  letters + " splitting" + (optional.empty() ? "" : " (nor a thermostat's " + optional + ")"));
     if (t.word[i] != p)
       throw std::invalid_argument("scheme table " + name + ": stage " + std::to_string(i + 1) + " is " +
                                   std::string(1, p) + " but the word says " + printable_text(std::string(1, t.word[i])));
@@ -206,8 +212,11 @@ void check_scheme_table(const scheme_table& t) {
   }
   // Σ = 1 to what the integrator's double arithmetic resolves: the sum of n rounded terms is off
   // by at most n·ε·Σ|c| (ε = DBL_EPSILON), so the tolerance grows with the stages and their sizes.
-  for (const char p : letters) {
-    if (!count.count(p)) throw std::invalid_argument("scheme table " + name + ": part " + std::string(1, p) + " never acts");
+  for (const char p : letters + optional) {
+    if (!count.count(p)) {
+      if (optional.find(p) != std::string::npos) continue;  // a thermostat's letter need not act
+      throw std::invalid_argument("scheme table " + name + ": part " + std::string(1, p) + " never acts");
+    }
     const long double tolerance = count[p] * static_cast<long double>(DBL_EPSILON) * size[p];
     if (!(std::fabs(sum[p] - 1.0L) <= tolerance))
       throw std::invalid_argument("scheme table " + name + ": the coefficients of part " + std::string(1, p) +

@@ -59,7 +59,8 @@ int axis_of_letter(char letter);
 std::array<int, 3> rs_axes(const scheme_table& t);
 
 /// Force evaluations f per step of a TV table: its V stages, less one when the first and the last
-/// stage are both V (the last kick's forces are the next step's first: first-same-as-last).
+/// stage are both V (the last kick's forces are the next step's first: first-same-as-last); a thermostat's
+/// stages (O, N) move nothing, so the kicks on either side of one count once.
 int force_evaluations(const scheme_table& t);
 
 /// The cost of one step in the split's unit. ABC, RS: rotations about principal axes (LV section
