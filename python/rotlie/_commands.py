@@ -53,20 +53,24 @@ def md(scene: str, integrator: str, h: Number, T: Number | None = None, *, runs:
        scalar: str | None = None, dipole: Number | None = None, field: Number | None = None, molecules: int | None = None,
        threads: int | None = None, state: str | os.PathLike | None = None, body: str | Body | None = None, e: Number | None = None,
        theta0: Number | None = None, omega0: Number | None = None, obliquity: Number | None = None,
-       every: int | None = None, equilibrate: Number | None = None) -> MdResult:
+       every: int | None = None, equilibrate: Number | None = None, temperature: Number | None = None,
+       friction: Number | None = None, tau: Number | None = None) -> MdResult:
     """A scene of ``rotlie md`` (``free-water``, ``dipole-field``, ``liquid-water``, ``spin-orbit``), as ``rotlie md --json``.
 
     ``h`` is the step in fs, ``T`` the time per run in ps (spin-orbit: both in orbits, as ``rotlie spin``);
     every keyword left None takes the scene's default. ``runs``, ``seed``: the ensemble; ``scalar``:
     double, long-double or float128; ``dipole`` (D) and ``field`` (MV/m): the dipole scene; ``molecules``,
     ``threads``, ``state`` (a file) and ``equilibrate`` (ps, a new start's equilibration): liquid water; ``body`` (a name, "A,B,C", a Body or three moments),
-    ``e``, ``theta0``, ``omega0``, ``obliquity``: spin-orbit; ``every``: the trajectory every K steps
+    ``e``, ``theta0``, ``omega0``, ``obliquity``: spin-orbit; ``temperature`` (K), ``friction`` (per ps,
+    -BAOAB/-OBABO) and ``tau`` (ps, -NHC): free water and liquid water at a temperature, with an integrator
+    such as ``SIER2-BAOAB`` (docs/thermostats.md); ``every``: the trajectory every K steps
     (``MdResult.trajectory``, its fields as arrays). A keyword of another scene raises ValueError, as the
     command line refuses it; the run's warnings (a step beyond the stable range, round-off) are
     UserWarnings and are flagged in the result (``unstable``, ``round_off_floor``)."""
     given = {"T": T, "runs": runs, "seed": seed, "scalar": scalar, "dipole": dipole, "field": field,
              "molecules": molecules, "threads": threads, "state": state, "body": body, "e": e, "theta0": theta0,
-             "omega0": omega0, "obliquity": obliquity, "every": every, "equilibrate": equilibrate}
+             "omega0": omega0, "obliquity": obliquity, "every": every, "equilibrate": equilibrate,
+             "temperature": temperature, "friction": friction, "tau": tau}
     return MdResult(json.loads(_rotlie.md(str(scene), str(integrator), number_text(h, "--h"), _scene_options(given))))
 
 

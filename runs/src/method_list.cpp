@@ -140,6 +140,7 @@ std::string method_names_text(method_system s) {
   for (const auto* list : {&plain, &with_rotor, &adaptive})
     for (const auto& n : *list) text += (text.empty() ? "" : ", ") + n;
   if (!with_rotor.empty()) text += "; X a rotor: " + rotor_values_text();
+  if (s == method_system::md) text += "; at a temperature: any splitting with -BAOAB, -OBABO (Langevin) or -NHC (Nose-Hoover chains), e.g. SIER2-BAOAB";
   if (!adaptive.empty()) text += "; default TOL " + schemes::message_number(default_tolerance(s));
   return text;
 }
@@ -190,19 +191,34 @@ resolved_method method_named(const std::string& text, method_system system, cons
     }
     return m;
   }
-  // FAMILY[/ROTOR]; a table file's path may hold further '/'
-  const auto slash = text.find('/');
-  const std::string head = text.substr(0, slash);
+  // FAMILY[/ROTOR][-THERMOSTAT]; a table file's path may hold further '/'
+  std::optional<schemes::thermostat_placement> thermostat;
+  std::string plain = text;
+  for (const auto& [suffix, placement] : {std::pair{"-BAOAB", schemes::thermostat_placement::middle},
+                                          std::pair{"-OBABO", schemes::thermostat_placement::ends},
+                                          std::pair{"-NHC", schemes::thermostat_placement::chain}}) {
+    const std::string tail = suffix;
+    if (plain.size() > tail.size() && plain.compare(plain.size() - tail.size(), tail.size(), tail) == 0) {
+      thermostat = placement;
+      plain.resize(plain.size() - tail.size());
+      break;
+    }
+  }
+  const auto slash = plain.find('/');
+  const std::string head = plain.substr(0, slash);
   const auto& all = method_families();
   const auto f = std::find_if(all.begin(), all.end(), [&](const method_family& x) { return x.kind != method_kind::adaptive && x.name == head; });
   if (f == all.end() || !f->steps(system)) throw unknown("unknown integrator '" + one_line(text) + "'");
   if (slash != std::string::npos && !f->takes_rotor) throw unknown(f->name + " takes no rotor, got '" + one_line(text) + "'");
+  if (thermostat && (system != method_system::md || f->kind != method_kind::tv_splitting))
+    throw unknown("a thermostat (-BAOAB, -OBABO, -NHC) goes on a splitting of md's bodies, got '" + one_line(text) + "'");
   m.family = &*f;
   if (f->kind != method_kind::tv_splitting && f->kind != method_kind::kepler_splitting) return m;
-  const std::string rotor = slash == std::string::npos ? f->rotor : text.substr(slash + 1);
+  const std::string rotor = slash == std::string::npos ? f->rotor : plain.substr(slash + 1);
   if (rotor.empty() || rotor.find_first_of(" \t\r\n") != std::string::npos)
     throw bad_input("--integrator '" + one_line(text) + "': " + head + "/ needs a scheme table name or file, e.g. " + head + "/RS4-S5-McLachlan:CBA");
   m.splitting = models::md_integrator_of(text, f->tv_table, rotor, f->force_evaluations());
+  m.splitting.thermostat = thermostat;
   if (!m.splitting.table_rotor()) return m;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     try {

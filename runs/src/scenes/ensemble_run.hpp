@@ -33,13 +33,17 @@ struct ensemble_run {
   md_run_header header() const { return {scene, run.integrator.name, scalar, run.h_fs, run.T_ps, run.runs, run.seed}; }
 };
 
-/// Fills `e` from the request (every option present); throws bad_input naming the option.
-inline void read_ensemble_run(const scene_request& r, const std::string& body_text, ensemble_run& e) {
+/// Fills `e` from the request (every option present); throws bad_input naming the option. An integrator
+/// with a thermostat is refused unless the scene runs one (thermostat_allowed).
+inline void read_ensemble_run(const scene_request& r, const std::string& body_text, ensemble_run& e, bool thermostat_allowed = false) {
   e.scene = r.scene;
   e.scalar = option(r, "--scalar");
   if (e.scalar != "double" && e.scalar != "long-double" && e.scalar != "float128")
     throw bad_input("--scalar must be double, long-double or float128, got '" + e.scalar + "'");
   auto method = method_named(r.integrator, method_system::md, {numeric_body(body_text)});
+  if (method.splitting.thermostat && !thermostat_allowed)
+    throw bad_input("--integrator " + one_line(r.integrator) + ": a thermostat runs in the free-water and liquid-water scenes' runs, not in " +
+                    r.scene + "'s or in a held simulation (md_simulation)");
   e.run.integrator = std::move(method.splitting);
   if (!method.rotors.empty()) e.rotor = std::move(method.rotors.front());
   e.run.rotor_table = e.rotor ? &*e.rotor : nullptr;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -32,6 +33,36 @@ std::string line(const char* format, A... a) {
   return buf;
 }
 
+std::optional<models::liquid_water_nvt_options> thermostat_options(const scene_request& r, const models::md_integrator& integrator) {
+  const auto t = read_thermostat(r, integrator);
+  if (!t) return std::nullopt;
+  models::liquid_water_nvt_options nvt;
+  nvt.kelvin = t->kelvin, nvt.friction_per_ps = t->friction_per_ps, nvt.tau_ps = t->tau_ps, nvt.seed = t->seed;
+  return nvt;
+}
+
+scene_result nvt_result(const models::liquid_water_nvt_result& r) {
+  scene_result out;
+  out.json = liquid_water_nvt_json(r);
+  auto pm = [](const models::mean_and_error& m, const char* unit) { return line("%.4g ± %.2g %s", m.mean, m.error, unit); };
+  out.text = line("liquid water at %g K: %ld TIP3P molecules, %s (%s), h = %g fs, %ld steps (the first fifth settling)\n", r.kelvin, r.molecules,
+                  r.integrator.c_str(), r.table.c_str(), r.h_fs, r.steps) +
+             "  T translational       " + pm(r.translational_K, "K") + "\n" +
+             "  T rotational          " + pm(r.rotational_K, "K") + "\n" +
+             "  T configurational     " + pm(r.configurational_translational_K, "K") + " (centres), " + pm(r.configurational_rotational_K, "K") +
+             " (rotations)\n" +
+             "  V per molecule        " + pm(r.potential_per_molecule, "kcal/mol") + "\n" +
+             line("  g_OO first peak       %.2f at %.3f Å\n", r.rdf_peak_g, r.rdf_peak_r) +
+             line("  D                     %.3g × 10⁻⁵ cm²/s\n", r.diffusion) +
+             line("  cost                  %.3f ms per step wall, %.3f ms CPU\n", r.ms_per_step, r.cpu_ms_per_step);
+  const double tol = 0.05;
+  for (const auto& [name, m] : {std::pair{"translational", r.translational_K}, std::pair{"rotational", r.rotational_K}})
+    if (std::abs(m.mean / r.kelvin - 1) > tol && std::abs(m.mean - r.kelvin) > 4 * m.error)
+      out.warnings.push_back(std::string("the ") + name + " temperature is " + line("%.1f", m.mean) + " K, " + line("%.0f", 100 * tol) +
+                             " % or more from the target: the run is too short to settle, or the step too large");
+  return out;
+}
+
 scene_result liquid_water_scene_run(const scene_request& request) {
   models::liquid_water_run_options o;
   const auto method = method_named(request.integrator, method_system::md, {numeric_body(models::tip3p_body_text())});  // a bad name costs nothing
@@ -42,6 +73,7 @@ scene_result liquid_water_scene_run(const scene_request& request) {
   o.molecules = integer_in_range(option(request, "--molecules"), "--molecules", 2, 10000000);
   o.threads = static_cast<int>(integer_in_range(option(request, "--threads"), "--threads", 1, 64));
   o.state_file = option(request, "--state");
+  o.seed = static_cast<std::uint64_t>(integer_in_range(option(request, "--seed"), "--seed", 0, std::numeric_limits<long>::max()));
   o.equilibration_ps = positive_number(option(request, "--equilibrate"), "--equilibrate");
   // whole steps of the equilibration's own step, as --T is bounded: never none, never a run without end
   if (const double steps = o.equilibration_ps * 1000 / o.equilibration_h_fs; !(steps >= 1 && steps <= 1e9))
@@ -75,12 +107,14 @@ scene_result liquid_water_scene_run(const scene_request& request) {
     o.write_file = [](const std::string& path, const std::string& text) { write_file_atomically(path, text); };
   }
   o.rotor_table = method.rotor_table();
+  const auto nvt = thermostat_options(request, o.integrator);
   o.poll = [] { lie::stop_point(); };  // a caller's stop request (Python's Ctrl-C) ends the run within a step
   auto show = [&request](const std::string& text) {
     if (request.progress) request.progress(text);
   };
   models::rigid_bodies_state<double> start;
   as_bad_input([&] { start = models::liquid_water_start(o, show); });  // a state file of another system, overlaps
+  if (nvt) return nvt_result(liquid_water_nvt_run(o, *nvt, start, show));
   const auto r = liquid_water_runs(o, start, show);
   scene_result out;
   out.json = liquid_water_json(r);
@@ -107,6 +141,8 @@ scene liquid_water_scene() {
            {"--threads", "2", "Threads of the force loop (results do not depend on it)"},
            {"--state", "", "A state file, read if it exists, else the equilibrated start is written there"},
            {"--equilibrate", "10", "Equilibration of a new start in ps (Berendsen at 297 K; not run when --state is read)"},
+           thermostat_option_temperature(), thermostat_option_friction(), thermostat_option_tau(),
+           {"--seed", "1", "Seed of the lattice start and of the Langevin noise"},
            every_option()},
           liquid_water_scene_run};
 }

@@ -3,6 +3,7 @@
 // and models' refusals as bad input. The integrator is resolved by runs/methods.hpp.
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
@@ -50,6 +51,47 @@ decltype(auto) as_bad_input(F&& f) {
   } catch (const std::invalid_argument& e) {
     throw bad_input(e.what());
   }
+}
+
+/// A thermostat's settings as typed (scenes whose integrator may carry -BAOAB, -OBABO or -NHC).
+struct thermostat_request {
+  double kelvin = 300, friction_per_ps = 1, tau_ps = 0.1;
+  std::uint64_t seed = 1;
+};
+
+inline scene_option thermostat_option_temperature() {
+  return {"--temperature", "", "At a temperature (an integrator with -BAOAB, -OBABO or -NHC): the target in K (default 300)"};
+}
+inline scene_option thermostat_option_friction() { return {"--friction", "", "Langevin friction per ps (-BAOAB, -OBABO; default 1)"}; }
+inline scene_option thermostat_option_tau() { return {"--tau", "", "Nose-Hoover chains' period in ps (-NHC; default 0.1)"}; }
+
+/// --temperature, --friction, --tau and --seed for an integrator with a thermostat; none without one.
+/// Each is refused where it would go unused (without a thermostat, --friction with chains, --tau with
+/// Langevin), so that a number typed is never silently ignored.
+inline std::optional<thermostat_request> read_thermostat(const scene_request& r, const models::md_integrator& integrator) {
+  const auto given = [&](const char* name) { return !option(r, name).empty(); };
+  if (!integrator.thermostat) {
+    for (const char* name : {"--temperature", "--friction", "--tau"})
+      if (given(name))
+        throw bad_input(std::string(name) + " needs an integrator at a temperature: " + integrator.name + "-BAOAB, -OBABO or -NHC");
+    return std::nullopt;
+  }
+  thermostat_request t;
+  const bool chain = *integrator.thermostat == schemes::thermostat_placement::chain;
+  if (given("--temperature")) t.kelvin = positive_number(option(r, "--temperature"), "--temperature");
+  if (given("--friction")) {
+    if (chain) throw bad_input("--friction is the Langevin thermostat's (-BAOAB, -OBABO); " + integrator.name + " takes --tau");
+    t.friction_per_ps = positive_number(option(r, "--friction"), "--friction");
+  }
+  if (given("--tau")) {
+    if (!chain) throw bad_input("--tau is the Nose-Hoover chains' (-NHC); " + integrator.name + " takes --friction");
+    t.tau_ps = positive_number(option(r, "--tau"), "--tau");
+  }
+  t.seed = static_cast<std::uint64_t>(integer_in_range(option(r, "--seed"), "--seed", 0, std::numeric_limits<long>::max()));
+  if (t.kelvin > 1e5) throw bad_input("--temperature must be at most 1e5 K");
+  if (t.friction_per_ps > 1e4) throw bad_input("--friction must be at most 1e4 per ps");
+  if (t.tau_ps > 1e6) throw bad_input("--tau must be at most 1e6 ps");
+  return t;
 }
 
 }  // namespace rotlie::runs::scene_support

@@ -22,6 +22,7 @@
 #include "rotlie/models/closed_form_rotors.hpp"
 #include "rotlie/models/composition.hpp"
 #include "rotlie/models/table_rotor.hpp"
+#include "rotlie/models/thermostats/thermostatted_bodies.hpp"
 #include "rotlie/models/torqued_rigid_bodies.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
 
@@ -33,6 +34,8 @@ struct md_integrator {
   std::string rotor = "exact";  ///< a closed-form rotor's name (closed_form_rotors.hpp), or empty: rotor_table
   std::string rotor_table;   ///< the free-rotation table's name (an empty rotor only)
   int f = 1;                 ///< force evaluations per step
+  /// at a temperature: where the thermostat goes in the TV table (with_thermostatted_integrator); none: NVE
+  std::optional<schemes::thermostat_placement> thermostat;
 
   bool table_rotor() const { return rotor.empty(); }
 };
@@ -46,8 +49,8 @@ inline constexpr const char* mrdl_reversed_rotor_table = "ABCBA2:CBA";
 /// the TV table and the rotor (a listed rotor's name, else a table's); f from the TV table unless given.
 inline md_integrator md_integrator_of(std::string name, std::string tv_table, const std::string& rotor, int f = 0) {
   if (f == 0) f = schemes::force_evaluations(*schemes::reference_scheme(tv_table));
-  if (is_closed_form_rotor(rotor)) return {std::move(name), std::move(tv_table), rotor, "", f};
-  return {std::move(name), std::move(tv_table), "", rotor, f};
+  if (is_closed_form_rotor(rotor)) return {std::move(name), std::move(tv_table), rotor, "", f, std::nullopt};
+  return {std::move(name), std::move(tv_table), "", rotor, f, std::nullopt};
 }
 
 /// One body type as a scene states it; the rotor comes from the integrator. For a table rotor,
@@ -60,14 +63,13 @@ struct body_kind {
   const schemes::scheme_table* rotor_table = nullptr;
 };
 
-/// The composition of an integrator for bodies of several types under `potential`, in `units`, handed
-/// to visit(const composition<torqued_rigid_bodies<T, Potential, Rotor>>&) (every branch must return
-/// the same type). Throws std::invalid_argument when a table cannot be found or does not load.
+/// The system of bodies under `potential` with the integrator's rotor for each type, handed to
+/// visit_system(torqued_rigid_bodies<T, Potential, Rotor>) (every branch must return the same type).
+/// Throws std::invalid_argument when a rotor table cannot be found or does not load.
 template <class T, class Potential, class Visitor>
-auto with_md_integrator(const md_integrator& spec, const std::vector<body_kind<T>>& kinds, const Potential& potential,
-                        const unit_system<T>& units, Visitor&& visit) {
+auto with_md_system(const md_integrator& spec, const std::vector<body_kind<T>>& kinds, const Potential& potential,
+                    const unit_system<T>& units, Visitor&& visit_system) {
   static_assert(torque_potential<Potential, T>, "the scene's potential must be a torque_potential (scene_contracts.hpp)");
-  const auto tv = *schemes::reference_scheme(spec.tv_table);
   // one rotor per body type, all of one kind
   auto run = [&](auto rotor_of) {
     using rotor = decltype(rotor_of(kinds.front()));
@@ -77,7 +79,7 @@ auto with_md_integrator(const md_integrator& spec, const std::vector<body_kind<T
     std::vector<body_type<T, rotor>> types;
     types.reserve(kinds.size());
     for (const auto& k : kinds) types.push_back({k.mass, k.moments, rotor_of(k)});
-    return visit(composition<system>(tv, system(std::move(types), potential, units)));
+    return visit_system(system(std::move(types), potential, units));
   };
   if (!spec.table_rotor())
     return with_closed_form_rotor<T>(spec.rotor, [&](auto rotor) {
@@ -94,6 +96,31 @@ auto with_md_integrator(const md_integrator& spec, const std::vector<body_kind<T
       throw std::invalid_argument("integrator " + schemes::printable_text(spec.name) + ": '" + schemes::printable_text(spec.rotor_table) +
                                   "' is not a reference scheme (a dedicated table must be solved for the body first)");
     return table_rotor<T>(*table, k.moments);
+  });
+}
+
+/// The composition of an integrator for bodies of several types under `potential`, in `units`, handed
+/// to visit(const composition<torqued_rigid_bodies<T, Potential, Rotor>>&) (every branch must return
+/// the same type). Throws std::invalid_argument when a table cannot be found or does not load.
+template <class T, class Potential, class Visitor>
+auto with_md_integrator(const md_integrator& spec, const std::vector<body_kind<T>>& kinds, const Potential& potential,
+                        const unit_system<T>& units, Visitor&& visit) {
+  const auto tv = *schemes::reference_scheme(spec.tv_table);
+  return with_md_system<T>(spec, kinds, potential, units, [&](auto system) { return visit(composition<decltype(system)>(tv, std::move(system))); });
+}
+
+/// The same integrator at a temperature: its TV table with the thermostat at `placement`
+/// (schemes::thermostatted_table: BAOAB, OBABO, NHC), visit(const composition<thermostatted_bodies<…>>&).
+/// Throws std::invalid_argument as with_md_integrator, and for parameters the thermostat cannot take.
+template <class Potential, class Visitor>
+auto with_thermostatted_integrator(const md_integrator& spec, schemes::thermostat_placement placement, const thermostat_parameters& bath,
+                                   const std::vector<body_kind<double>>& kinds, const Potential& potential,
+                                   const unit_system<double>& units, Visitor&& visit) {
+  check_thermostat(bath, placement);
+  const auto table = schemes::thermostatted_table(*schemes::reference_scheme(spec.tv_table), placement);
+  return with_md_system<double>(spec, kinds, potential, units, [&](auto system) {
+    using bodies = thermostatted_bodies<decltype(system)>;
+    return visit(composition<bodies>(table, bodies(std::move(system), bath)));
   });
 }
 

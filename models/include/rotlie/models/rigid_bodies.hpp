@@ -5,9 +5,11 @@
 // step's first (first-same-as-last), and the time t: the coordinate the free flights advance and the
 // kicks read, so that a time-dependent potential is evaluated at each kick stage's own time (H(x, t)
 // made autonomous by adding t to the phase space). Units: those of the system (unit_system.hpp).
+#include <cstdint>
 #include <vector>
 
 #include "rotlie/models/rigid_body.hpp"
+#include "rotlie/models/thermostats/nose_hoover_chain.hpp"
 #include "rotlie/models/step_clock.hpp"
 
 namespace rotlie::models {
@@ -17,6 +19,14 @@ struct rigid_body_state {
   vec3<T> q{}, p{};
   body_state<T> rot;  ///< (Q, G)
   unsigned type = 0;  ///< the body's type: an index into the system's body types (mass, moments, rotor)
+};
+
+/// A thermostat's own state (thermostats/thermostatted_bodies.hpp): the Ornstein–Uhlenbeck stages drawn so
+/// far (the noise's key) and the Nosé–Hoover chains on translation and rotation.
+struct bath_state {
+  std::uint64_t draws = 0;
+  nose_hoover_chain translation, rotation;
+  nose_hoover_chain_state translation_state, rotation_state;
 };
 
 template <class T>
@@ -30,6 +40,7 @@ struct rigid_bodies_state {
   bool forces_current = false;
   unsigned long forces_of = 0;  ///< which system's potential the cached forces are of (its identity)
   long force_evaluations = 0;
+  bath_state bath;  ///< a thermostat's state (none acts on a system without one)
 };
 
 template <class T>

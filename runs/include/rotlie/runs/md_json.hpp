@@ -10,6 +10,7 @@
 #include "rotlie/models/experiments/dipole_field_experiment.hpp"
 #include "rotlie/models/experiments/free_water_experiment.hpp"
 #include "rotlie/models/scenes/liquid_water_experiment.hpp"
+#include "rotlie/models/scenes/liquid_water_nvt.hpp"
 
 namespace rotlie::runs {
 
@@ -50,5 +51,9 @@ nlohmann::json dipole_field_json(const md_run_header& h, const models::dipole_fi
 
 /// {"scene": "liquid-water", "integrator", "h_fs", "f", "runs", "molecules", "dE_over_dV_percent", …}
 nlohmann::json liquid_water_json(const models::liquid_water_run_result& r);
+
+/// liquid-water at a temperature (an integrator with -BAOAB, -OBABO, -NHC): "ensemble": "NVT", the
+/// temperatures, V per molecule, g_OO's first peak, D; each measured value as [mean, standard error].
+nlohmann::json liquid_water_nvt_json(const models::liquid_water_nvt_result& r);
 
 }  // namespace rotlie::runs

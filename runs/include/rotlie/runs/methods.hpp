@@ -6,6 +6,9 @@
 //   FAMILY[/ROTOR]        a splitting; ROTOR (families that take one): a listed closed-form rotor
 //                         (models/closed_form_rotors.hpp), a reference scheme with its permutation,
 //                         SCHEME:PERM:LABEL solved for each body's moments, or a scheme-table file
+//   FAMILY[/ROTOR]-BAOAB, -OBABO, -NHC
+//                         md's splittings at a temperature: the TV table with a thermostat's stages
+//                         (schemes/thermostat_tables.hpp; models::md_integrator::thermostat)
 //   odeint-METHOD[:TOL]   Boost.Odeint's adaptive methods, TOL their absolute and relative tolerance
 // What comes out is typed (models::md_integrator, scheme tables solved for the bodies): models/ never
 // reads the name's text.

@@ -85,7 +85,7 @@ class nose_hoover_chain {
 
   /// The chain's share of the kept quantity: Σ Q_k v_k²/2 + dof kT η₁ + kT Σ_{k≥2} η_k.
   double energy(const nose_hoover_chain_state& s) const {
-    if (s.v.size() != Q_.size()) return 0;
+    if (Q_.empty() || s.v.size() != Q_.size()) return 0;  // a chain not yet built, or at rest
     double e = dof_ * kT_ * s.eta[0];
     for (std::size_t k = 0; k < Q_.size(); ++k) e += Q_[k] * s.v[k] * s.v[k] / 2 + (k > 0 ? kT_ * s.eta[k] : 0.0);
     return e;
