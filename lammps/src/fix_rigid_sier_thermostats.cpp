@@ -3,8 +3,8 @@
 // `langevin` on the owned bodies, and N, the two Nosé–Hoover chains of rigid/NAME/nvt/small.
 #include <mpi.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <exception>
 
@@ -25,9 +25,6 @@ using namespace LAMMPS_NS;
 namespace {
 // rigid/nvt/small's test for a missing rotational degree of freedom (an absolute moment, mass·length²)
 constexpr double no_moment = 1e-7;
-}  // namespace
-
-namespace {
 
 // rigid/nvt/small's count of a body's degrees of freedom: `dimension` translational ones; 3 rotational
 // ones less one for each moment below 1e-7 (a linear body has 2), 1 in 2-d

@@ -58,7 +58,7 @@ BOOST_AUTO_TEST_SUITE(thermostat_ranks_test)
 // see the kinetic energy summed over the ranks, so the two runs are the same integration, with sums in
 // another order only. Round-off (1e-16) grows by about e per 10 fs in the liquid: after 200 fs about
 // 1e-16 · e^20 ≈ 1e-7 relative at worst, in practice far less; a run with another seed (other noise)
-// differs by tenths of an ångström, which the tolerances (1e-6 Å, 1e-8 relative in thermo) tell apart.
+// differs by ångströms (2.6 Å measured), which the tolerances (1e-6 Å, 1e-8 relative in thermo) tell apart.
 BOOST_AUTO_TEST_CASE(one_and_two_ranks_agree) {
   if (!have_mpirun()) {
     rotlie::test::skip("no mpirun");
