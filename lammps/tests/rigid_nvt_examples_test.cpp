@@ -13,6 +13,9 @@
 // between SIER4's inner force evaluations.
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 #include "skip.hpp"
 
 #include "lmp_rotlie_runner.hpp"
@@ -70,6 +73,47 @@ BOOST_AUTO_TEST_CASE(deposit_example_runs_with_the_sier_nvt_style) {
   const int status = d.run("in.deposit", with("rigid/sier4/nvt/small", false));
   BOOST_TEST(status != 0);
   BOOST_TEST(d.output.find("ERROR: Fix rigid/sier4/nvt/small: fix 3 (nve) also integrates atoms") != std::string::npos, d.output);
+}
+
+// LAMMPS's 2-d micelle (micelle/in.micelle-rigid): its thermostatted stage, `fix rigid ... langevin 0.45
+// 0.45 0.5 112211` with enforce2d, run with rigid/sier2/small's langevin instead, 2000 steps of 0.005.
+// In 2-d the O-step acts on vx, vy and the rotation about z only: the atoms' z kinetic energy must stay
+// at round-off (under LAMMPS's own rigid langevin it grows to 1.9e6, see README.md), and the bodies'
+// translational and rotational temperatures at the O-stage (f_5[1], f_5[2]; 2 and 1 degrees of freedom
+// a body) must average 0.45 within 10 % over the last 1000 steps (150 bodies: 5 % a sample).
+BOOST_AUTO_TEST_CASE(micelle_langevin_stage_in_2d) {
+  const fs::path folder = fs::path(ROTLIE_LAMMPS_EXAMPLES) / "micelle";
+  if (!fs::exists(folder / "in.micelle-rigid")) {
+    rotlie::test::skip("no LAMMPS examples at " + folder.string() + " (Debian: lammps-examples)");
+    return;
+  }
+  scratch d("micelle_langevin");
+  fs::copy_file(folder / "data.micelle", d.dir / "data.micelle");
+  const std::string text = file_text(folder / "in.micelle-rigid");
+  const std::string stage = "fix\t\t5 solute rigid molecule langevin 0.45 0.45 0.5 112211\nfix\t\t4 all enforce2d\nrun\t\t500\n";
+  BOOST_REQUIRE_MESSAGE(text.find(stage) != std::string::npos, "the installed example differs from LAMMPS 29 Sep 2021's");
+  const std::string input = text.substr(0, text.find(stage)) +
+                            "fix\t\t5 solute rigid/sier2/small molecule langevin 0.45 0.45 0.5 112211\nfix\t\t4 all enforce2d\n"
+                            "variable vzz atom 0.5*mass*vz*vz\ncompute kz all reduce sum v_vzz\n"
+                            "thermo_style custom step temp c_kz f_5[1] f_5[2]\nthermo 10\nrun 2000\n";
+  BOOST_REQUIRE_MESSAGE(d.run("in.micelle", input) == 0, d.output);
+  const auto blocks = thermo_blocks(d.output);
+  BOOST_REQUIRE(!blocks.empty());
+  const auto& b = blocks.back();
+  const auto step = b.column("Step"), kz = b.column("c_kz"), Tt = b.column("f_5[1]"), Tr = b.column("f_5[2]");
+  std::vector<double> late_t, late_r;
+  double largest_kz = 0;
+  for (std::size_t k = 0; k < step.size(); ++k) {
+    largest_kz = std::max(largest_kz, kz[k]);
+    if (step[k] >= 1000 + step.front()) late_t.push_back(Tt[k]), late_r.push_back(Tr[k]);
+  }
+  BOOST_REQUIRE(late_t.size() > 90u);
+  BOOST_TEST_MESSAGE("micelle, rigid/sier2/small langevin 0.45 in 2-d: largest z kinetic energy " << largest_kz
+                                                                                                  << "; translational and rotational temperatures "
+                                                                                                  << mean(late_t) << ", " << mean(late_r));
+  BOOST_TEST(largest_kz < 1e-15);
+  BOOST_TEST(std::abs(mean(late_t) / 0.45 - 1) < 0.1);
+  BOOST_TEST(std::abs(mean(late_r) / 0.45 - 1) < 0.1);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
