@@ -21,8 +21,8 @@ it too (T_rot mid) for the langevin runs of the SIER fixes.
 
 Cost: the runs are independent LAMMPS processes on one rank each (--ranks to change), --jobs at a
 time. With the defaults (216 molecules, 1 ps + 4 ps per run, 30 runs) 10,208 steps per fix, 122,000
-force evaluations in all (SIER4 makes 4 a step); at about 3 ms per evaluation on one core (512
-molecules take 6.7 ms in examples/lammps/in.tip3p-pppm), an estimated 7-10 minutes. Not run by ctest.
+force evaluations in all (SIER4 makes 4 a step): 9.5 min wall (7.5 min CPU) on one core of a 2-core
+machine shared with other work. Not run by ctest.
 
 Writes --out (default build/release/thermostat-sweep): the inputs, LAMMPS's logs, sweep.csv, sweep.md.
 """
