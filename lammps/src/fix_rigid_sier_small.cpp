@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -28,6 +30,7 @@
 #include "rotlie/models/exact_free_rotation_batch.hpp"
 #include "rotlie/runs/methods.hpp"
 #include "rotlie/schemes/reference_schemes.hpp"
+#include "rotlie/schemes/thermostat_tables.hpp"
 #include "update.h"
 #include "utils.h"
 
@@ -35,28 +38,100 @@ namespace rotlie::lammps {
 
 using namespace LAMMPS_NS;
 
+namespace {
+
+// "rigid/sier2/nvt/small" → "rigid/sier2/small": the integrator family's style
+std::string family_style_of(const std::string& style) {
+  const std::string nvt = "/nvt/small";
+  if (style.size() > nvt.size() && style.compare(style.size() - nvt.size(), nvt.size(), nvt) == 0)
+    return style.substr(0, style.size() - nvt.size()) + "/small";
+  return style;
+}
+
+}  // namespace
+
+std::string nvt_style_of(const std::string& style) {
+  const std::string small = "/small";
+  if (style.size() <= small.size() || style.compare(style.size() - small.size(), small.size(), small) != 0) return style + "/nvt";
+  return style.substr(0, style.size() - small.size()) + "/nvt/small";
+}
+
 struct FixRigidSierSmall::arguments {
   std::vector<std::string> words;
   std::string rotor = "exact";
+  thermostat_settings thermostat;
   std::vector<char*> argv;
 
   arguments(LAMMPS* lmp, int narg, char** arg) {
     const std::string style = narg > 2 ? arg[2] : "rigid/sier/small";
-    // thermostat and barostat keywords of fix rigid/small (and of its nvt/npt/nph variants)
-    static const std::set<std::string> refused = {"langevin", "temp", "iso", "aniso", "x", "y", "z",
-                                                  "couple", "tparam", "pchain", "dilate"};
+    const std::string family = family_style_of(style), nvt = nvt_style_of(family);
+    const bool chains = style != family;  // rigid/NAME/nvt/small
+    const std::string fix = "Fix " + style + ": ";
+    auto refuse = [&](const std::string& why) { lmp->error->all(FLERR, fix + why); };
+    // the barostat keywords of rigid/npt/small and rigid/nph/small
+    static const std::set<std::string> barostat = {"iso", "aniso", "x", "y", "z", "couple", "pchain", "dilate", "press", "ptemp"};
     static const std::set<std::string> with_value = {"infile", "reinit", "mol", "gravity"};
     int first = std::min(narg, 4);
     if (narg > 3 && std::strcmp(arg[3], "custom") == 0) first = std::min(narg, 5);
     for (int i = 0; i < first; ++i) words.emplace_back(arg[i]);
+    // the values of keyword `key` at arg[i + 1 …]: `count` of them, named in `names`
+    auto values = [&](int i, int count, const std::string& key, const std::string& names) {
+      if (i + count >= narg)
+        refuse(key + " needs " + std::to_string(count) + " values: " + names + " (" + std::to_string(narg - i - 1) + " given)");
+    };
+    auto positive = [&](const char* text, const std::string& what) {
+      char* end = nullptr;
+      const double x = std::strtod(text, &end);
+      if (end == text || *end != '\0' || !(x > 0) || !std::isfinite(x)) refuse(what + " must be a number > 0, not '" + text + "'");
+      return x;
+    };
+    auto integer = [&](const char* text, const std::string& what, long low, long high) {
+      char* end = nullptr;
+      errno = 0;
+      const long n = std::strtol(text, &end, 10);
+      if (end == text || *end != '\0' || errno == ERANGE || n < low || n > high)
+        refuse(what + " must be an integer " + std::to_string(low) + " to " + std::to_string(high) + ", not '" + text + "'");
+      return n;
+    };
+    bool tparam = false;
     for (int i = first; i < narg; ++i) {
       const std::string w = arg[i];
       if (w == "rotor") {
-        if (i + 1 >= narg) lmp->error->all(FLERR, "Fix " + style + ": rotor needs a value (" + rotor_values_help() + ")");
+        if (i + 1 >= narg) refuse("rotor needs a value (" + rotor_values_help() + ")");
         rotor = arg[++i];
-      } else if (refused.count(w)) {
-        lmp->error->all(FLERR, "Fix " + style + ": keyword '" + w +
-                                   "' is a thermostat or barostat; " + style + " integrates at constant energy (NVE only)");
+      } else if (w == "langevin") {
+        if (chains)
+          refuse("keyword 'langevin' is " + family + "'s (the Langevin O-step); " + style +
+                 " thermostats by Nose-Hoover chains (temp Tstart Tstop Tdamp): use one or the other style");
+        values(i, 4, w, "Tstart Tstop Tperiod seed");
+        thermostat.what = thermostat_settings::kind::langevin;
+        thermostat.t_start = positive(arg[i + 1], "langevin Tstart");
+        thermostat.t_stop = positive(arg[i + 2], "langevin Tstop");
+        thermostat.period = positive(arg[i + 3], "langevin Tperiod");
+        thermostat.seed = static_cast<std::uint64_t>(integer(arg[i + 4], "langevin seed", 1, 2147483647L));
+        i += 4;
+      } else if (w == "temp" || w == "tparam") {
+        if (!chains)
+          refuse("keyword '" + w + "' is " + nvt + "'s (Nose-Hoover chains); " + style +
+                 " takes langevin Tstart Tstop Tperiod seed, or integrates at constant energy without it");
+        if (w == "temp") {
+          values(i, 3, w, "Tstart Tstop Tdamp");
+          thermostat.what = thermostat_settings::kind::chain;
+          thermostat.t_start = positive(arg[i + 1], "temp Tstart");
+          thermostat.t_stop = positive(arg[i + 2], "temp Tstop");
+          thermostat.period = positive(arg[i + 3], "temp Tdamp");
+          i += 3;
+        } else {
+          values(i, 3, w, "Tchain Titer Torder");
+          thermostat.chain_length = static_cast<int>(integer(arg[i + 1], "tparam Tchain", 1, 100));
+          thermostat.iterations = static_cast<int>(integer(arg[i + 2], "tparam Titer", 1, 100));
+          thermostat.order = static_cast<int>(integer(arg[i + 3], "tparam Torder", 3, 5));
+          if (thermostat.order == 4) refuse("tparam Torder must be 3 or 5 (Suzuki-Yoshida), not '4'");
+          tparam = true;
+          i += 3;
+        }
+      } else if (barostat.count(w)) {
+        refuse("keyword '" + w + "' is a barostat's: a barostat around SIER's free flights is not implemented; use fix rigid/npt/small or rigid/nph/small");
       } else if (with_value.count(w) && i + 1 < narg) {
         words.push_back(w);
         words.emplace_back(arg[++i]);
@@ -64,6 +139,9 @@ struct FixRigidSierSmall::arguments {
         words.push_back(w);  // fix rigid/small names what it does not know
       }
     }
+    if (chains && thermostat.what != thermostat_settings::kind::chain)
+      refuse("temp Tstart Tstop Tdamp is required (the chains' target temperature and period)" +
+             std::string(tparam ? "; tparam alone sets only the chains' shape" : ""));
     for (auto& w : words) argv.push_back(w.data());
   }
 };
@@ -71,25 +149,67 @@ struct FixRigidSierSmall::arguments {
 FixRigidSierSmall::FixRigidSierSmall(LAMMPS* lmp, int narg, char** arg) : FixRigidSierSmall(lmp, arguments(lmp, narg, arg)) {}
 
 FixRigidSierSmall::FixRigidSierSmall(LAMMPS* lmp, arguments&& args)
-    : FixRigidSmall(lmp, static_cast<int>(args.argv.size()), args.argv.data()) {
+    : FixRigidSmall(lmp, static_cast<int>(args.argv.size()), args.argv.data()), thermostat_(args.thermostat) {
   try {
-    const auto* family = runs::lammps_style_family(style);
+    const auto* family = runs::lammps_style_family(family_style_of(style));
     if (!family) throw std::invalid_argument("no integrator family has this style");
     tv_table_ = family->tv_table;
     rotors_ = std::make_unique<body_rotors>(parse_rotor(args.rotor));
-    const auto table = schemes::reference_scheme(tv_table_);
-    // V T V … V: a kick first and last, the forces of the step's start and end (first same as last)
-    for (std::size_t k = 0; k < table->stages.size(); ++k) {
-      if (table->stages[k].part != (k % 2 == 0 ? 'V' : 'T') || table->stages.size() % 2 == 0)
-        throw std::invalid_argument(tv_table_ + " does not alternate V T ... V");
-      coefficients_.push_back(models::parse_scalar<double>(table->stages[k].value));
+    auto table = schemes::reference_scheme(tv_table_);
+    if (!table) throw std::invalid_argument("no TV table " + tv_table_);
+    // V T V … V with thermostat letters: a kick first and last, the forces of the step's start and end
+    // (first same as last)
+    if (thermostat_.what == thermostat_settings::kind::langevin)
+      table = schemes::thermostatted_table(*table, schemes::thermostat_placement::middle);
+    else if (thermostat_.what == thermostat_settings::kind::chain)
+      table = schemes::thermostatted_table(*table, schemes::thermostat_placement::chain);
+    table_name_ = table->name;
+    force_evaluations_ = schemes::force_evaluations(*table);
+    const auto& st = table->stages;
+    bool first_kick = false;
+    for (std::size_t k = 0; k < st.size(); ++k) {
+      const char part = st[k].part;
+      if (part != 'V' && part != 'T' && !schemes::is_thermostat_letter(part))
+        throw std::invalid_argument(table_name_ + " has a stage " + std::string(1, part) + ": not a TV table");
+      if (part == 'T' && !first_kick) throw std::invalid_argument(table_name_ + " moves before its first kick: not V T ... V");
+      if (part == 'V') first_kick = true, last_kick_ = k;
+      stages_.push_back({part, models::parse_scalar<double>(st[k].value), part == 'O' ? o_stages_++ : -1});
     }
+    for (std::size_t k = last_kick_; k < st.size(); ++k)
+      if (st[k].part == 'T') throw std::invalid_argument(table_name_ + " moves after its last kick: not V T ... V");
   } catch (const std::exception& e) {
     error->all(FLERR, "Fix " + std::string(style) + ": " + e.what());
   }
-  if (comm->me == 0)
-    utils::logmesg(lmp, "  " + std::string(style) + ": " + tv_table_ + ", " + std::to_string((coefficients_.size() - 1) / 2) +
-                            " force evaluations per step, rotor " + args.rotor + "\n");
+  if (thermostat_.what == thermostat_settings::kind::chain) {
+    // the chains' energy, the share of the conserved quantity etotal + f_ID (thermo's ecouple, econserve)
+    scalar_flag = 1;
+    extscalar = 1;
+    global_freq = 1;
+    ecouple_flag = 1;
+    restart_global = 1;
+  } else if (thermostat_.what == thermostat_settings::kind::langevin) {
+    vector_flag = 1;
+    size_vector = 2;
+    extvector = 0;
+    global_freq = 1;
+  }
+  if (comm->me == 0) {
+    std::string line = "  " + std::string(style) + ": " + table_name_ + ", " + std::to_string(force_evaluations_) +
+                       " force evaluations per step, rotor " + args.rotor;
+    char text[200];
+    if (thermostat_.what == thermostat_settings::kind::langevin) {
+      std::snprintf(text, sizeof text, "; Langevin O-step: %g to %g over each run, damping period %g (friction %g per time unit), seed %llu",
+                    thermostat_.t_start, thermostat_.t_stop, thermostat_.period, 1 / thermostat_.period,
+                    static_cast<unsigned long long>(thermostat_.seed));
+      line += text;
+    } else if (thermostat_.what == thermostat_settings::kind::chain) {
+      std::snprintf(text, sizeof text, "; Nose-Hoover chains (translations, rotations): %g to %g over each run, Tdamp %g, length %d, %d iteration(s), order %d",
+                    thermostat_.t_start, thermostat_.t_stop, thermostat_.period, thermostat_.chain_length, thermostat_.iterations,
+                    thermostat_.order);
+      line += text;
+    }
+    utils::logmesg(lmp, line + "\n");
+  }
 }
 
 FixRigidSierSmall::~FixRigidSierSmall() = default;
@@ -105,7 +225,7 @@ void FixRigidSierSmall::init() {
   // (fix nve on free atoms, a second rigid fix) would move them by whole steps between them and the
   // composition would lose its order (seen: LAMMPS's rigid/in.rigid.tnr, rods with fix nve on their
   // tethers, 1000× the energy error of rigid/nve/small). SIER2 (V T V) is LAMMPS's own step layout.
-  if (coefficients_.size() > 3)
+  if (force_evaluations_ > 1)
     for (int i = 0; i < modify->nfix; ++i)
       if (modify->fix[i] != this && modify->fix[i]->time_integrate)
         error->all(FLERR, "Fix " + std::string(style) + ": fix " + modify->fix[i]->id + " (" + modify->fix[i]->style +
@@ -117,6 +237,10 @@ void FixRigidSierSmall::init() {
 void FixRigidSierSmall::setup(int vflag) {
   FixRigidSmall::setup(vflag);
   resolve_shapes();
+  if (thermostat_.what == thermostat_settings::kind::chain) {
+    chains_ = {};  // built anew at this run's target (their masses), their state kept
+    count_and_build_chains();
+  }
 }
 
 void FixRigidSierSmall::resolve_shapes() {
@@ -355,27 +479,46 @@ void FixRigidSierSmall::place_atoms(int vflag) {
   set_xv();
 }
 
-void FixRigidSierSmall::initial_integrate(int vflag) {
-  // every stage but the last kick, which final_integrate gives with the forces LAMMPS computes next
-  const std::size_t n = coefficients_.size();
-  for (std::size_t k = 0; k + 1 < n; ++k) {
-    if (k % 2 == 0) {
-      if (k > 0) {
-        mid_step_forces(lmp);
-        compute_forces_and_torques();
-      }
-      kick(coefficients_[k]);
-    } else {
-      free_flight(coefficients_[k]);
-      // the constraint virial is tallied in the step's last placement only (rigid/small's formula)
-      place_atoms(k + 2 == n ? vflag : 0);
+void FixRigidSierSmall::run_stages(std::size_t first, std::size_t last) {
+  for (std::size_t k = first; k < last; ++k) {
+    const step_stage& st = stages_[k];
+    switch (st.part) {
+      case 'V':
+        // fresh forces only when a free flight moved the bodies since the last evaluation (the kicks on
+        // either side of a thermostat stage share them)
+        if (!forces_current_) {
+          if (!atoms_placed_) place_atoms(0);
+          atoms_placed_ = true;
+          mid_step_forces(lmp);
+          compute_forces_and_torques();
+          forces_current_ = true;
+        }
+        kick(st.c);
+        break;
+      case 'T':
+        free_flight(st.c);
+        forces_current_ = atoms_placed_ = false;
+        break;
+      case 'O': langevin_step(st.c, st.o_index); break;
+      case 'N': chain_step(st.c); break;
     }
   }
 }
 
+void FixRigidSierSmall::initial_integrate(int vflag) {
+  // every stage before the last kick, which final_integrate gives with the forces LAMMPS computes next
+  forces_current_ = atoms_placed_ = true;
+  run_stages(0, last_kick_);
+  // the atoms where the bodies are, for LAMMPS's evaluation; the constraint virial is tallied in this,
+  // the step's last placement only (rigid/small's formula)
+  if (!atoms_placed_) place_atoms(vflag);
+  atoms_placed_ = true;
+}
+
 void FixRigidSierSmall::final_integrate() {
   if (!earlyflag) compute_forces_and_torques();
-  kick(coefficients_.back());
+  forces_current_ = atoms_placed_ = true;
+  run_stages(last_kick_, stages_.size());
   commflag = RigidConst::FINAL;
   comm->forward_comm_fix(this, 10);
   set_v();

@@ -10,6 +10,7 @@
 
 #include "lammps.h"
 #include "lammpsplugin.h"
+#include "fix_rigid_sier_small.h"
 #include "register_styles.h"
 #include "rotlie/runs/methods.hpp"
 #include "version.h"
@@ -37,11 +38,15 @@ __attribute__((visibility("default"))) void lammpsplugin_init(void* lmp, void* h
     if (!f.lammps_style) continue;
     // the registry's rows live as long as the program: their text can be handed to LAMMPS
     static std::vector<std::string> texts;
-    texts.reserve(2 * rotlie::runs::method_families().size());  // no reallocation: LAMMPS keeps the pointers
-    plugin.name = texts.emplace_back(rotlie::runs::lammps_style_of(f)).c_str();
-    plugin.info = texts.emplace_back("rotlie: " + f.name + " (" + f.tv_table + ", " + std::to_string(f.force_evaluations()) +
-                                     " force evaluations per step) on rigid/small bodies, keyword rotor").c_str();
+    texts.reserve(4 * rotlie::runs::method_families().size());  // no reallocation: LAMMPS keeps the pointers
+    const std::string name = rotlie::runs::lammps_style_of(f);
+    const std::string what = f.name + " (" + f.tv_table + ", " + std::to_string(f.force_evaluations()) + " force evaluations per step) on rigid/small bodies";
+    plugin.name = texts.emplace_back(name).c_str();
+    plugin.info = texts.emplace_back("rotlie: " + what + ", keywords rotor, langevin").c_str();
     plugin.creator.v2 = &create_fix;
+    reg(&plugin, lmp);
+    plugin.name = texts.emplace_back(rotlie::lammps::nvt_style_of(name)).c_str();
+    plugin.info = texts.emplace_back("rotlie: " + what + " with Nose-Hoover chains, keywords rotor, temp, tparam").c_str();
     reg(&plugin, lmp);
   }
 }

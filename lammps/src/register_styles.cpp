@@ -23,7 +23,11 @@ void register_styles(LAMMPS* lmp) {
     lmp->error->all(FLERR, std::string("rotlie's fix styles were built against LAMMPS ") + LAMMPS_VERSION + ", this is LAMMPS " +
                                lmp->version + ": rebuild lammps/ with this version's headers");
   for (const auto& f : runs::method_families())
-    if (f.lammps_style) (*lmp->modify->fix_map)[runs::lammps_style_of(f)] = &create_fix;
+    if (f.lammps_style) {
+      // rigid/NAME/small (NVE, or langevin) and rigid/NAME/nvt/small (Nose-Hoover chains)
+      (*lmp->modify->fix_map)[runs::lammps_style_of(f)] = &create_fix;
+      (*lmp->modify->fix_map)[nvt_style_of(runs::lammps_style_of(f))] = &create_fix;
+    }
 }
 
 }  // namespace rotlie::lammps

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #pragma once
 // The fix styles rigid/NAME/small, one for each family of the method registry that has one
-// (runs/methods.hpp: rigid/sier2/small, rigid/sier4/small, …), added to a running LAMMPS instance's style
+// (runs/methods.hpp: rigid/sier2/small, rigid/sier4/small, …) and its thermostatted variant
+// rigid/NAME/nvt/small, added to a running LAMMPS instance's style
 // map (Modify::fix_map is public), as LAMMPS's PLUGIN package does internally: no plugin support is
 // needed in the LAMMPS build.
 namespace LAMMPS_NS {

@@ -48,9 +48,35 @@ BOOST_AUTO_TEST_CASE(refused_inputs_give_one_error_line) {
   const auto lv_water = rotlie::lie::parse_moments("water");
   std::ofstream(d.dir / "lv_water.scheme") << rotlie::schemes::format_scheme_table(rotlie::runs::scheme_named("N2:BAC:2", lv_water));
 
-  refused(d, pair, "fix r all rigid/sier2/small molecule temp 300 300 100\n", "thermostat or barostat");
-  refused(d, pair, "fix r all rigid/sier4/small molecule langevin 300 300 100 1\n", "thermostat or barostat");
-  refused(d, pair, "fix r all rigid/sier2/small molecule iso 1 1 100\n", "thermostat or barostat");
+  // thermostat keywords: each style's own, with values LAMMPS's rigid/small and rigid/nvt/small accept
+  refused(d, pair, "fix r all rigid/sier2/small molecule temp 300 300 100\n", "keyword 'temp' is rigid/sier2/nvt/small's");
+  refused(d, pair, "fix r all rigid/sier4/small molecule tparam 3 1 3\n", "keyword 'tparam' is rigid/sier4/nvt/small's");
+  refused(d, pair, "fix r all rigid/sier2/nvt/small molecule temp 300 300 100 langevin 300 300 100 1\n",
+          "keyword 'langevin' is rigid/sier2/small's");
+  refused(d, pair, "fix r all rigid/sier2/nvt/small molecule\n", "temp Tstart Tstop Tdamp is required");
+  refused(d, pair, "fix r all rigid/sier4/nvt/small molecule tparam 3 1 3\n", "temp Tstart Tstop Tdamp is required");
+  refused(d, pair, "fix r all rigid/sier2/small molecule langevin 300 300 100\n", "langevin needs 4 values: Tstart Tstop Tperiod seed");
+  refused(d, pair, "fix r all rigid/sier2/small molecule langevin 300 300 0 1\n", "langevin Tperiod must be a number > 0, not '0'");
+  refused(d, pair, "fix r all rigid/sier2/small molecule langevin 300 300 -5 1\n", "langevin Tperiod must be a number > 0");
+  refused(d, pair, "fix r all rigid/sier4/small molecule langevin 0 300 100 1\n", "langevin Tstart must be a number > 0, not '0'");
+  refused(d, pair, "fix r all rigid/sier2/small molecule langevin 300 -1 100 1\n", "langevin Tstop must be a number > 0");
+  refused(d, pair, "fix r all rigid/sier2/small molecule langevin 300 300 100 0\n", "langevin seed must be an integer 1 to");
+  refused(d, pair, "fix r all rigid/sier2/small molecule langevin 300 300 100 -7\n", "langevin seed must be an integer 1 to");
+  refused(d, pair, "fix r all rigid/sier2/small molecule langevin 300 300 100 1.5\n", "langevin seed must be an integer 1 to");
+  refused(d, pair, "fix r all rigid/sier2/small molecule langevin 300 300 hundred 1\n", "langevin Tperiod must be a number > 0, not 'hundred'");
+  refused(d, pair, "fix r all rigid/sier2/nvt/small molecule temp 300 300\n", "temp needs 3 values: Tstart Tstop Tdamp");
+  refused(d, pair, "fix r all rigid/sier2/nvt/small molecule temp 300 300 0\n", "temp Tdamp must be a number > 0");
+  refused(d, pair, "fix r all rigid/sier4/nvt/small molecule temp -300 300 100\n", "temp Tstart must be a number > 0");
+  refused(d, pair, "fix r all rigid/sier2/nvt/small molecule temp 300 300 100 tparam 0 1 3\n", "tparam Tchain must be an integer 1 to 100");
+  refused(d, pair, "fix r all rigid/sier2/nvt/small molecule temp 300 300 100 tparam 3 0 3\n", "tparam Titer must be an integer 1 to 100");
+  refused(d, pair, "fix r all rigid/sier2/nvt/small molecule temp 300 300 100 tparam 3 1 4\n", "tparam Torder must be 3 or 5");
+  refused(d, pair, "fix r all rigid/sier2/nvt/small molecule temp 300 300 100 tparam 3 1\n", "tparam needs 3 values");
+  // barostat keywords: not implemented, LAMMPS's own fixes named
+  for (const char* keyword : {"iso 1 1 100", "aniso 1 1 100", "x 1 1 100", "y 1 1 100", "z 1 1 100", "couple xyz", "pchain 10", "dilate all"})
+    refused(d, pair, std::string("fix r all rigid/sier2/small molecule ") + keyword + "\n",
+            "is a barostat's: a barostat around SIER's free flights is not implemented; use fix rigid/npt/small or rigid/nph/small");
+  refused(d, pair, "fix r all rigid/sier4/nvt/small molecule temp 300 300 100 iso 1 1 1000\n", "use fix rigid/npt/small or rigid/nph/small");
+  refused(d, pair, "fix r all rigid/sier2/small molecule langevin 300 300 100\n", "langevin needs 4 values", 2);
   refused(d, pair, "fix r all rigid/sier2/small molecule rotor\n", "rotor needs a value");
   refused(d, pair, "fix r all rigid/sier2/small molecule rotor NOPE:ABC:1\n", "NOPE");
   refused(d, pair, "fix r all rigid/sier2/small molecule rotor lv_water.scheme\n", "not for body");

@@ -1,0 +1,215 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Thermostatted rigid TIP3P at 300 K against the time step: LAMMPS's rigid/nvt/small and rigid/small
+langevin against rotlie's rigid/sier2/nvt/small, rigid/sier2/small langevin, rigid/sier4/nvt/small and
+rigid/sier4/small langevin, at h = 1, 2, 4, 6, 8 fs (--steps).
+
+The system: --molecules TIP3P molecules (n³; default 216) on a simple cubic lattice at 0.9973 g/cm³,
+lj/cut/coul/long 9 Å with PPPM 1e-5 (as examples/lammps/in.tip3p-pppm), melted once for --melt steps
+of 1 fs under rigid/nvt/small and written as a data file. Each run starts from it: --equil ps to settle
+at the run's step, then --sample ps measured every 20 fs. Thermostats: Tdamp = Tperiod = 100 fs;
+langevin seed 4711.
+
+For each run the table gives: the potential energy per molecule (kcal/mol; PPPM's, the intramolecular
+pairs excluded), the translational and rotational temperatures at the step's end from compute ke/rigid
+and erotate/rigid (2E/(3 N k_B)), and the CPU time per step (LAMMPS's loop time over the sampled
+steps; SIER4 makes 4 force evaluations per step, the others 1). A run that LAMMPS stops (lost atoms, a
+non-finite energy) is marked `failed`. Temperatures are those LAMMPS's thermo sees: under BAOAB
+(rigid/sierN/small langevin) the step-end rotational temperature is low by about (hω)²/4 for the
+librations ω (3.6 % at 4 fs), while the mid-step one (the fix's f_ID[2]) is unbiased: the table gives
+it too (T_rot mid) for the langevin runs of the SIER fixes.
+
+Cost: the runs are independent LAMMPS processes on one rank each (--ranks to change), --jobs at a
+time. With the defaults (216 molecules, 1 ps + 4 ps per run, 30 runs) 10,208 steps per fix, 122,000
+force evaluations in all (SIER4 makes 4 a step): 9.5 min wall (7.5 min CPU) on one core of a 2-core
+machine shared with other work. Not run by ctest.
+
+Writes --out (default build/release/thermostat-sweep): the inputs, LAMMPS's logs, sweep.csv, sweep.md.
+"""
+import argparse
+import concurrent.futures
+import csv
+import math
+import os
+import re
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+BOLTZ = 0.0019872067  # LAMMPS's k_B in units real (kcal/mol/K)
+
+FIXES = [
+    ("rigid/nvt/small", "rigid/nvt/small molecule temp 300 300 100", False),
+    ("rigid/small langevin", "rigid/small molecule langevin 300 300 100 4711", False),
+    ("rigid/sier2/nvt/small", "rigid/sier2/nvt/small molecule temp 300 300 100", False),
+    ("rigid/sier2/small langevin", "rigid/sier2/small molecule langevin 300 300 100 4711", True),
+    ("rigid/sier4/nvt/small", "rigid/sier4/nvt/small molecule temp 300 300 100", False),
+    ("rigid/sier4/small langevin", "rigid/sier4/small molecule langevin 300 300 100 4711", True),
+]
+
+SYSTEM = """units           real
+atom_style      full
+boundary        p p p
+{start}
+bond_style      zero
+bond_coeff      1 0.9572
+angle_style     zero
+angle_coeff     1 104.52
+special_bonds   lj/coul 0.0 0.0 0.0
+pair_style      lj/cut/coul/long 9.0
+pair_coeff      1 1 0.1521 3.1507
+pair_coeff      * 2 0.0 1.0
+kspace_style    pppm 1.0e-5
+neighbor        2.0 bin
+neigh_modify    every 1 delay 0 check yes
+"""
+
+LATTICE = """lattice         sc 3.1043
+region          box block 0 {n} 0 {n} 0 {n}
+create_box      2 box bond/types 1 angle/types 1 extra/bond/per/atom 2 extra/angle/per/atom 1 extra/special/per/atom 2
+mass            1 15.9994
+mass            2 1.008
+molecule        water {mol}
+create_atoms    0 box mol water 4928459"""
+
+
+def melt_input(n, mol, steps, data):
+    return (SYSTEM.format(start=LATTICE.format(n=n, mol=mol)) +
+            "velocity all create 300.0 12345 mom yes rot yes dist gaussian\n"
+            "fix start all rigid/nvt/small molecule temp 300.0 300.0 100.0\n"
+            "timestep 1.0\nthermo 500\nrun %d\nwrite_data %s nocoeff\n" % (steps, data))
+
+
+def run_input(data, fix, dt, equil, sample, mid):
+    every = max(1, int(round(20 / dt)))
+    columns = "step temp pe c_kt c_kr" + (" f_r[2]" if mid else "")
+    return (SYSTEM.format(start="read_data %s" % data) +
+            "fix r all %s\n" % fix +
+            "compute kt all ke/rigid r\ncompute kr all erotate/rigid r\n"
+            "thermo_style custom %s\nthermo_modify format float %%.10g\n" % columns +
+            "timestep %g\nthermo %d\nrun %d\nrun %d\n" % (dt, every, int(round(equil * 1000 / dt)), int(round(sample * 1000 / dt))))
+
+
+def last_block(text):
+    """The last thermo block's columns and rows, and the loop time and steps of its run."""
+    blocks, current = [], None
+    for line in text.splitlines():
+        w = line.split()
+        if w and w[0] == "Step":
+            current = (w, [])
+            blocks.append(current)
+        elif current is not None and line.startswith("Loop time of"):
+            m = re.match(r"Loop time of (\S+) on \d+ procs for (\d+) steps", line)
+            current[1].append(("loop", float(m.group(1)), int(m.group(2))) if m else None)
+            current = None
+        elif current is not None and len(w) == len(current[0]):
+            try:
+                current[1].append([float(x) for x in w])
+            except ValueError:
+                pass
+    if not blocks:
+        return None
+    header, rows = blocks[-1]
+    loop = [r for r in rows if isinstance(r, tuple)]
+    return header, [r for r in rows if isinstance(r, list)], (loop[0] if loop else None)
+
+
+def mean(xs):
+    return sum(xs) / len(xs) if xs else float("nan")
+
+
+def measure(args, label, fix, dt, mid, molecules, data):
+    name = "%s_%gfs" % (re.sub(r"[^A-Za-z0-9]+", "-", label), dt)
+    folder = os.path.join(args.out, "runs")
+    path = os.path.join(folder, "in." + name)
+    with open(path, "w") as f:
+        f.write(run_input(data, fix, dt, args.equil, args.sample, mid))
+    launcher = ["mpirun"] + (["--allow-run-as-root"] if os.geteuid() == 0 else []) + ["-np", str(args.ranks)] if args.ranks > 1 else []
+    proc = subprocess.run(launcher + [args.lmp, "-in", path, "-log", os.path.join(folder, "log." + name), "-screen", "none"],
+                          cwd=folder, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=dict(os.environ, OMP_NUM_THREADS="1"))
+    row = {"fix": label, "dt_fs": dt, "status": "failed", "pe_per_molecule": "", "T_trans": "", "T_rot": "", "T_rot_mid": "",
+           "cpu_ms_per_step": ""}
+    try:
+        text = open(os.path.join(folder, "log." + name)).read()
+    except OSError:
+        return row
+    block = last_block(text)
+    if proc.returncode != 0 or block is None or block[2] is None:
+        return row
+    header, rows, loop = block
+    col = {c: k for k, c in enumerate(header)}
+    pe = [r[col["PotEng"]] for r in rows]
+    if not all(math.isfinite(x) for x in pe):
+        return row
+    dof = 3 * molecules
+    row.update(status="ok", pe_per_molecule="%.4f" % (mean(pe) / molecules),
+               T_trans="%.1f" % (2 * mean([r[col["c_kt"]] for r in rows]) / (dof * BOLTZ)),
+               T_rot="%.1f" % (2 * mean([r[col["c_kr"]] for r in rows]) / (dof * BOLTZ)),
+               cpu_ms_per_step="%.2f" % (1000 * loop[1] / max(loop[2], 1)))
+    if mid and "f_r[2]" in col:
+        row["T_rot_mid"] = "%.1f" % mean([r[col["f_r[2]"]] for r in rows])
+    return row
+
+
+def main():
+    build = os.path.join(REPO, "build", "release")
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--lmp", default=os.path.join(build, "bin", "lmp_rotlie"), help="lmp_rotlie")
+    p.add_argument("--out", default=os.path.join(build, "thermostat-sweep"))
+    p.add_argument("--molecules", type=int, default=216, help="a cube n³ (default 216 = 6³)")
+    p.add_argument("--melt", type=int, default=2000, help="steps of 1 fs of the shared start's melt")
+    p.add_argument("--equil", type=float, default=1.0, help="ps at the run's own step before sampling")
+    p.add_argument("--sample", type=float, default=4.0, help="ps sampled")
+    p.add_argument("--steps", default="1,2,4,6,8", help="time steps in fs, comma-separated")
+    p.add_argument("--fixes", default=",".join(str(k) for k in range(len(FIXES))),
+                   help="which rows of the list (0 rigid/nvt/small ... 5 rigid/sier4/small langevin)")
+    p.add_argument("--ranks", type=int, default=1)
+    p.add_argument("--jobs", type=int, default=1, help="runs at once")
+    args = p.parse_args()
+    n = round(args.molecules ** (1 / 3))
+    if n ** 3 != args.molecules:
+        sys.exit("thermostat_sweep: --molecules must be a cube (27, 64, 125, 216, 343, 512, ...)")
+    if not os.path.exists(args.lmp):
+        sys.exit("thermostat_sweep: no lmp_rotlie at %s (build the target lmp_rotlie)" % args.lmp)
+    mol = os.path.join(REPO, "examples", "lammps", "tip3p.mol")
+    os.makedirs(os.path.join(args.out, "runs"), exist_ok=True)
+    data = os.path.join(args.out, "runs", "start%d.data" % args.molecules)
+    if not os.path.exists(data):
+        melt = os.path.join(args.out, "runs", "in.melt")
+        with open(melt, "w") as f:
+            f.write(melt_input(n, mol, args.melt, data))
+        print("melting %d molecules (%d steps of 1 fs) ..." % (args.molecules, args.melt), flush=True)
+        subprocess.run([args.lmp, "-in", melt, "-log", os.path.join(args.out, "runs", "log.melt"), "-screen", "none"], check=True,
+                       cwd=os.path.join(args.out, "runs"))
+    steps = [float(x) for x in args.steps.split(",") if x]
+    chosen = [FIXES[int(k)] for k in args.fixes.split(",") if k]
+    jobs = [(label, fix, dt, mid) for (label, fix, mid) in chosen for dt in steps]
+    rows = []
+    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        futures = [pool.submit(measure, args, label, fix, dt, mid, args.molecules, data) for (label, fix, dt, mid) in jobs]
+        for f in futures:
+            r = f.result()
+            rows.append(r)
+            print("%-28s %4g fs  %-6s  pe/mol %9s  T_trans %6s  T_rot %6s  T_rot mid %6s  %8s ms/step" %
+                  (r["fix"], r["dt_fs"], r["status"], r["pe_per_molecule"], r["T_trans"], r["T_rot"], r["T_rot_mid"] or "-",
+                   r["cpu_ms_per_step"]), flush=True)
+    fields = ["fix", "dt_fs", "status", "pe_per_molecule", "T_trans", "T_rot", "T_rot_mid", "cpu_ms_per_step"]
+    with open(os.path.join(args.out, "sweep.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields, lineterminator="\n")
+        w.writeheader()
+        w.writerows(rows)
+    with open(os.path.join(args.out, "sweep.md"), "w") as f:
+        f.write("| fix | h (fs) | PE/molecule (kcal/mol) | T_trans (K) | T_rot (K) | T_rot mid (K) | CPU/step (ms) |\n")
+        f.write("|---|---|---|---|---|---|---|\n")
+        for r in rows:
+            if r["status"] != "ok":
+                f.write("| %s | %g | failed | | | | |\n" % (r["fix"], r["dt_fs"]))
+            else:
+                f.write("| %s | %g | %s | %s | %s | %s | %s |\n" % (r["fix"], r["dt_fs"], r["pe_per_molecule"], r["T_trans"], r["T_rot"],
+                                                                   r["T_rot_mid"] or "", r["cpu_ms_per_step"]))
+    print("wrote %s/sweep.{csv,md}" % args.out)
+
+
+if __name__ == "__main__":
+    main()
