@@ -46,6 +46,7 @@ const std::vector<report_section_entry>& report_sections() {
       {"exact-flow", "the exact free-body flow in its hard regimes against float128", exact_flow_section},
       {"vzs", "van Zon & Schofield: free water's tau, Table I, accuracy against cost, failure steps", vzs_section},
       {"liquid-water", "vZS section V.C: 512 TIP3P molecules, Fig. 1, g(r), LAMMPS side by side", liquid_water},
+      {"liquid-water-nvt", "liquid water at 300 K: each thermostat against the step, which to take", liquid_water_nvt_section},
       {"lammps", "rotlie's fix styles inside LAMMPS, from the benchmark's CSVs", lammps_section},
       {"maps", "the comparison over all rigid bodies, LV section 5: Figs. 6-10 from the maps", maps_section},
       {"maps-truth", "the maps' predictions against measured ratios at grid bodies", maps_truth_section},

@@ -179,6 +179,8 @@ nlohmann::json liquid_water_nvt_json(const models::liquid_water_nvt_result& r) {
                         {"target_K", r.kelvin},
                         {"translational_K", pair(r.translational_K)},
                         {"rotational_K", pair(r.rotational_K)},
+                        {"translational_after_o_K", pair(r.translational_after_o_K)},
+                        {"rotational_after_o_K", pair(r.rotational_after_o_K)},
                         {"configurational_translational_K", pair(r.configurational_translational_K)},
                         {"configurational_rotational_K", pair(r.configurational_rotational_K)},
                         {"potential_kcal_per_mol", pair(r.potential_per_molecule)},

@@ -436,7 +436,12 @@ const std::vector<bad_input> cases = {
   {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--equilibrate", "1e9"}, usage, "--equilibrate must span 1 to 10⁹ steps of 1 fs, from 0.001 to 1e+06 ps"},
   {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--equilibrate", "1e-6"}, usage, "--equilibrate must span 1 to 10⁹ steps"},
   {{"md", "--scene", "free-water", "--integrator", "SIER2", "--h", "1", "--equilibrate", "1"}, usage, "--equilibrate applies to the liquid-water scene only"},
-  {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--seed", "3"}, usage, "--seed does not apply to the liquid-water scene"},
+  // --seed is liquid-water's since it runs at a temperature (the lattice start and the noise); the thermostat's options:
+  {{"md", "--scene", "dipole-field", "--integrator", "SIER2", "--h", "1", "--temperature", "300"}, usage, "--temperature does not apply to the dipole-field scene"},
+  {{"md", "--scene", "liquid-water", "--integrator", "SIER2", "--h", "1", "--temperature", "300"}, usage, "--temperature needs an integrator at a temperature"},
+  {{"md", "--scene", "liquid-water", "--integrator", "SIER2-NHC", "--h", "1", "--friction", "3"}, usage, "SIER2-NHC takes --tau"},
+  {{"md", "--scene", "liquid-water", "--integrator", "SIER2-BAOAB", "--h", "1", "--temperature", "0"}, usage, "--temperature must be positive"},
+  {{"md", "--scene", "liquid-water", "--integrator", "SIER2-BAOAB", "--h", "1", "--tau", "0.1"}, usage, "SIER2-BAOAB takes --friction"},
   {{"md", "--scene", "liquid-water", "--integrator", "VERLET", "--h", "1"}, usage, "unknown integrator 'VERLET'"},
   {{"md", "--scene", "liquid-water", "--integrator", "SIER2/N9:BAC:1", "--h", "1"}, usage, "unknown dedicated scheme 'N9'"},
   {{"md", "--scene", "free-water", "--integrator", "SIER2", "--h", "1", "--molecules", "512"}, usage, "--molecules applies to the liquid-water scene only"},

@@ -42,7 +42,9 @@ scene_result run_at_temperature(const ensemble_run& e, const thermostat_request&
                       {"ks_rotational", r.ks_rotational},
                       {"ks_critical_0_001", r.ks_critical},
                       {"maxwell_boltzmann", r.ks_translational < r.ks_critical && r.ks_rotational < r.ks_critical},
-                      {"cpu_s_per_ps", r.cpu_s_per_ps}};
+                      {"cpu_s_per_ps", r.cpu_s_per_ps},
+                      {"unstable", false},  // a run that diverges stops with an error; the flags every md result carries
+                      {"round_off_floor", false}};
   std::ostringstream text;
   text << "free water at " << r.kelvin << " K, " << e.run.integrator.name << " (" << r.table << "), h = " << e.run.h_fs << " fs, " << e.run.runs
        << " runs of " << r.steps << " steps (the first fifth settling), seed " << e.run.seed << "\n"

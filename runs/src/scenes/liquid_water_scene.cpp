@@ -49,6 +49,9 @@ scene_result nvt_result(const models::liquid_water_nvt_result& r) {
                   r.integrator.c_str(), r.table.c_str(), r.h_fs, r.steps) +
              "  T translational       " + pm(r.translational_K, "K") + "\n" +
              "  T rotational          " + pm(r.rotational_K, "K") + "\n" +
+             (std::isnan(r.rotational_after_o_K.mean) ? std::string()
+                                                      : "  T after the O-step   " + pm(r.translational_after_o_K, "K") + " (centres), " +
+                                                            pm(r.rotational_after_o_K, "K") + " (rotations)\n") +
              "  T configurational     " + pm(r.configurational_translational_K, "K") + " (centres), " + pm(r.configurational_rotational_K, "K") +
              " (rotations)\n" +
              "  V per molecule        " + pm(r.potential_per_molecule, "kcal/mol") + "\n" +
@@ -60,6 +63,9 @@ scene_result nvt_result(const models::liquid_water_nvt_result& r) {
     if (std::abs(m.mean / r.kelvin - 1) > tol && std::abs(m.mean - r.kelvin) > 4 * m.error)
       out.warnings.push_back(std::string("the ") + name + " temperature is " + line("%.1f", m.mean) + " K, " + line("%.0f", 100 * tol) +
                              " % or more from the target: the run is too short to settle, or the step too large");
+  // the flags every md result carries (md_json.hpp): a run whose temperatures miss the target is flagged unstable
+  out.json["unstable"] = !out.warnings.empty();
+  out.json["round_off_floor"] = false;
   return out;
 }
 

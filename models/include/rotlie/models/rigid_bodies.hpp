@@ -25,6 +25,9 @@ struct rigid_body_state {
 /// far (the noise's key) and the Nosé–Hoover chains on translation and rotation.
 struct bath_state {
   std::uint64_t draws = 0;
+  /// Σ p²/m and Σ G_i²/I_i (mass·velocity²) right after the last O-stage: BAOAB's mid-step momenta, whose
+  /// temperature is the thermostat's own (the step-end momenta of BAOAB are off by O(h²) where forces are stiff)
+  double two_K_translation_after_o = 0, two_K_rotation_after_o = 0;
   nose_hoover_chain translation, rotation;
   nose_hoover_chain_state translation_state, rotation_state;
 };

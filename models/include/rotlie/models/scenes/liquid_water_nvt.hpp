@@ -34,6 +34,9 @@ struct liquid_water_nvt_result {
   int f = 1;
   long molecules = 0, steps = 0, measured_steps = 0, probes = 0;
   mean_and_error translational_K, rotational_K, configurational_translational_K, configurational_rotational_K, potential_per_molecule;
+  /// Langevin: the kinetic temperatures right after the O-step (BAOAB's mid-step; 3N degrees of freedom
+  /// each, the noise not keeping the total momentum); NaN for chains
+  mean_and_error translational_after_o_K{std::nan(""), std::nan("")}, rotational_after_o_K{std::nan(""), std::nan("")};
   double rdf_peak_r = 0, rdf_peak_g = 0;
   double diffusion = 0;         ///< 10⁻⁵ cm²/s
   double extended_drift = 0;    ///< Nosé–Hoover: |H_ext(end) − H_ext(settled)| / N, kcal/mol (0 for Langevin)
@@ -70,7 +73,7 @@ inline liquid_water_nvt_result run_liquid_water_nvt(const liquid_water_run_optio
     auto s = start;
     s.forces_current = false;
     const int blocks = 10;
-    std::vector<double> tt(blocks), tr(blocks), v(blocks), f2(blocks), t2(blocks), lt(blocks), lr(blocks);
+    std::vector<double> tt(blocks), tr(blocks), v(blocks), f2(blocks), t2(blocks), lt(blocks), lr(blocks), to(blocks), ro(blocks);
     std::vector<long> probes_in(blocks, 0);
     oxygen_rdf rdf(std::min(10.0, w.options().box / 2), 0.02);
     seeded_random probe_random(nvt.seed ^ 0x5eedULL, 1);
@@ -123,6 +126,8 @@ inline liquid_water_nvt_result run_liquid_water_nvt(const liquid_water_run_optio
       tt[b] += 2 * sys.translational_energy(s) / (sys.translational_dof(s) * k_B) / n;
       tr[b] += 2 * sys.rotational_energy(s) / (sys.rotational_dof(s) * k_B) / n;
       v[b] += V / static_cast<double>(o.molecules) / n;
+      const auto [t_o, r_o] = sys.temperatures_after_o(s);
+      to[b] += nvt.kelvin * t_o / n, ro[b] += nvt.kelvin * r_o / n;
       if (k - settle == r.measured_steps / 2) msd_half = msd(s);
       if ((k - settle) % nvt.probe_every == 0) {
         sys.bodies().ensure_forces(s);
@@ -144,6 +149,10 @@ inline liquid_water_nvt_result run_liquid_water_nvt(const liquid_water_run_optio
     r.translational_K = block_average(tt);
     r.rotational_K = block_average(tr);
     r.potential_per_molecule = block_average(v);
+    if (o.integrator.thermostat != schemes::thermostat_placement::chain) {
+      r.translational_after_o_K = block_average(to);
+      r.rotational_after_o_K = block_average(ro);
+    }
     // configurational temperatures: the ratio of the sums, its error from the blocks' ratios
     std::vector<double> ct, cr;
     double F2 = 0, T2 = 0, LT = 0, LR = 0;

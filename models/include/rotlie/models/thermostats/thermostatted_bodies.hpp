@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include "rotlie/models/composition.hpp"
 #include "rotlie/models/thermostats/nose_hoover_chain.hpp"
@@ -94,13 +95,17 @@ class thermostatted_bodies {
   void langevin(double t, state& x) const {
     const ou_factors f = ou_factors_for(p_.friction, t);
     const double kT = p_.kT / bodies_.units().mvv2e;  // in mass·velocity²
+    double two_K_t = 0, two_K_r = 0;
     for (std::size_t n = 0; n < x.bodies.size(); ++n) {
       auto& b = x.bodies[n];
       const auto& ty = bodies_.body_types().at(b.type);
       const vec3<double> sigma_G{std::sqrt(ty.moments[0] * kT), std::sqrt(ty.moments[1] * kT), std::sqrt(ty.moments[2] * kT)};
       auto noise = langevin_noise(p_.seed, x.bath.draws, n);
       langevin_body(b.p, b.rot.G, f, std::sqrt(ty.mass * kT), sigma_G, noise);
+      two_K_t += dot(b.p, b.p) / ty.mass;
+      for (int i = 0; i < 3; ++i) two_K_r += b.rot.G[i] * b.rot.G[i] / ty.moments[i];
     }
+    x.bath.two_K_translation_after_o = two_K_t, x.bath.two_K_rotation_after_o = two_K_r;
     ++x.bath.draws;
   }
 
@@ -131,6 +136,13 @@ class thermostatted_bodies {
     return p_.momentum_conserved && x.bodies.size() > 1 ? n - 3 : n;
   }
   double rotational_dof(const state& x) const { return 3.0 * static_cast<double>(x.bodies.size()); }
+  /// The kinetic temperatures (in units of the target's k_BT: 1 at equipartition) right after the last
+  /// O-stage, translational and rotational.
+  std::pair<double, double> temperatures_after_o(const state& x) const {
+    const double kT = p_.kT / bodies_.units().mvv2e;
+    const double n = 3.0 * static_cast<double>(x.bodies.size());
+    return {x.bath.two_K_translation_after_o / (n * kT), x.bath.two_K_rotation_after_o / (n * kT)};
+  }
 
   double kinetic_energy(const state& x) const { return bodies_.kinetic_energy(x); }
   double potential_energy(const state& x) const { return bodies_.potential_energy(x); }
