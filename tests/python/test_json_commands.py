@@ -74,7 +74,7 @@ def test_md_as_the_command_line():
     assert without_cpu(r) == without_cpu(e)
     assert r["dLz_over_Lz"][0] < 1e-12  # L_z is conserved by the splitting (vZS Table I: at round-off)
     # an option of another scene is refused before anything runs, as by the command line
-    for bad in [dict(scene="gas"), dict(integrator="XYZ"), dict(h=-1), dict(scalar="half"), dict(scene="liquid-water", seed=3),
+    for bad in [dict(scene="gas"), dict(integrator="XYZ"), dict(h=-1), dict(scalar="half"), dict(scene="dipole-field", temperature=300),
                 dict(dipole=2), dict(molecules=512)]:
         args = dict(scene="free-water", integrator="MRDL", h=1.66) | bad
         with pytest.raises(ValueError):

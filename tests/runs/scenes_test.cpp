@@ -40,9 +40,9 @@ BOOST_AUTO_TEST_CASE(an_option_of_another_scene_is_refused_before_anything_runs)
   BOOST_CHECK_EXCEPTION(runs::run_scene(r), runs::bad_input, [](const runs::bad_input& e) {
     return std::string(e.what()) == "--molecules applies to the liquid-water scene only";
   });
-  r = {"liquid-water", "SIER2", "1", {{"--seed", "3"}}, {}};
+  r = {"dipole-field", "SIER2", "1", {{"--temperature", "300"}}, {}};  // the thermostat's option is free-water's and liquid-water's
   BOOST_CHECK_EXCEPTION(runs::run_scene(r), runs::bad_input, [](const runs::bad_input& e) {
-    return std::string(e.what()) == "--seed does not apply to the liquid-water scene";
+    return std::string(e.what()) == "--temperature does not apply to the dipole-field scene";
   });
   r = {"free-water", "SIER2", "1", {{"--bogus", "1"}}, {}};
   BOOST_CHECK_THROW(runs::run_scene(r), runs::bad_input);
