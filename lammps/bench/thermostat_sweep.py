@@ -22,7 +22,11 @@ it too (T_rot mid) for the langevin runs of the SIER fixes.
 Cost: the runs are independent LAMMPS processes on one rank each (--ranks to change), --jobs at a
 time. With the defaults (216 molecules, 1 ps + 4 ps per run, 30 runs) 10,208 steps per fix, 122,000
 force evaluations in all (SIER4 makes 4 a step): 9.5 min wall (7.5 min CPU) on one core of a 2-core
-machine shared with other work. Not run by ctest.
+machine shared with other work. With --dsf --melt 20000 --equil 1 --sample 10 --ref-sample 20 --jobs 2 (216
+molecules; 31 runs, 1 ps + 10 ps each, the reference 1 ps + 20 ps at 0.5 fs; 312,000 force evaluations)
+22 min wall and 21 min of LAMMPS's CPU time on a 2-core machine shared with other work (load average
+3.6–5.4), plus the shared melt (20,000 steps of 1 fs: 3.5 min wall) and lammps_tconf (about 6 s a run:
+209 frames, five force evaluations each). Not run by ctest.
 
 --dsf: the interaction is lj/cut/coul/dsf (α = --dsf-alpha, 0.2 /Å as rotlie's lammps_dsf; cutoff
 --dsf-cutoff, 9 Å by default since rotlie's minimum image needs a box longer than twice the cutoff:
