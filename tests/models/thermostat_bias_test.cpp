@@ -2,7 +2,7 @@
 // C2 axis, SIER2's exact rotor) in a field of 5 kT/μ at 300 K: the canonical ⟨cos θ⟩ is Langevin's
 // function coth x − 1/x (x = μE/kT) whatever the body's moments, so the bias is measured against a
 // closed form. Leimkuhler & Matthews (2013): both placements are of order 2 in the configurational
-// averages, BAOAB with a much smaller constant. About 40 s.
+// averages, BAOAB with a much smaller constant. About 60-90 s.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>

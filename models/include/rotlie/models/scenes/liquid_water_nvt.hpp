@@ -57,6 +57,9 @@ inline liquid_water_nvt_result run_liquid_water_nvt(const liquid_water_run_optio
   bath.tau = nvt.tau_ps * 1000;
   bath.chain_length = nvt.chain_length;
   bath.seed = nvt.seed;
+  // the chains keep the total momentum (the forces sum to zero): 3N − 3 translational degrees of freedom;
+  // Langevin's noise does not: 3N
+  bath.momentum_conserved = *o.integrator.thermostat == schemes::thermostat_placement::chain;
   liquid_water_nvt_result r;
   r.integrator = o.integrator.name;
   r.h_fs = o.h_fs;
