@@ -47,7 +47,7 @@
 #include <string>
 #include <vector>
 
-#include "rotlie/models/block_average.hpp"
+#include "rotlie/models/ensemble_statistics.hpp"
 #include "rotlie/models/configurational_temperature.hpp"
 #include "rotlie/models/real_units.hpp"
 #include "rotlie/models/scenes/liquid_water.hpp"
@@ -218,7 +218,7 @@ double rebuild_bodies(const frame& f, const water_model<double>& w, std::vector<
 struct file_result {
   long frames = 0;
   std::size_t molecules = 0;
-  mean_and_error v, t_trans, t_rot;
+  mean_error v, t_trans, t_rot;
   double worst_relative = NAN, misfit = 0;
 };
 
@@ -281,9 +281,9 @@ file_result analyse(const std::string& name, const settings& o) {
     ct.push_back(f2[b] / lt[b] / k_B), cr.push_back(t2[b] / lr[b] / k_B);
     F2 += f2[b], T2 += t2[b], LT += lt[b], LR += lr[b];
   }
-  r.v = block_average(vb);
-  r.t_trans = {F2 / LT / k_B, block_average(ct).error};
-  r.t_rot = {T2 / LR / k_B, block_average(cr).error};
+  r.v = ensemble_mean(vb);
+  r.t_trans = {F2 / LT / k_B, ensemble_mean(ct).error};
+  r.t_rot = {T2 / LR / k_B, ensemble_mean(cr).error};
   return r;
 }
 

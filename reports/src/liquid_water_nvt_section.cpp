@@ -14,7 +14,7 @@
 namespace rotlie::reports {
 namespace {
 
-std::string pm(const models::mean_and_error& m, int digits) {
+std::string pm(const models::mean_error& m, int digits) {
   if (std::isnan(m.mean)) return "–";
   return runs::significant_text(m.mean, digits) + " ± " + runs::significant_text(m.error, 2);
 }

@@ -18,7 +18,7 @@ liquid_water_nvt_budget liquid_water_nvt_budget_for(bool quick, bool full) {
 
 namespace {
 
-double z_of(const models::mean_and_error& a, const models::mean_and_error& b) {
+double z_of(const models::mean_error& a, const models::mean_error& b) {
   const double e = std::hypot(a.error, b.error);
   return e > 0 ? std::abs(a.mean - b.mean) / e : std::nan("");
 }

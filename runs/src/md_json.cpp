@@ -166,7 +166,6 @@ nlohmann::json liquid_water_json(const models::liquid_water_run_result& r) {
 }
 
 nlohmann::json liquid_water_nvt_json(const models::liquid_water_nvt_result& r) {
-  auto pair = [](const models::mean_and_error& m) { return nlohmann::json{number_or_null(m.mean), number_or_null(m.error)}; };
   return nlohmann::json{{"scene", "liquid-water"},
                         {"ensemble", "NVT"},
                         {"integrator", r.integrator},
@@ -177,13 +176,13 @@ nlohmann::json liquid_water_nvt_json(const models::liquid_water_nvt_result& r) {
                         {"steps", r.steps},
                         {"measured_steps", r.measured_steps},
                         {"target_K", r.kelvin},
-                        {"translational_K", pair(r.translational_K)},
-                        {"rotational_K", pair(r.rotational_K)},
-                        {"translational_after_o_K", pair(r.translational_after_o_K)},
-                        {"rotational_after_o_K", pair(r.rotational_after_o_K)},
-                        {"configurational_translational_K", pair(r.configurational_translational_K)},
-                        {"configurational_rotational_K", pair(r.configurational_rotational_K)},
-                        {"potential_kcal_per_mol", pair(r.potential_per_molecule)},
+                        {"translational_K", pair_json(r.translational_K)},
+                        {"rotational_K", pair_json(r.rotational_K)},
+                        {"translational_after_o_K", pair_json(r.translational_after_o_K)},
+                        {"rotational_after_o_K", pair_json(r.rotational_after_o_K)},
+                        {"configurational_translational_K", pair_json(r.configurational_translational_K)},
+                        {"configurational_rotational_K", pair_json(r.configurational_rotational_K)},
+                        {"potential_kcal_per_mol", pair_json(r.potential_per_molecule)},
                         {"rdf_first_peak", {{"r_A", r.rdf_peak_r}, {"g", r.rdf_peak_g}}},
                         {"diffusion_1e-5_cm2_per_s", number_or_null(r.diffusion)},
                         {"extended_energy_drift_kcal_per_mol", r.extended_drift},

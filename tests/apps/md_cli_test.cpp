@@ -3,6 +3,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "cli_support.hpp"
+#include "md_cli_support.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -18,16 +19,6 @@ BOOST_AUTO_TEST_SUITE(md_cli_test)
 namespace fs = std::filesystem;
 
 using namespace rotlie::test_cli;
-
-namespace {
-
-nlohmann::json md_json(const std::string& args) {
-  const auto r = run("md " + args + " --json");
-  BOOST_TEST_REQUIRE(r.status == 0, "rotlie md " << args << ": " << r.err);
-  return nlohmann::json::parse(r.out);
-}
-
-}  // namespace
 
 BOOST_AUTO_TEST_CASE(free_water_json_has_the_contracts_fields) {
   const auto j = md_json("--scene free-water --integrator MRDL --h 4 --T 1 --runs 5 --seed 9");

@@ -6,6 +6,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "cli_support.hpp"
+#include "md_cli_support.hpp"
 
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -14,16 +15,6 @@
 BOOST_AUTO_TEST_SUITE(md_thermostat_cli_test)
 
 using namespace rotlie::test_cli;
-
-namespace {
-
-nlohmann::json md_json(const std::string& args) {
-  const auto r = run("md " + args + " --json");
-  BOOST_TEST_REQUIRE(r.status == 0, "rotlie md " << args << ": " << r.err);
-  return nlohmann::json::parse(r.out);
-}
-
-}  // namespace
 
 BOOST_AUTO_TEST_CASE(free_water_reaches_maxwell_boltzmann_with_each_thermostat) {
   for (const std::string integrator : {"SIER2-BAOAB", "SIER2-OBABO", "SIER4-BAOAB", "SIER2-NHC", "MRDL-BAOAB"}) {

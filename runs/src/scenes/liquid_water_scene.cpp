@@ -44,7 +44,7 @@ std::optional<models::liquid_water_nvt_options> thermostat_options(const scene_r
 scene_result nvt_result(const models::liquid_water_nvt_result& r) {
   scene_result out;
   out.json = liquid_water_nvt_json(r);
-  auto pm = [](const models::mean_and_error& m, const char* unit) { return line("%.4g ± %.2g %s", m.mean, m.error, unit); };
+  auto pm = [](const models::mean_error& m, const char* unit) { return line("%.4g ± %.2g %s", m.mean, m.error, unit); };
   out.text = line("liquid water at %g K: %ld TIP3P molecules, %s (%s), h = %g fs, %ld steps (the first fifth settling)\n", r.kelvin, r.molecules,
                   r.integrator.c_str(), r.table.c_str(), r.h_fs, r.steps) +
              "  T translational       " + pm(r.translational_K, "K") + "\n" +

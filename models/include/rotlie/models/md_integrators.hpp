@@ -116,7 +116,6 @@ template <class Potential, class Visitor>
 auto with_thermostatted_integrator(const md_integrator& spec, schemes::thermostat_placement placement, const thermostat_parameters& bath,
                                    const std::vector<body_kind<double>>& kinds, const Potential& potential,
                                    const unit_system<double>& units, Visitor&& visit) {
-  check_thermostat(bath, placement);
   const auto table = schemes::thermostatted_table(*schemes::reference_scheme(spec.tv_table), placement);
   return with_md_system<double>(spec, kinds, potential, units, [&](auto system) {
     using bodies = thermostatted_bodies<decltype(system)>;

@@ -15,7 +15,7 @@
 
 #include "rotlie/models/experiments/md_experiment.hpp"
 #include "rotlie/models/scenes/free_water.hpp"
-#include "rotlie/models/block_average.hpp"
+#include "rotlie/models/ensemble_statistics.hpp"
 #include "rotlie/models/md_integrators.hpp"
 
 namespace rotlie::models {
@@ -24,23 +24,11 @@ struct free_water_nvt_result {
   std::string table;
   double kelvin = 0;
   long steps = 0;
-  mean_and_error translational_K, rotational_K;
+  mean_error translational_K, rotational_K;
   double ks_translational = 0, ks_rotational = 0;  ///< Kolmogorov–Smirnov distances of the runs' ends
   double ks_critical = 0;                          ///< its critical value at level 0.001 (3 × runs samples)
   double cpu_s_per_ps = 0;
 };
-
-/// The largest distance between the empirical CDF of x and the standard normal's.
-inline double normal_ks_distance(std::vector<double> x) {
-  std::sort(x.begin(), x.end());
-  const double n = static_cast<double>(x.size());
-  double d = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double F = 0.5 * std::erfc(-x[i] / std::sqrt(2.0));
-    d = std::max({d, F - static_cast<double>(i) / n, static_cast<double>(i + 1) / n - F});
-  }
-  return d;
-}
 
 /// o's runs of o.integrator (with its thermostat) on free water at `kelvin` (friction per fs, tau fs).
 inline free_water_nvt_result run_free_water_nvt(const md_run_options& o, double kelvin, double friction_per_fs, double tau_fs, int chain_length = 3) {
@@ -87,11 +75,11 @@ inline free_water_nvt_result run_free_water_nvt(const md_run_options& o, double 
     });
     if (o.progress) o.progress(run + 1, o.runs);
   }
-  r.translational_K = block_average(trans);
-  r.rotational_K = block_average(rot);
+  r.translational_K = ensemble_mean(trans);
+  r.rotational_K = ensemble_mean(rot);
   r.ks_translational = normal_ks_distance(p_scaled);
   r.ks_rotational = normal_ks_distance(G_scaled);
-  r.ks_critical = 1.949 / std::sqrt(static_cast<double>(G_scaled.size()));
+  r.ks_critical = ks_critical_0_001(G_scaled.size());
   r.cpu_s_per_ps = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC / (static_cast<double>(o.runs) * o.T_ps);
   return r;
 }

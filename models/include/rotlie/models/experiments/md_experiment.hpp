@@ -12,6 +12,7 @@
 
 #include "rotlie/models/cpu_time.hpp"
 #include "rotlie/models/integrate.hpp"
+#include "rotlie/models/ensemble_statistics.hpp"
 #include "rotlie/models/md_integrators.hpp"
 #include "rotlie/models/md_trajectory.hpp"
 
@@ -36,24 +37,6 @@ inline long md_steps(const md_run_options& o) {
   const double n = std::round(o.T_ps * 1000 / o.h_fs);
   if (!(n < 1e12)) throw std::invalid_argument("T/h is too many steps");
   return std::max(1L, static_cast<long>(n));
-}
-
-/// Mean and standard error of the mean (sample standard deviation / √n); the error of one value is
-/// unknown (NaN), not 0.
-struct mean_error {
-  double mean = 0, error = 0;
-};
-
-inline mean_error ensemble_mean(const std::vector<double>& x) {
-  mean_error r;
-  if (x.empty()) return {std::nan(""), std::nan("")};
-  for (double v : x) r.mean += v;
-  r.mean /= static_cast<double>(x.size());
-  if (x.size() < 2) return {r.mean, std::nan("")};
-  double ss = 0;
-  for (double v : x) ss += (v - r.mean) * (v - r.mean);
-  r.error = std::sqrt(ss / static_cast<double>(x.size() - 1) / static_cast<double>(x.size()));
-  return r;
 }
 
 /// The composition of o.integrator for the scene's body, potential and units, handed to visit.

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "rotlie/models/block_average.hpp"
+#include "rotlie/models/ensemble_statistics.hpp"
 #include "rotlie/models/configurational_temperature.hpp"
 #include "rotlie/models/scenes/liquid_water_experiment.hpp"
 
@@ -33,10 +33,10 @@ struct liquid_water_nvt_result {
   double h_fs = 0, kelvin = 0;
   int f = 1;
   long molecules = 0, steps = 0, measured_steps = 0, probes = 0;
-  mean_and_error translational_K, rotational_K, configurational_translational_K, configurational_rotational_K, potential_per_molecule;
+  mean_error translational_K, rotational_K, configurational_translational_K, configurational_rotational_K, potential_per_molecule;
   /// Langevin: the kinetic temperatures right after the O-step (BAOAB's mid-step; 3N degrees of freedom
   /// each, the noise not keeping the total momentum); NaN for chains
-  mean_and_error translational_after_o_K{std::nan(""), std::nan("")}, rotational_after_o_K{std::nan(""), std::nan("")};
+  mean_error translational_after_o_K{std::nan(""), std::nan("")}, rotational_after_o_K{std::nan(""), std::nan("")};
   double rdf_peak_r = 0, rdf_peak_g = 0;
   double diffusion = 0;         ///< 10⁻⁵ cm²/s
   double extended_drift = 0;    ///< Nosé–Hoover: |H_ext(end) − H_ext(settled)| / N, kcal/mol (0 for Langevin)
@@ -75,7 +75,8 @@ inline liquid_water_nvt_result run_liquid_water_nvt(const liquid_water_run_optio
     r.table = method.table().name;
     auto s = start;
     s.forces_current = false;
-    const int blocks = 10;
+    // 10 blocks, fewer when fewer steps are measured (an empty block would count as a zero)
+    const int blocks = static_cast<int>(std::min<long>(10, r.measured_steps));
     std::vector<double> tt(blocks), tr(blocks), v(blocks), f2(blocks), t2(blocks), lt(blocks), lr(blocks), to(blocks), ro(blocks);
     std::vector<long> probes_in(blocks, 0);
     oxygen_rdf rdf(std::min(10.0, w.options().box / 2), 0.02);
@@ -147,14 +148,14 @@ inline liquid_water_nvt_result run_liquid_water_nvt(const liquid_water_run_optio
                  " K, T_rot " + schemes::message_number(2 * sys.rotational_energy(s) / (sys.rotational_dof(s) * k_B)) + " K");
     }
     msd_end = msd(s);
-    r.extended_drift = std::abs(sys.extended_energy(s) - H_settled) / static_cast<double>(o.molecules);
-    if (o.integrator.thermostat != schemes::thermostat_placement::chain) r.extended_drift = 0;
-    r.translational_K = block_average(tt);
-    r.rotational_K = block_average(tr);
-    r.potential_per_molecule = block_average(v);
+    if (o.integrator.thermostat == schemes::thermostat_placement::chain)
+      r.extended_drift = std::abs(sys.extended_energy(s) - H_settled) / static_cast<double>(o.molecules);
+    r.translational_K = ensemble_mean(tt);
+    r.rotational_K = ensemble_mean(tr);
+    r.potential_per_molecule = ensemble_mean(v);
     if (o.integrator.thermostat != schemes::thermostat_placement::chain) {
-      r.translational_after_o_K = block_average(to);
-      r.rotational_after_o_K = block_average(ro);
+      r.translational_after_o_K = ensemble_mean(to);
+      r.rotational_after_o_K = ensemble_mean(ro);
     }
     // configurational temperatures: the ratio of the sums, its error from the blocks' ratios
     std::vector<double> ct, cr;
@@ -163,8 +164,8 @@ inline liquid_water_nvt_result run_liquid_water_nvt(const liquid_water_run_optio
       F2 += f2[b], T2 += t2[b], LT += lt[b], LR += lr[b];
       if (probes_in[b] > 0) ct.push_back(f2[b] / lt[b] / k_B), cr.push_back(t2[b] / lr[b] / k_B);
     }
-    r.configurational_translational_K = {F2 / LT / k_B, block_average(ct).error};
-    r.configurational_rotational_K = {T2 / LR / k_B, block_average(cr).error};
+    r.configurational_translational_K = {F2 / LT / k_B, ensemble_mean(ct).error};
+    r.configurational_rotational_K = {T2 / LR / k_B, ensemble_mean(cr).error};
     for (const auto& [radius, g] : rdf.curve())
       if (radius > 2.4 && radius < 3.4 && g > r.rdf_peak_g) r.rdf_peak_g = g, r.rdf_peak_r = radius;
     // D = Δ MSD / (6 Δt) over the measured run's second half, Å²/fs → 10⁻⁵ cm²/s (1 Å²/fs = 10⁻¹ cm²/s)
